@@ -1,0 +1,32 @@
+/* decimal.h — certified decimal strings for arb balls, and back.
+ *
+ * A decimal string d with k significant digits is *certified* for the ball x
+ * when x lies inside [d - u/2, d + u/2], u = one unit in the last digit of d:
+ * then d is a correct rounding of the exact value, whatever it is in x, and a
+ * reader may take d as the ball of radius u/2 (vigen_decimal_parse_rounded).
+ */
+#ifndef VIGEN_DECIMAL_H
+#define VIGEN_DECIMAL_H
+
+#include <arb.h>
+
+/* Formats x with `digits` significant digits ("-0.1234", "1.2345e-7").  Returns
+ * a heap string, or NULL when the ball is too wide to certify that many digits
+ * (or contains 0).  Exact zero gives "0". */
+char *vigen_decimal_format(const arb_t x, slong digits);
+
+/* For a ball containing 0: the string "0eK" (K <= 0 the largest exponent such
+ * that |x| <= 10^K / 2 is certified), or NULL when |x| may exceed 1/2. */
+char *vigen_decimal_format_zero(const arb_t x);
+
+/* 1 if text is a plain decimal with a point or an exponent: [+-]digits[.digits][e[+-]digits]. */
+int vigen_decimal_is_rounded(const char *text);
+
+/* Parses a plain decimal as the ball of radius half a unit in its last digit.
+ * Returns 1 on success, 0 if text is not a plain decimal. */
+int vigen_decimal_parse_rounded(arb_t res, const char *text, slong prec);
+
+/* Number of significant digits of a plain decimal ("0.0012300" -> 5). */
+slong vigen_decimal_significant_digits(const char *text);
+
+#endif

@@ -1,0 +1,77 @@
+/* error.h — integer status codes and the error record every vigen function fills.
+ *
+ * A function that can fail returns one of the VIGEN_* codes (VIGEN_OK = 0) and,
+ * when it fails, writes a human-readable message into a vigen_error supplied by
+ * the caller.  Messages say what is wrong and what to do; callers prepend
+ * context ("spec.lua: nodes[2]: ") with vigen_error_prefix.
+ */
+#ifndef VIGEN_ERROR_H
+#define VIGEN_ERROR_H
+
+#include <stdarg.h>
+
+enum {
+    VIGEN_OK = 0,
+    VIGEN_E_USAGE,      /* bad command line */
+    VIGEN_E_IO,         /* cannot read or write a file */
+    VIGEN_E_SYNTAX,     /* expression or Lua syntax error */
+    VIGEN_E_LUA,        /* Lua runtime error in a spec or tableau file */
+    VIGEN_E_LIMIT,      /* sandbox memory or instruction cap reached */
+    VIGEN_E_SPEC,       /* spec/tableau content is invalid (wrong type, unknown family, ...) */
+    VIGEN_E_DOMAIN,     /* value is complex, infinite, NaN, or outside a function's domain */
+    VIGEN_E_MATH,       /* the mathematics fails: singular M, b_i = 0, complex roots, ... */
+    VIGEN_E_PRECISION,  /* a result could not be certified within the precision cap */
+    VIGEN_E_MEMORY      /* allocation failed */
+};
+
+typedef struct {
+    int code;       /* VIGEN_OK when no error has been recorded */
+    char *message;  /* heap string or NULL; owned by the record */
+} vigen_error;
+
+void vigen_error_init(vigen_error *err);
+void vigen_error_clear(vigen_error *err);          /* frees the message, code = VIGEN_OK */
+/* Records code and a printf-style message (replacing any earlier one); returns code. */
+int vigen_error_set(vigen_error *err, int code, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+int vigen_error_setv(vigen_error *err, int code, const char *fmt, va_list ap);
+/* Prepends printf-style context to an existing message; returns err->code. */
+int vigen_error_prefix(vigen_error *err, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+const char *vigen_status_name(int code);           /* "syntax error", ... */
+
+/* Warnings (sum b != 1, nodes outside [0,1]) go through one hook so that tests
+ * can capture them; the default prints "vigen: warning: ..." to stderr. */
+typedef void (*vigen_warning_fn)(const char *message, void *ctx);
+void vigen_warning_set_handler(vigen_warning_fn fn, void *ctx);
+void vigen_warn(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+/* Growable string (no fixed-size buffers anywhere in the generator). */
+typedef struct { char *data; size_t len, cap; } vigen_strbuf;
+void vigen_strbuf_init(vigen_strbuf *sb);
+void vigen_strbuf_clear(vigen_strbuf *sb);
+void vigen_strbuf_append(vigen_strbuf *sb, const char *text);
+void vigen_strbuf_appendn(vigen_strbuf *sb, const char *text, size_t n);
+void vigen_strbuf_printf(vigen_strbuf *sb, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+char *vigen_strdup(const char *s);
+char *vigen_strdup_printf(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
+
+#endif

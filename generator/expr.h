@@ -1,0 +1,64 @@
+/* expr.h — exact real expressions: the one parser for nodes, basis functions
+ * and tableau entries.
+ *
+ * Grammar (whitespace ignored):
+ *   expr    := term (('+' | '-') term)*
+ *   term    := unary (('*' | '/') unary)*
+ *   unary   := ('+' | '-') unary | power
+ *   power   := primary ('^' unary)?            -- right associative: 2^-1, 2^3^2 = 2^9
+ *   primary := number | 'pi' | 't' | func '(' expr ')' | '(' expr ')'
+ *   number  := digits ['.' digits] [('e'|'E') ['+'|'-'] digits]  |  '.' digits [...]
+ *   func    := sqrt | exp | log | sin | cos | tan
+ * Numbers are exact: "0.1" is 1/10, "2.5e-3" is 1/400.  Identifiers other than
+ * pi, t and the functions are errors.  The variable t is allowed only when the
+ * caller says so (basis functions); nodes and tableau entries are constants.
+ * Powers: an exponent that is an exact integer (after evaluation of a constant
+ * subexpression) is computed exactly (x^-2 = 1/x^2); otherwise x^y = exp(y log x)
+ * and requires x > 0.
+ *
+ * Evaluation is in ball arithmetic: every result ball contains the exact value.
+ * A domain error (log of a non-positive number, division by a ball containing 0,
+ * sqrt of a negative number) or a non-finite result is reported, never guessed.
+ */
+#ifndef VIGEN_EXPR_H
+#define VIGEN_EXPR_H
+
+#include <arb.h>
+#include <acb.h>
+#include <arb_poly.h>
+#include "error.h"
+
+typedef struct vigen_expr vigen_expr;
+
+/* Parses text.  allow_t: whether the variable t may appear.  On error returns
+ * VIGEN_E_SYNTAX with a message that quotes the text and names the column, e.g.
+ *   unknown name 'cosh' at column 1 in "cosh(t)" (known: pi, t, sqrt, exp, log, sin, cos, tan) */
+int vigen_expr_parse(vigen_expr **out, const char *text, int allow_t, vigen_error *err);
+void vigen_expr_free(vigen_expr *e);
+
+int vigen_expr_depends_on_t(const vigen_expr *e);
+const char *vigen_expr_text(const vigen_expr *e);   /* the text it was parsed from */
+
+/* Real evaluation; t may be NULL when the expression has no t.  Returns VIGEN_OK,
+ * or VIGEN_E_DOMAIN with a message (the result is then indeterminate).  A ball
+ * that merely fails to decide a domain question at this precision (e.g. log of
+ * [0 +/- 1e-30]) is also VIGEN_E_DOMAIN; callers retry at higher precision. */
+int vigen_expr_eval_arb(arb_t res, const vigen_expr *e, const arb_t t, slong prec, vigen_error *err);
+
+/* Complex evaluation for rigorous integration (acb_calc_integrate).  When
+ * analytic is nonzero the result must be indeterminate (acb_indeterminate)
+ * unless the expression is certainly holomorphic on the ball t: branch cuts are
+ * handled with acb_sqrt_analytic, acb_log_analytic, and x^y for non-integer y as
+ * exp(y log_analytic(x)).  Returns VIGEN_OK, or VIGEN_E_DOMAIN for an error that
+ * no refinement can fix (none in the current grammar; reserved). */
+int vigen_expr_eval_acb(acb_t res, const vigen_expr *e, const acb_t t, int analytic, slong prec);
+
+/* If e is a polynomial in t whose coefficients are constant expressions (only
+ * + - *, division by a constant, t^k for constant non-negative integer k),
+ * writes it to res (coefficients as balls at prec) and returns 1; else 0. */
+int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec);
+
+/* Convenience: parse and evaluate a constant expression. */
+int vigen_expr_eval_string(arb_t res, const char *text, slong prec, vigen_error *err);
+
+#endif
