@@ -4,7 +4,8 @@
  * A tableau file is a Lua chunk returning
  *   { name = "gauss2", s = 2,
  *     c = {...}, A = {{...}, ...}, b = {...},           -- q part (required)
- *     At = {{...}, ...}, ct = {...}, bt = {...},         -- p part (optional; bt defaults to b)
+ *     At = {{...}, ...}, ct = {...}, bt = {...},         -- p part (optional; bt defaults to b,
+ *                                                       --   ct to the row sums of At)
  *     digits = 34, source = "...", description = "...",  -- metadata (optional)
  *     basis = '...', nodes = '...', generator = "vigen 0.1.0",
  *     order = 4, symplectic = true }                     -- claims (optional; checked by vigen check)

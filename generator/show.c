@@ -1,0 +1,251 @@
+/* show.c — text, LaTeX, JSON and Lua renderings of a tableau. */
+#include <stdlib.h>
+#include <string.h>
+#include "decimal.h"
+#include "show.h"
+
+int vigen_show_parse_format(vigen_show_format *fmt, const char *name)
+{
+    if (strcmp(name, "text") == 0) *fmt = VIGEN_SHOW_TEXT;
+    else if (strcmp(name, "latex") == 0) *fmt = VIGEN_SHOW_LATEX;
+    else if (strcmp(name, "json") == 0) *fmt = VIGEN_SHOW_JSON;
+    else if (strcmp(name, "lua") == 0) *fmt = VIGEN_SHOW_LUA;
+    else return 0;
+    return 1;
+}
+
+static void free_strings(char **v, slong n)
+{
+    if (v == NULL) return;
+    for (slong i = 0; i < n; i++) free(v[i]);
+    free(v);
+}
+
+/* One entry: keep a decimal text, else format the ball; NULL = need more precision. */
+static char *display(const char *text, const arb_t x, slong digits)
+{
+    if (text != NULL && vigen_decimal_is_rounded(text)) return vigen_strdup(text);
+    if (arb_is_zero(x)) return vigen_strdup("0");
+    return vigen_decimal_format(x, digits);
+}
+
+static int fill(char ***out, char **texts, arb_srcptr v, const arb_mat_struct *m, slong s, slong n, slong digits)
+{
+    *out = calloc((size_t)n, sizeof(char *));
+    for (slong k = 0; k < n; k++) {
+        arb_srcptr x = m ? arb_mat_entry(m, k / s, k % s) : v + k;
+        (*out)[k] = display(texts ? texts[k] : NULL, x, digits);
+        if ((*out)[k] == NULL) return 0;
+    }
+    return 1;
+}
+
+int vigen_show_entry_strings(vigen_tableau *t, slong digits, char ***c, char ***A, char ***b, char ***ct,
+                             char ***At, char ***bt, vigen_error *err)
+{
+    slong s = t->s, prec = t->prec;
+    for (int attempt = 0; attempt < 6; attempt++) {
+        *c = *A = *b = *ct = *At = *bt = NULL;
+        int ok = fill(c, t->c_text, t->c, NULL, s, s, digits) && fill(A, t->A_text, NULL, t->A, s, s * s, digits) &&
+                 fill(b, t->b_text, t->b, NULL, s, s, digits);
+        if (ok && t->has_At) ok = fill(At, t->At_text, NULL, t->At, s, s * s, digits);
+        if (ok && t->has_At) ok = fill(ct, t->has_ct ? t->ct_text : NULL, t->ct, NULL, s, s, digits);
+        if (ok && t->has_bt) ok = fill(bt, t->bt_text, t->bt, NULL, s, s, digits);
+        if (ok) return VIGEN_OK;
+        free_strings(*c, s); free_strings(*A, s * s); free_strings(*b, s);
+        free_strings(*ct, s); free_strings(*At, s * s); free_strings(*bt, s);
+        *c = *A = *b = *ct = *At = *bt = NULL;
+        if (t->c_text == NULL) break; /* balls without texts cannot be refined */
+        prec *= 2;
+        int rc = vigen_tableau_evaluate(t, prec, err);
+        if (rc != VIGEN_OK) return rc;
+    }
+    return vigen_error_set(err, VIGEN_E_PRECISION, "cannot certify %ld digits of every entry of %s", (long)digits,
+                           t->name ? t->name : "the tableau");
+}
+
+static void json_string(vigen_strbuf *sb, const char *text)
+{
+    vigen_strbuf_append(sb, "\"");
+    for (const char *p = text; *p; p++) {
+        if (*p == '"' || *p == '\\') vigen_strbuf_printf(sb, "\\%c", *p);
+        else if ((unsigned char)*p < 0x20) vigen_strbuf_printf(sb, "\\u%04x", (unsigned)(unsigned char)*p);
+        else vigen_strbuf_appendn(sb, p, 1);
+    }
+    vigen_strbuf_append(sb, "\"");
+}
+
+static void json_vector(vigen_strbuf *sb, const char *key, char **v, slong s)
+{
+    vigen_strbuf_printf(sb, ", \"%s\": [", key);
+    for (slong i = 0; i < s; i++) {
+        if (i) vigen_strbuf_append(sb, ", ");
+        json_string(sb, v[i]);
+    }
+    vigen_strbuf_append(sb, "]");
+}
+
+static void json_matrix(vigen_strbuf *sb, const char *key, char **m, slong s)
+{
+    vigen_strbuf_printf(sb, ", \"%s\": [", key);
+    for (slong i = 0; i < s; i++) {
+        vigen_strbuf_append(sb, i ? ", [" : "[");
+        for (slong j = 0; j < s; j++) {
+            if (j) vigen_strbuf_append(sb, ", ");
+            json_string(sb, m[i * s + j]);
+        }
+        vigen_strbuf_append(sb, "]");
+    }
+    vigen_strbuf_append(sb, "]");
+}
+
+/* LaTeX: a decimal "1.5e-7" becomes 1.5\times10^{-7}. */
+static void latex_number(vigen_strbuf *sb, const char *text)
+{
+    const char *e = strpbrk(text, "eE");
+    if (e == NULL) { vigen_strbuf_append(sb, text); return; }
+    vigen_strbuf_appendn(sb, text, (size_t)(e - text));
+    vigen_strbuf_printf(sb, "\\times 10^{%ld}", strtol(e + 1, NULL, 10));
+}
+
+static void latex_array(vigen_strbuf *sb, char **c, char **A, char **b, slong s)
+{
+    vigen_strbuf_append(sb, "\\begin{array}{r|");
+    for (slong j = 0; j < s; j++) vigen_strbuf_append(sb, "r");
+    vigen_strbuf_append(sb, "}\n");
+    for (slong i = 0; i < s; i++) {
+        latex_number(sb, c[i]);
+        for (slong j = 0; j < s; j++) {
+            vigen_strbuf_append(sb, " & ");
+            latex_number(sb, A[i * s + j]);
+        }
+        vigen_strbuf_append(sb, " \\\\\n");
+    }
+    vigen_strbuf_append(sb, "\\hline\n");
+    for (slong j = 0; j < s; j++) {
+        vigen_strbuf_append(sb, " & ");
+        latex_number(sb, b[j]);
+    }
+    vigen_strbuf_append(sb, "\n\\end{array}\n");
+}
+
+static void text_array(vigen_strbuf *sb, const char *title, char **c, char **A, char **b, slong s)
+{
+    size_t w = 1;
+    for (slong k = 0; k < s * s; k++) w = strlen(A[k]) > w ? strlen(A[k]) : w;
+    for (slong k = 0; k < s; k++) {
+        w = strlen(b[k]) > w ? strlen(b[k]) : w;
+        w = strlen(c[k]) > w ? strlen(c[k]) : w;
+    }
+    vigen_strbuf_printf(sb, "%s\n", title);
+    for (slong i = 0; i < s; i++) {
+        vigen_strbuf_printf(sb, "  %*s |", (int)w, c[i]);
+        for (slong j = 0; j < s; j++) vigen_strbuf_printf(sb, " %*s", (int)w, A[i * s + j]);
+        vigen_strbuf_append(sb, "\n");
+    }
+    vigen_strbuf_printf(sb, "  %*s-+", (int)w, "");
+    for (slong j = 0; j < s; j++) {
+        vigen_strbuf_append(sb, " ");
+        for (size_t k = 0; k < w; k++) vigen_strbuf_append(sb, "-");
+    }
+    vigen_strbuf_printf(sb, "\n  %*s |", (int)w, "");
+    for (slong j = 0; j < s; j++) vigen_strbuf_printf(sb, " %*s", (int)w, b[j]);
+    vigen_strbuf_append(sb, "\n");
+}
+
+static void text_summary(vigen_strbuf *sb, const vigen_tableau *t)
+{
+    slong s = t->s, prec = t->prec;
+    arb_t r, worst;
+    arb_init(r);
+    arb_init(worst);
+    arb_zero(worst);
+    for (slong i = 0; i < s; i++) {
+        arb_zero(r);
+        for (slong j = 0; j < s; j++) arb_add(r, r, arb_mat_entry(t->A, i, j), prec);
+        arb_sub(r, r, t->c + i, prec);
+        arb_abs(r, r);
+        arb_max(worst, worst, r, prec);
+    }
+    char *w = arb_get_str(worst, 5, 0);
+    vigen_strbuf_printf(sb, "\nrow sums       max_i |sum_j a_ij - c_i|   = %s\n", w);
+    flint_free(w);
+    if (t->has_At) {
+        arb_zero(worst);
+        for (slong i = 0; i < s; i++) {
+            arb_zero(r);
+            for (slong j = 0; j < s; j++) arb_add(r, r, arb_mat_entry(t->At, i, j), prec);
+            arb_sub(r, r, t->ct + i, prec);
+            arb_abs(r, r);
+            arb_max(worst, worst, r, prec);
+        }
+        w = arb_get_str(worst, 5, 0);
+        vigen_strbuf_printf(sb, "               max_i |sum_j at_ij - ct_i| = %s\n", w);
+        flint_free(w);
+        vigen_tableau_symplectic_residual(worst, t, prec);
+        w = arb_get_str(worst, 5, 0);
+        vigen_strbuf_printf(sb, "symplecticity  max_ij |b_i at_ij + b_j a_ji - b_i b_j| = %s  (%s)\n", w,
+                            arb_contains_zero(worst) ? "contains 0: symplectic within the certified digits"
+                                                     : "excludes 0: NOT symplectic");
+        flint_free(w);
+    }
+    arb_clear(r);
+    arb_clear(worst);
+}
+
+int vigen_show_render(char **out, vigen_tableau *t, vigen_show_format fmt, slong digits, vigen_error *err)
+{
+    if (fmt == VIGEN_SHOW_LUA) {
+        *out = vigen_tableau_to_lua(t);
+        return VIGEN_OK;
+    }
+    char **c, **A, **b, **ct, **At, **bt;
+    int rc = vigen_show_entry_strings(t, digits, &c, &A, &b, &ct, &At, &bt, err);
+    if (rc != VIGEN_OK) return rc;
+    slong s = t->s;
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    char **bp = t->has_bt ? bt : b;
+    if (fmt == VIGEN_SHOW_JSON) {
+        vigen_strbuf_append(&sb, "{\"name\": ");
+        json_string(&sb, t->name);
+        vigen_strbuf_printf(&sb, ", \"s\": %ld", (long)s);
+        json_vector(&sb, "c", c, s);
+        json_matrix(&sb, "A", A, s);
+        json_vector(&sb, "b", b, s);
+        if (t->has_At) {
+            json_matrix(&sb, "At", At, s);
+            json_vector(&sb, "ct", ct, s);
+            if (t->has_bt) json_vector(&sb, "bt", bt, s);
+        }
+        vigen_strbuf_append(&sb, "}\n");
+    } else if (fmt == VIGEN_SHOW_LATEX) {
+        vigen_strbuf_printf(&sb, "%% %s (vigen)\n\\[\n", t->name);
+        latex_array(&sb, c, A, b, s);
+        if (t->has_At) {
+            vigen_strbuf_append(&sb, "\\qquad\n");
+            latex_array(&sb, ct, At, bp, s);
+        }
+        vigen_strbuf_append(&sb, "\\]\n");
+    } else {
+        vigen_strbuf_printf(&sb, "%s: %ld stage%s", t->name, (long)s, s == 1 ? "" : "s");
+        if (t->digits > 0) vigen_strbuf_printf(&sb, ", %ld certified digits", (long)t->digits);
+        if (t->generator) vigen_strbuf_printf(&sb, " (%s)", t->generator);
+        vigen_strbuf_append(&sb, "\n");
+        if (t->description) vigen_strbuf_printf(&sb, "%s\n", t->description);
+        if (t->source) vigen_strbuf_printf(&sb, "source: %s\n", t->source);
+        if (t->basis) vigen_strbuf_printf(&sb, "basis:  %s\n", t->basis);
+        if (t->nodes) vigen_strbuf_printf(&sb, "nodes:  %s\n", t->nodes);
+        vigen_strbuf_append(&sb, "\n");
+        text_array(&sb, "q part (c | A, b), applied to dH/dp:", c, A, b, s);
+        if (t->has_At) {
+            vigen_strbuf_append(&sb, "\n");
+            text_array(&sb, "p part (ct | At, bt), applied to -dH/dq:", ct, At, bp, s);
+        }
+        text_summary(&sb, t);
+    }
+    free_strings(c, s); free_strings(A, s * s); free_strings(b, s);
+    free_strings(ct, s); free_strings(At, s * s); free_strings(bt, s);
+    *out = sb.data;
+    return VIGEN_OK;
+}
