@@ -45,4 +45,19 @@ int vigen_sandbox_run_string(vigen_sandbox *sb, const char *text, const char *ch
  * The function and its nargs arguments are on the stack. */
 int vigen_sandbox_pcall(vigen_sandbox *sb, int nargs, int nresults, vigen_error *err);
 
+/* Family descriptors, the values of gauss_legendre(3), trig(5), ... in a spec
+ * file.  If the value at idx is one, sets *kind, *family (a static name) and *s
+ * and returns 1; otherwise returns 0.  Never raises a Lua error. */
+enum { VIGEN_FAMILY_NODES = 1, VIGEN_FAMILY_BASIS = 2 };
+int vigen_sandbox_get_family(lua_State *L, int idx, int *kind, const char **family, long *s);
+
+/* NULL-terminated names of the basis families (monomials, trig, legendre,
+ * chebyshev_t); the node families are nodes.h's vigen_nodes_family_names. */
+extern const char *const vigen_basis_family_names[];
+
+/* Writes the shortest decimal text that reads back as x, the way Lua shows a
+ * float ("0.3333333333333333", "0.5", "3.0", "1e+300"), snprintf-style: returns
+ * the length needed, writes at most size bytes (NUL included). */
+size_t vigen_float_format(char *buf, size_t size, double x);
+
 #endif

@@ -1,0 +1,1578 @@
+/* check.c — the certifying checker behind `vigen check` (see check.h).
+ *
+ * Layout: the evaluation context and the three-valued decision; row sums and
+ * symplecticity as a list of conditions (so that a failure can be traced back
+ * to one entry); order conditions by a depth-first walk over the forests of
+ * trees.h with memoised vectors; simplifying assumptions; claims and
+ * --against; the refinement loop; text and JSON output; the command line.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "check.h"
+#include "decimal.h"
+
+const char *vigen_check_usage =
+    "usage: vigen check FILE [--against FILE2] [--max-order P] [--json] [--prec BITS]\n"
+    "\n"
+    "Certifies, in ball arithmetic, what the tableau in FILE (a tableau file or a spec\n"
+    "file) is: row sums, symplecticity, order (every bicoloured-tree condition up to P),\n"
+    "order for separable H and of each part alone, simplifying assumptions B, C, D, the\n"
+    "claims stated in the file (order = ..., symplectic = ...), and with --against every\n"
+    "entry that differs from FILE2 beyond the certified precision.  A condition holds\n"
+    "when its ball contains 0 (radius <= 2^-30), fails when the ball excludes 0, and is\n"
+    "reported undecided otherwise, after raising the precision as far as the entries allow.\n"
+    "\n"
+    "  --against FILE2  compare every entry with FILE2\n"
+    "  --max-order P    check orders 1..P (default 8, at most 12; raised to the claimed order + 1)\n"
+    "  --json           print one JSON object\n"
+    "  --prec BITS      starting working precision (default: adequate to the entries, >= 128)\n"
+    "\n"
+    "Exit status: 0 consistent and every stated claim holds, 1 something fails or cannot be\n"
+    "decided, 2 unreadable input or usage error.\n";
+
+#define DEFAULT_MAX_ORDER 8
+#define AUTO_MAX_ORDER 10        /* claims raise max_order at most to this */
+
+void vigen_check_options_init(vigen_check_options *opt)
+{
+    memset(opt, 0, sizeof(*opt));
+    opt->max_order = DEFAULT_MAX_ORDER;
+    opt->max_prec = 4096;
+    opt->tol_bits = 30;
+    opt->spec_digits = 34;
+}
+
+/* ------------------------------------------------------------ context */
+
+enum { HOLDS = 0, FAILS = 1, UNDECIDED = 2 };
+
+/* Entry names; At, bt, ct alias A, b, c when the tableau does not give them. */
+enum { M_A, M_AT, M_B, M_BT, M_C, M_CT };
+static const char *const matrix_names[] = {"A", "At", "b", "bt", "c", "ct"};
+
+typedef struct {
+    int mat;
+    slong i, j;
+} entry;
+
+typedef struct {
+    slong s, prec;
+    int has_At, has_bt, has_ct;
+    const arb_mat_struct *A, *At;
+    arb_srcptr b, bt, c, ct;
+    mag_t tol;
+    slong n_undecided;
+    mag_t worst;                 /* largest radius among undecided balls */
+} ctx_t;
+
+static void ctx_init(ctx_t *cx, const vigen_tableau *t, int tol_bits)
+{
+    cx->s = t->s;
+    cx->prec = t->prec;
+    cx->has_At = t->has_At;
+    cx->has_bt = t->has_At && t->has_bt;
+    cx->has_ct = t->has_At && t->has_ct;
+    cx->A = t->A;
+    cx->At = t->has_At ? t->At : t->A;
+    cx->b = t->b;
+    cx->bt = cx->has_bt ? t->bt : t->b;
+    cx->c = t->c;
+    cx->ct = t->has_At ? t->ct : t->c;   /* tableau.c fills ct with row sums of At when absent */
+    mag_init(cx->tol);
+    mag_one(cx->tol);
+    mag_mul_2exp_si(cx->tol, cx->tol, -tol_bits);
+    cx->n_undecided = 0;
+    mag_init(cx->worst);
+}
+
+static void ctx_clear(ctx_t *cx)
+{
+    mag_clear(cx->tol);
+    mag_clear(cx->worst);
+}
+
+/* The three-valued verdict on a ball r = left side - right side. */
+static int verdict(const mag_t tol, const arb_t r)
+{
+    if (!arb_is_finite(r)) return UNDECIDED;
+    if (!arb_contains_zero(r)) return FAILS;
+    return mag_cmp(arb_radref(r), tol) <= 0 ? HOLDS : UNDECIDED;
+}
+
+/* The verdict, counting undecided balls for the refinement loop. */
+static int decide(ctx_t *cx, const arb_t r)
+{
+    int v = verdict(cx->tol, r);
+    if (v != UNDECIDED) return v;
+    cx->n_undecided++;
+    if (arb_is_finite(r)) mag_max(cx->worst, cx->worst, arb_radref(r));
+    else mag_inf(cx->worst);
+    return UNDECIDED;
+}
+
+static int tri_of(slong fail, slong undecided)
+{
+    return fail ? VIGEN_CHECK_NO : undecided ? VIGEN_CHECK_UNDECIDED : VIGEN_CHECK_YES;
+}
+
+static entry canon(const ctx_t *cx, entry e)
+{
+    if (e.mat == M_AT && !cx->has_At) e.mat = M_A;
+    if (e.mat == M_BT && !cx->has_bt) e.mat = M_B;
+    if (e.mat == M_CT && !cx->has_At) e.mat = M_C;
+    return e;
+}
+
+static int entry_eq(entry x, entry y) { return x.mat == y.mat && x.i == y.i && x.j == y.j; }
+
+typedef struct {
+    entry e;                     /* canonical */
+    arb_srcptr value;
+} override;
+
+static arb_srcptr get(const ctx_t *cx, int mat, slong i, slong j, const override *ov)
+{
+    entry e = {mat, i, (mat == M_A || mat == M_AT) ? j : 0};
+    e = canon(cx, e);
+    if (ov && entry_eq(e, ov->e)) return ov->value;
+    switch (e.mat) {
+    case M_A: return arb_mat_entry(cx->A, i, j);
+    case M_AT: return arb_mat_entry(cx->At, i, j);
+    case M_B: return cx->b + i;
+    case M_BT: return cx->bt + i;
+    case M_C: return cx->c + i;
+    default: return cx->ct + i;
+    }
+}
+
+/* ----------------------------------------- row sums and symplecticity */
+
+enum { C_ROWSUM_A, C_ROWSUM_AT, C_SUM_B, C_SUM_BT, C_BT_EQ_B, C_SYMP };
+
+typedef struct {
+    int type;
+    slong i, j;
+    int status;
+    arb_t r;                     /* left side - right side */
+} cond;
+
+static int cond_is_rowsum(const cond *c) { return c->type <= C_SUM_BT; }
+
+static void add_cond(cond *conds, slong *n, int type, slong i, slong j)
+{
+    cond *c = conds + (*n)++;
+    c->type = type;
+    c->i = i;
+    c->j = j;
+    c->status = HOLDS;
+    arb_init(c->r);
+}
+
+/* r = value - expected of the condition, with one entry possibly overridden. */
+static void cond_parts(arb_t value, arb_t expected, const ctx_t *cx, const cond *c, const override *ov)
+{
+    slong s = cx->s, prec = cx->prec, i = c->i, j = c->j;
+    arb_zero(value);
+    switch (c->type) {
+    case C_ROWSUM_A:
+    case C_ROWSUM_AT: {
+        int m = c->type == C_ROWSUM_A ? M_A : M_AT;
+        for (slong k = 0; k < s; k++) arb_add(value, value, get(cx, m, i, k, ov), prec);
+        arb_set(expected, get(cx, m == M_A ? M_C : M_CT, i, 0, ov));
+        break;
+    }
+    case C_SUM_B:
+    case C_SUM_BT:
+        for (slong k = 0; k < s; k++) arb_add(value, value, get(cx, c->type == C_SUM_B ? M_B : M_BT, k, 0, ov), prec);
+        arb_one(expected);
+        break;
+    case C_BT_EQ_B:
+        arb_set(value, get(cx, M_BT, i, 0, ov));
+        arb_set(expected, get(cx, M_B, i, 0, ov));
+        break;
+    default: { /* b_i at_ij + bt_j a_ji - b_i bt_j (GNI VI.4.6; with bt = b as in MATH.md) */
+        arb_srcptr bi = get(cx, M_B, i, 0, ov), bj = get(cx, M_BT, j, 0, ov);
+        arb_mul(value, bi, get(cx, M_AT, i, j, ov), prec);
+        arb_addmul(value, bj, get(cx, M_A, j, i, ov), prec);
+        arb_submul(value, bi, bj, prec);
+        arb_zero(expected);
+        break;
+    }
+    }
+}
+
+static void cond_eval(arb_t r, const ctx_t *cx, const cond *c, const override *ov)
+{
+    arb_t e;
+    arb_init(e);
+    cond_parts(r, e, cx, c, ov);
+    arb_sub(r, r, e, cx->prec);
+    arb_clear(e);
+}
+
+/* The canonical entries a condition involves (at most s + 1 or 4). */
+static slong cond_entries(entry *out, const ctx_t *cx, const cond *c)
+{
+    slong n = 0, s = cx->s;
+    switch (c->type) {
+    case C_ROWSUM_A:
+    case C_ROWSUM_AT: {
+        int m = c->type == C_ROWSUM_A ? M_A : M_AT;
+        for (slong k = 0; k < s; k++) out[n++] = canon(cx, (entry){m, c->i, k});
+        out[n++] = canon(cx, (entry){m == M_A ? M_C : M_CT, c->i, 0});
+        break;
+    }
+    case C_SUM_B:
+    case C_SUM_BT:
+        for (slong k = 0; k < s; k++) out[n++] = canon(cx, (entry){c->type == C_SUM_B ? M_B : M_BT, k, 0});
+        break;
+    case C_BT_EQ_B:
+        out[n++] = canon(cx, (entry){M_BT, c->i, 0});
+        out[n++] = canon(cx, (entry){M_B, c->i, 0});
+        break;
+    default:
+        out[n++] = canon(cx, (entry){M_B, c->i, 0});
+        out[n++] = canon(cx, (entry){M_BT, c->j, 0});
+        out[n++] = canon(cx, (entry){M_AT, c->i, c->j});
+        out[n++] = canon(cx, (entry){M_A, c->j, c->i});
+        break;
+    }
+    return n;
+}
+
+static int cond_involves(const ctx_t *cx, const cond *c, entry e)
+{
+    entry buf[4];
+    entry *list = c->type == C_ROWSUM_A || c->type == C_ROWSUM_AT || c->type == C_SUM_B || c->type == C_SUM_BT
+                      ? flint_malloc(sizeof(entry) * (size_t)(cx->s + 1)) : buf;
+    slong n = cond_entries(list, cx, c);
+    int hit = 0;
+    for (slong k = 0; k < n && !hit; k++) hit = entry_eq(list[k], e);
+    if (list != buf) flint_free(list);
+    return hit;
+}
+
+static const char *cond_kind_words(int type)
+{
+    switch (type) {
+    case C_ROWSUM_A: case C_ROWSUM_AT: return "the row sum";
+    case C_SUM_B: case C_SUM_BT: return "sum b = 1";
+    case C_BT_EQ_B: return "bt = b";
+    default: return "symplecticity";
+    }
+}
+
+static arb_srcptr entry_value(const ctx_t *cx, entry e) { return get(cx, e.mat, e.i, e.j, NULL); }
+
+/* ------------------------------------------------------------ problems */
+
+static vigen_check_problem *problem_new(vigen_check_report *rep, int kind)
+{
+    if (rep->nproblems == rep->alloc_problems) {
+        rep->alloc_problems = rep->alloc_problems ? 2 * rep->alloc_problems : 16;
+        rep->problems = flint_realloc(rep->problems, sizeof(vigen_check_problem) * (size_t)rep->alloc_problems);
+    }
+    vigen_check_problem *p = rep->problems + rep->nproblems++;
+    memset(p, 0, sizeof(*p));
+    p->kind = kind;
+    arb_init(p->value);
+    arb_init(p->expected);
+    return p;
+}
+
+static void problems_clear(vigen_check_report *rep)
+{
+    for (slong k = 0; k < rep->nproblems; k++) {
+        vigen_check_problem *p = rep->problems + k;
+        arb_clear(p->value);
+        arb_clear(p->expected);
+        free(p->value_json);
+        free(p->expected_json);
+        free(p->message);
+    }
+    flint_free(rep->problems);
+    rep->problems = NULL;
+    rep->nproblems = rep->alloc_problems = 0;
+}
+
+/* Digits enough to see the difference between x and y (8 .. 45). */
+static slong digits_to_separate(const arb_t x, const arb_t y, slong prec)
+{
+    arb_t d;
+    arb_init(d);
+    arb_sub(d, x, y, prec);
+    double dd = fabs(arf_get_d(arb_midref(d), ARF_RND_NEAR));
+    double yy = fabs(arf_get_d(arb_midref(y), ARF_RND_NEAR));
+    double xx = fabs(arf_get_d(arb_midref(x), ARF_RND_NEAR));
+    arb_clear(d);
+    double scale = yy > xx ? yy : xx;
+    if (scale == 0.0 || dd == 0.0) return 8;
+    double rel = dd / scale;
+    if (rel >= 1e-5) return 8;
+    slong n = (slong)ceil(-log10(rel)) + 4;
+    return n > 45 ? 45 : n;
+}
+
+static char *ball_str(const arb_t x, slong digits)
+{
+    char *s = arb_get_str(x, digits, ARB_STR_NO_RADIUS);
+    char *r = vigen_strdup(s);
+    flint_free(s);
+    return r;
+}
+
+static char *entry_name(entry e)
+{
+    if (e.mat == M_A || e.mat == M_AT)
+        return vigen_strdup_printf("%s[%ld][%ld]", matrix_names[e.mat], (long)(e.i + 1), (long)(e.j + 1));
+    return vigen_strdup_printf("%s[%ld]", matrix_names[e.mat], (long)(e.i + 1));
+}
+
+/* ------------------------------------------------------- typo diagnosis */
+
+/* Solves condition c for entry e: writes x with c(x) = 0 nearest the current
+ * value (the condition is at most quadratic in one entry); 0 if it cannot. */
+static int solve_for(arb_t x, const ctx_t *cx, const cond *c, entry e)
+{
+    slong prec = cx->prec;
+    arb_srcptr x0 = entry_value(cx, e);
+    arb_t r0, rp, rm, xp, alpha, beta, disc, t;
+    arb_init(r0); arb_init(rp); arb_init(rm); arb_init(xp);
+    arb_init(alpha); arb_init(beta); arb_init(disc); arb_init(t);
+    override ov = {e, xp};
+    cond_eval(r0, cx, c, NULL);
+    arb_add_ui(xp, x0, 1, prec);
+    cond_eval(rp, cx, c, &ov);
+    arb_sub_ui(xp, x0, 1, prec);
+    cond_eval(rm, cx, c, &ov);
+    /* r(x0 + d) = r0 + alpha d + beta d^2 */
+    arb_sub(alpha, rp, rm, prec);
+    arb_mul_2exp_si(alpha, alpha, -1);
+    arb_add(beta, rp, rm, prec);
+    arb_mul_2exp_si(beta, beta, -1);
+    arb_sub(beta, beta, r0, prec);
+    int ok = 0;
+    if (arb_contains_zero(beta)) {
+        if (!arb_contains_zero(alpha)) {
+            arb_div(t, r0, alpha, prec);
+            arb_sub(x, x0, t, prec);
+            ok = 1;
+        }
+    } else {
+        /* the root nearest d = 0: d = -2 r0 / (alpha + sign(alpha) sqrt(alpha^2 - 4 beta r0)) */
+        arb_sqr(disc, alpha, prec);
+        arb_mul(t, beta, r0, prec);
+        arb_mul_2exp_si(t, t, 2);
+        arb_sub(disc, disc, t, prec);
+        if (arb_is_nonnegative(disc) && !arb_contains_zero(alpha)) {
+            arb_sqrt(disc, disc, prec);
+            if (arb_is_negative(alpha)) arb_neg(disc, disc);
+            arb_add(t, alpha, disc, prec);
+            arb_mul_2exp_si(xp, r0, 1);
+            arb_div(t, xp, t, prec);
+            arb_sub(x, x0, t, prec);
+            ok = arb_is_finite(x);
+        }
+    }
+    arb_clear(r0); arb_clear(rp); arb_clear(rm); arb_clear(xp);
+    arb_clear(alpha); arb_clear(beta); arb_clear(disc); arb_clear(t);
+    return ok;
+}
+
+/* Among the conditions with in_scope[k], the failed ones all involve exactly
+ * one entry whose change can satisfy every in-scope condition involving it?
+ * Returns 1 with *culprit and fix when that entry is unique. */
+static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, cond *conds, slong n, const int *in_scope)
+{
+    slong first = -1;
+    for (slong k = 0; k < n; k++)
+        if (in_scope[k] && conds[k].status == FAILS) { first = k; break; }
+    if (first < 0) return 0;
+    entry *cand = flint_malloc(sizeof(entry) * (size_t)(cx->s + 1));
+    slong ncand = cond_entries(cand, cx, conds + first);
+    /* deduplicate and intersect with every other failed condition */
+    slong m = 0;
+    for (slong a = 0; a < ncand; a++) {
+        int dup = 0;
+        for (slong q = 0; q < m; q++) dup |= entry_eq(cand[q], cand[a]);
+        if (dup) continue;
+        int all = 1;
+        for (slong k = first + 1; k < n && all; k++)
+            if (in_scope[k] && conds[k].status == FAILS) all = cond_involves(cx, conds + k, cand[a]);
+        if (all) cand[m++] = cand[a];
+    }
+    int found = 0;
+    arb_t x, r;
+    arb_init(x);
+    arb_init(r);
+    for (slong a = 0; a < m; a++) {
+        /* the value asked by the first failed condition that can be solved */
+        int solved = 0;
+        for (slong k = first; k < n && !solved; k++)
+            if (in_scope[k] && conds[k].status == FAILS) solved = solve_for(x, cx, conds + k, cand[a]);
+        if (!solved) continue;
+        /* every in-scope condition involving the entry must then hold */
+        override ov = {cand[a], x};
+        int ok = 1;
+        for (slong k = 0; k < n && ok; k++) {
+            if (!in_scope[k] || !cond_involves(cx, conds + k, cand[a])) continue;
+            cond_eval(r, cx, conds + k, &ov);
+            ok = verdict(cx->tol, r) == HOLDS;
+        }
+        if (!ok) continue;
+        found++;
+        if (found == 1) {
+            *culprit = cand[a];
+            arb_set(fix, x);
+        }
+    }
+    arb_clear(x);
+    arb_clear(r);
+    flint_free(cand);
+    return found == 1;
+}
+
+/* Builds the conditions, decides them, diagnoses, and files the problems. */
+static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int claim_symplectic)
+{
+    slong s = cx->s, n = 0;
+    slong cap = 2 + 3 * s + s * s;
+    cond *conds = flint_malloc(sizeof(cond) * (size_t)cap);
+    for (slong i = 0; i < s; i++) add_cond(conds, &n, C_ROWSUM_A, i, 0);
+    if (cx->has_ct)
+        for (slong i = 0; i < s; i++) add_cond(conds, &n, C_ROWSUM_AT, i, 0);
+    add_cond(conds, &n, C_SUM_B, 0, 0);
+    if (cx->has_bt) add_cond(conds, &n, C_SUM_BT, 0, 0);
+    if (cx->has_bt)
+        for (slong i = 0; i < s; i++) add_cond(conds, &n, C_BT_EQ_B, i, 0);
+    /* with At = A the pair (i, j) and the pair (j, i) are one condition */
+    for (slong i = 0; i < s; i++)
+        for (slong j = cx->has_At ? 0 : i; j < s; j++) add_cond(conds, &n, C_SYMP, i, j);
+
+    rep->row_fail = rep->row_undecided = rep->row_total = 0;
+    rep->sym_fail = rep->sym_undecided = rep->sym_total = 0;
+    for (slong k = 0; k < n; k++) {
+        cond_eval(conds[k].r, cx, conds + k, NULL);
+        conds[k].status = decide(cx, conds[k].r);
+        slong *fail = cond_is_rowsum(conds + k) ? &rep->row_fail : &rep->sym_fail;
+        slong *und = cond_is_rowsum(conds + k) ? &rep->row_undecided : &rep->sym_undecided;
+        slong *tot = cond_is_rowsum(conds + k) ? &rep->row_total : &rep->sym_total;
+        (*tot)++;
+        if (conds[k].status == FAILS) (*fail)++;
+        if (conds[k].status == UNDECIDED) (*und)++;
+    }
+    rep->consistent = tri_of(rep->row_fail, rep->row_undecided);
+    rep->symplectic = tri_of(rep->sym_fail, rep->sym_undecided);
+    slong pair_fail = 0, pair_undecided = 0;
+    for (slong k = 0; k < n; k++)
+        if (conds[k].type == C_SYMP) {
+            pair_fail += conds[k].status == FAILS;
+            pair_undecided += conds[k].status == UNDECIDED;
+        }
+    rep->symplectic_separable = tri_of(pair_fail, pair_undecided);
+
+    /* Diagnosis: over everything; then without bt = b (a splitting method
+     * written as a PRK pair has bt != b by design); then over the row sums
+     * alone (a method that is not symplectic says nothing about its typos). */
+    int *scope = flint_malloc(sizeof(int) * (size_t)n);
+    entry culprit = {0, 0, 0};
+    arb_t fix;
+    arb_init(fix);
+    int diagnosed = 0;
+    if (rep->row_fail + rep->sym_fail > 0) {
+        for (slong k = 0; k < n; k++) scope[k] = 1;
+        diagnosed = diagnose(&culprit, fix, cx, conds, n, scope);
+        if (!diagnosed && cx->has_bt) {
+            for (slong k = 0; k < n; k++) scope[k] = conds[k].type != C_BT_EQ_B;
+            diagnosed = diagnose(&culprit, fix, cx, conds, n, scope);
+        }
+        if (!diagnosed && rep->row_fail > 0) {
+            for (slong k = 0; k < n; k++) scope[k] = cond_is_rowsum(conds + k);
+            diagnosed = diagnose(&culprit, fix, cx, conds, n, scope);
+        }
+    }
+    /* symplecticity failures are problems when the file claims symplecticity
+     * and the claim fails (for general and for separable H) */
+    int list_symplectic = claim_symplectic == 1 && rep->symplectic != VIGEN_CHECK_YES &&
+                          rep->symplectic_separable != VIGEN_CHECK_YES;
+
+    if (diagnosed) {
+        /* one problem per kind of failed condition, each naming the entry */
+        char *name = entry_name(culprit);
+        int kinds_seen[2] = {0, 0};
+        vigen_strbuf words;
+        vigen_strbuf_init(&words);
+        int nwords = 0;
+        const char *seen_words[4] = {0};
+        for (slong k = 0; k < n; k++) {
+            if (!scope[k] || conds[k].status != FAILS) continue;
+            const char *w = cond_kind_words(conds[k].type);
+            int dup = 0;
+            for (int q = 0; q < nwords; q++) dup |= strcmp(seen_words[q], w) == 0;
+            if (!dup && nwords < 4) seen_words[nwords++] = w;
+        }
+        for (int q = 0; q < nwords; q++) {
+            if (q > 0) vigen_strbuf_append(&words, q + 1 == nwords ? " and " : ", ");
+            vigen_strbuf_append(&words, seen_words[q]);
+        }
+        slong digits = digits_to_separate(entry_value(cx, culprit), fix, cx->prec);
+        char *v = ball_str(entry_value(cx, culprit), digits), *f = ball_str(fix, digits);
+        for (slong k = 0; k < n; k++) {
+            if (!scope[k] || conds[k].status != FAILS) continue;
+            int kind = cond_is_rowsum(conds + k) ? VIGEN_PROBLEM_ROWSUM : VIGEN_PROBLEM_SYMPLECTIC;
+            if (kinds_seen[kind]) continue;
+            kinds_seen[kind] = 1;
+            vigen_check_problem *p = problem_new(rep, kind);
+            p->matrix = matrix_names[culprit.mat];
+            p->row = culprit.i + 1;
+            p->col = (culprit.mat == M_A || culprit.mat == M_AT) ? culprit.j + 1 : 0;
+            p->diagnosed = 1;
+            p->has_value = p->has_expected = 1;
+            arb_set(p->value, entry_value(cx, culprit));
+            arb_set(p->expected, fix);
+            p->message = vigen_strdup_printf("%s = %s; %s %s for %s", name, v, words.data,
+                                             nwords > 1 ? (nwords > 2 ? "all ask" : "both ask") : "asks", f);
+        }
+        free(v);
+        free(f);
+        free(name);
+        vigen_strbuf_clear(&words);
+    }
+
+    for (slong k = 0; k < n; k++) {
+        cond *c = conds + k;
+        if (c->status == HOLDS) continue;
+        if (diagnosed && scope[k] && c->status == FAILS) continue;
+        int rowsum = cond_is_rowsum(c);
+        if (!rowsum && !list_symplectic) continue;
+        vigen_check_problem *p = problem_new(rep, rowsum ? VIGEN_PROBLEM_ROWSUM : VIGEN_PROBLEM_SYMPLECTIC);
+        p->undecided = c->status == UNDECIDED;
+        p->has_value = p->has_expected = 1;
+        cond_parts(p->value, p->expected, cx, c, NULL);
+        slong digits = digits_to_separate(p->value, p->expected, cx->prec);
+        char *v = ball_str(p->value, digits), *e = ball_str(p->expected, digits);
+        char *d = ball_str(c->r, 6);
+        const char *verdict = p->undecided ? "undecided at this precision: " : "";
+        switch (c->type) {
+        case C_ROWSUM_A:
+        case C_ROWSUM_AT:
+            p->matrix = c->type == C_ROWSUM_A ? "A" : "At";
+            p->row = c->i + 1;
+            p->message = vigen_strdup_printf("%srow %ld of %s sums to %s but %s[%ld] = %s (defect %s)", verdict,
+                                             (long)p->row, p->matrix, v, c->type == C_ROWSUM_A ? "c" : "ct",
+                                             (long)p->row, e, d);
+            break;
+        case C_SUM_B:
+        case C_SUM_BT:
+            p->matrix = c->type == C_SUM_B ? "b" : "bt";
+            p->message = vigen_strdup_printf("%ssum of %s is %s, not 1 (defect %s)", verdict, p->matrix, v, d);
+            break;
+        case C_BT_EQ_B:
+            p->matrix = "bt";
+            p->row = c->i + 1;
+            p->message = vigen_strdup_printf("%sbt[%ld] = %s but b[%ld] = %s", verdict, (long)p->row, v,
+                                             (long)p->row, e);
+            break;
+        default:
+            p->matrix = cx->has_At ? "At" : "A";
+            p->row = c->i + 1;
+            p->col = c->j + 1;
+            p->message = vigen_strdup_printf("%spair (%ld, %ld): b_i %s_ij + %s_j a_ji - b_i %s_j = %s, not 0",
+                                             verdict, (long)p->row, (long)p->col, cx->has_At ? "at" : "a",
+                                             cx->has_bt ? "bt" : "b", cx->has_bt ? "bt" : "b", d);
+            break;
+        }
+        free(v);
+        free(e);
+        free(d);
+    }
+
+    arb_clear(fix);
+    flint_free(scope);
+    for (slong k = 0; k < n; k++) arb_clear(conds[k].r);
+    flint_free(conds);
+}
+
+/* ------------------------------------------------------ order conditions */
+
+static void orders_reset(vigen_check_orders *o)
+{
+    free(o->fail_tree);
+    free(o->undecided_tree);
+    o->fail_tree = o->undecided_tree = NULL;
+    o->fail_order = o->undecided_order = 0;
+    o->evaluated_to = 0;
+    memset(&o->level, 0, sizeof(o->level));
+    memset(o->count, 0, sizeof(o->count));
+    memset(o->hold, 0, sizeof(o->hold));
+    memset(o->fail, 0, sizeof(o->fail));
+    memset(o->undecided, 0, sizeof(o->undecided));
+}
+
+static void orders_record(vigen_check_orders *o, int n, int status, const vigen_treeset *ts, int colour,
+                          const slong *ids, int k, const arb_t value, const arb_t expected)
+{
+    o->count[n]++;
+    if (status == HOLDS) { o->hold[n]++; return; }
+    vigen_strbuf sb;
+    if (status == FAILS) {
+        o->fail[n]++;
+        if (o->fail_order) return;
+        o->fail_order = n;
+        vigen_strbuf_init(&sb);
+        vigen_forest_tree_append(&sb, ts, colour, ids, k);
+        o->fail_tree = sb.data;
+        arb_set(o->fail_value, value);
+        arb_set(o->fail_expected, expected);
+    } else {
+        o->undecided[n]++;
+        if (o->undecided_order) return;
+        o->undecided_order = n;
+        vigen_strbuf_init(&sb);
+        vigen_forest_tree_append(&sb, ts, colour, ids, k);
+        o->undecided_tree = sb.data;
+        arb_set(o->undecided_value, value);
+        arb_set(o->undecided_expected, expected);
+    }
+}
+
+static void orders_finish(vigen_check_orders *o, int P)
+{
+    int bad = 0;
+    if (o->fail_order) bad = o->fail_order;
+    if (o->undecided_order && (!bad || o->undecided_order < bad)) bad = o->undecided_order;
+    if (!bad) {
+        o->level.value = P;
+        o->level.capped = 1;
+        o->level.undecided = 0;
+    } else {
+        o->level.value = bad - 1;
+        o->level.capped = 0;
+        o->level.undecided = o->fail_order != bad;
+    }
+}
+
+/* Every order condition of order 1..P.  Phi(F) of a forest F is the
+ * componentwise product over its trees u of w(u) = M_u Phi(u) (M = A for a
+ * black u, At for a white one); the condition of (colour, F) is
+ * bhat . Phi(F) = 1/gamma.  w is stored for trees of order <= P - 2 (the
+ * children of every tree of order <= P); for a tree u of order P - 1, which
+ * occurs only as the single child of a tree of order P, the condition is
+ * y . Phi(u) with the precomputed row vector y = bhat^T M_u. */
+static int check_orders(vigen_check_report *rep, ctx_t *cx, int P, vigen_error *err)
+{
+    vigen_treeset ts;
+    int rc = vigen_treeset_init(&ts, P - 1, err);
+    if (rc != VIGEN_OK) return rc;
+    slong s = cx->s, prec = cx->prec;
+    const arb_mat_struct *M[2] = {cx->A, cx->At};
+    arb_srcptr bh[2] = {cx->b, cx->bt};
+    slong nstore = P >= 3 ? ts.start[P - 1] : 0;
+    arb_ptr W = _arb_vec_init((nstore > 0 ? nstore : 1) * s);
+    arb_ptr prod = _arb_vec_init(P * s);
+    arb_ptr ones = _arb_vec_init(s);
+    arb_ptr y = _arb_vec_init(4 * s);
+    arb_ptr phi = _arb_vec_init(s);
+    arb_t v, r, inv;
+    arb_init(v);
+    arb_init(r);
+    arb_init(inv);
+    for (slong i = 0; i < s; i++) arb_one(ones + i);
+    for (int c = 0; c < 2; c++)
+        for (int col = 0; col < 2; col++)
+            for (slong j = 0; j < s; j++) {
+                arb_ptr yj = y + (2 * c + col) * s + j;
+                arb_zero(yj);
+                for (slong i = 0; i < s; i++) arb_addmul(yj, bh[c] + i, arb_mat_entry(M[col], i, j), prec);
+            }
+
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_reset(&rep->orders[f]);
+
+    for (int n = 1; n <= P; n++) {
+        vigen_forest_iter it;
+        vigen_forest_iter_init(&it, &ts, n - 1);
+        while (vigen_forest_iter_next(&it)) {
+            int k = it.k;
+            const slong *ids = it.ids;
+            arb_t val[2];
+            arb_init(val[0]);
+            arb_init(val[1]);
+            if (k == 1 && ts.trees[ids[0]].order > P - 2) {
+                slong u = ids[0];
+                const vigen_tree *tu = ts.trees + u;
+                const slong *ch = vigen_treeset_children(&ts, u);
+                _arb_vec_set(phi, ones, s);
+                for (int q = 0; q < tu->nchildren; q++)
+                    for (slong i = 0; i < s; i++) arb_mul(phi + i, phi + i, W + ch[q] * s + i, prec);
+                for (int c = 0; c < 2; c++)
+                    arb_dot(val[c], NULL, 0, y + (2 * c + tu->colour) * s, 1, phi, 1, s, prec);
+            } else {
+                for (int d = it.changed; d < k; d++) {
+                    arb_srcptr wd = W + ids[d] * s;
+                    if (d == 0) _arb_vec_set(prod, wd, s);
+                    else
+                        for (slong i = 0; i < s; i++) arb_mul(prod + d * s + i, prod + (d - 1) * s + i, wd + i, prec);
+                }
+                arb_srcptr ph = k ? prod + (k - 1) * s : ones;
+                for (int c = 0; c < 2; c++) arb_dot(val[c], NULL, 0, bh[c], 1, ph, 1, s, prec);
+                if (n <= P - 2)
+                    for (int c = 0; c < 2; c++) {
+                        slong id = ts.start[n] + 2 * it.index + c;
+                        for (slong i = 0; i < s; i++)
+                            arb_dot(W + id * s + i, NULL, 0, arb_mat_entry(M[c], i, 0), 1, ph, 1, s, prec);
+                    }
+            }
+            ulong gamma = vigen_forest_tree_gamma(&ts, ids, k);
+            arb_one(inv);
+            arb_div_ui(inv, inv, gamma, prec);
+            for (int c = 0; c < 2; c++) {
+                arb_sub(r, val[c], inv, prec);
+                int st = decide(cx, r);
+                int flags = vigen_forest_tree_flags(&ts, c, ids, k);
+                orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, &ts, c, ids, k, val[c], inv);
+                if (flags & VIGEN_TREE_SEPARABLE)
+                    orders_record(&rep->orders[VIGEN_CHECK_SEPARABLE], n, st, &ts, c, ids, k, val[c], inv);
+                if (flags & VIGEN_TREE_MONO)
+                    orders_record(&rep->orders[c == VIGEN_TREE_BLACK ? VIGEN_CHECK_A_ALONE : VIGEN_CHECK_AT_ALONE],
+                                  n, st, &ts, c, ids, k, val[c], inv);
+            }
+            arb_clear(val[0]);
+            arb_clear(val[1]);
+        }
+        vigen_forest_iter_clear(&it);
+        int all_failed = 1;
+        for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+            rep->orders[f].evaluated_to = n;
+            all_failed &= rep->orders[f].fail_order != 0;
+        }
+        if (all_failed) break;   /* nothing above can change any order */
+    }
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_finish(&rep->orders[f], P);
+
+    arb_clear(v);
+    arb_clear(r);
+    arb_clear(inv);
+    _arb_vec_clear(W, (nstore > 0 ? nstore : 1) * s);
+    _arb_vec_clear(prod, P * s);
+    _arb_vec_clear(ones, s);
+    _arb_vec_clear(y, 4 * s);
+    _arb_vec_clear(phi, s);
+    vigen_treeset_clear(&ts);
+    return VIGEN_OK;
+}
+
+/* ------------------------------------------------ simplifying assumptions */
+
+typedef struct {
+    ctx_t *cx;
+    const arb_mat_struct *A;
+    arb_srcptr b, c;
+    arb_ptr cp;                  /* cp[k*s + i] = c_i^k, k = 0..cap */
+} part_t;
+
+static int worst_status(int a, int b)
+{
+    if (a == FAILS || b == FAILS) return FAILS;
+    if (a == UNDECIDED || b == UNDECIDED) return UNDECIDED;
+    return HOLDS;
+}
+
+/* B(k): sum_i b_i c_i^(k-1) = 1/k */
+static int assumption_B(part_t *p, int k)
+{
+    slong s = p->cx->s, prec = p->cx->prec;
+    arb_t r, q;
+    arb_init(r);
+    arb_init(q);
+    arb_dot(r, NULL, 0, p->b, 1, p->cp + (k - 1) * s, 1, s, prec);
+    arb_one(q);
+    arb_div_ui(q, q, (ulong)k, prec);
+    arb_sub(r, r, q, prec);
+    int st = decide(p->cx, r);
+    arb_clear(r);
+    arb_clear(q);
+    return st;
+}
+
+/* C(k): sum_j a_ij c_j^(k-1) = c_i^k / k for every i */
+static int assumption_C(part_t *p, int k)
+{
+    slong s = p->cx->s, prec = p->cx->prec;
+    int st = HOLDS;
+    arb_t r, q;
+    arb_init(r);
+    arb_init(q);
+    for (slong i = 0; i < s; i++) {
+        arb_dot(r, NULL, 0, arb_mat_entry(p->A, i, 0), 1, p->cp + (k - 1) * s, 1, s, prec);
+        arb_div_ui(q, p->cp + k * s + i, (ulong)k, prec);
+        arb_sub(r, r, q, prec);
+        st = worst_status(st, decide(p->cx, r));
+    }
+    arb_clear(r);
+    arb_clear(q);
+    return st;
+}
+
+/* D(k): sum_i b_i c_i^(k-1) a_ij = b_j (1 - c_j^k) / k for every j */
+static int assumption_D(part_t *p, int k)
+{
+    slong s = p->cx->s, prec = p->cx->prec;
+    int st = HOLDS;
+    arb_t r, q, u;
+    arb_init(r);
+    arb_init(q);
+    arb_init(u);
+    for (slong j = 0; j < s; j++) {
+        arb_zero(r);
+        for (slong i = 0; i < s; i++) {
+            arb_mul(u, p->b + i, p->cp + (k - 1) * s + i, prec);
+            arb_addmul(r, u, arb_mat_entry(p->A, i, j), prec);
+        }
+        arb_sub_ui(q, p->cp + k * s + j, 1, prec);
+        arb_neg(q, q);
+        arb_mul(q, q, p->b + j, prec);
+        arb_div_ui(q, q, (ulong)k, prec);
+        arb_sub(r, r, q, prec);
+        st = worst_status(st, decide(p->cx, r));
+    }
+    arb_clear(r);
+    arb_clear(q);
+    arb_clear(u);
+    return st;
+}
+
+static vigen_check_level level_of(part_t *p, int (*fn)(part_t *, int), int cap)
+{
+    vigen_check_level L = {cap, 1, 0};
+    for (int k = 1; k <= cap; k++) {
+        int st = fn(p, k);
+        if (st == HOLDS) continue;
+        L.value = k - 1;
+        L.capped = 0;
+        L.undecided = st == UNDECIDED;
+        break;
+    }
+    return L;
+}
+
+static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
+{
+    slong s = cx->s;
+    int cap = (int)(2 * s + 1);
+    if (cap < rep->max_order) cap = rep->max_order;
+    if (cap > 64) cap = 64;
+    rep->simplifying_cap = cap;
+    for (int part = 0; part < 2; part++) {
+        part_t p;
+        p.cx = cx;
+        p.A = part ? cx->At : cx->A;
+        p.b = part ? cx->bt : cx->b;
+        p.c = part ? cx->ct : cx->c;
+        p.cp = _arb_vec_init((cap + 1) * s);
+        for (slong i = 0; i < s; i++) arb_one(p.cp + i);
+        for (int k = 1; k <= cap; k++)
+            for (slong i = 0; i < s; i++) arb_mul(p.cp + k * s + i, p.cp + (k - 1) * s + i, p.c + i, cx->prec);
+        rep->B[part] = level_of(&p, assumption_B, cap);
+        rep->C[part] = level_of(&p, assumption_C, cap);
+        rep->D[part] = level_of(&p, assumption_D, cap);
+        /* stage order: C(q) and B(q) */
+        vigen_check_level B = rep->B[part], C = rep->C[part], S;
+        S.value = B.value < C.value ? B.value : C.value;
+        S.capped = B.capped && C.capped;
+        int fails_next = (B.value == S.value && !B.undecided && !B.capped) ||
+                         (C.value == S.value && !C.undecided && !C.capped);
+        S.undecided = !S.capped && !fails_next;
+        rep->stage_order[part] = S;
+        _arb_vec_clear(p.cp, (cap + 1) * s);
+    }
+}
+
+/* -------------------------------------------------------- claims, against */
+
+static void check_claims(vigen_check_report *rep)
+{
+    if (rep->claim_order >= 0) {
+        const vigen_check_level *g = &rep->orders[VIGEN_CHECK_GENERAL].level;
+        const vigen_check_level *sp = &rep->orders[VIGEN_CHECK_SEPARABLE].level;
+        int claim = rep->claim_order, st;
+        /* the claim holds when it is the order (exactly, or at least when the
+         * check stopped at the claimed order) */
+        int is_g = g->value == claim && !g->undecided;
+        int is_sp = sp->value == claim && !sp->undecided;
+        rep->claim_order_separable = 0;
+        if (is_g) st = VIGEN_CHECK_YES;
+        else if (is_sp && g->value < claim) { st = VIGEN_CHECK_YES; rep->claim_order_separable = 1; }
+        else if ((g->undecided && g->value < claim) || (sp->undecided && sp->value < claim && g->value < claim))
+            st = VIGEN_CHECK_UNDECIDED;
+        else st = VIGEN_CHECK_NO;
+        rep->claim_order_status = st;
+        if (st != VIGEN_CHECK_YES) {
+            vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_CLAIM);
+            p->undecided = st == VIGEN_CHECK_UNDECIDED;
+            p->value_json = vigen_strdup_printf("%d", g->value);
+            p->expected_json = vigen_strdup_printf("%d", claim);
+            if (st == VIGEN_CHECK_UNDECIDED)
+                p->message = vigen_strdup_printf("claim order = %d: undecided at this precision (order >= %d, "
+                                                 "order %d undecided)", claim, g->value, g->value + 1);
+            else if (g->capped)
+                p->message = vigen_strdup_printf("claim order = %d is false: every condition up to order %d holds",
+                                                 claim, g->value);
+            else if (sp->value != g->value)
+                p->message = vigen_strdup_printf("claim order = %d is false: the order is %d (%d%s for separable H)",
+                                                 claim, g->value, sp->value, sp->capped ? " or more" : "");
+            else
+                p->message = vigen_strdup_printf("claim order = %d is false: the order is %d", claim, g->value);
+        }
+    }
+    if (rep->claim_symplectic >= 0) {
+        int want = rep->claim_symplectic, st;
+        rep->claim_symplectic_separable = 0;
+        if (want) {
+            if (rep->symplectic == VIGEN_CHECK_YES) st = VIGEN_CHECK_YES;
+            else if (rep->symplectic_separable == VIGEN_CHECK_YES) {
+                st = VIGEN_CHECK_YES;
+                rep->claim_symplectic_separable = 1;
+            } else if (rep->symplectic == VIGEN_CHECK_UNDECIDED || rep->symplectic_separable == VIGEN_CHECK_UNDECIDED)
+                st = VIGEN_CHECK_UNDECIDED;
+            else st = VIGEN_CHECK_NO;
+        } else st = rep->symplectic == VIGEN_CHECK_UNDECIDED ? VIGEN_CHECK_UNDECIDED
+                    : rep->symplectic == VIGEN_CHECK_NO ? VIGEN_CHECK_YES : VIGEN_CHECK_NO;
+        rep->claim_symplectic_status = st;
+        if (st != VIGEN_CHECK_YES) {
+            vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_CLAIM);
+            p->undecided = st == VIGEN_CHECK_UNDECIDED;
+            p->value_json = vigen_strdup(rep->symplectic == VIGEN_CHECK_YES ? "true"
+                                         : rep->symplectic == VIGEN_CHECK_NO ? "false" : "null");
+            p->expected_json = vigen_strdup(want ? "true" : "false");
+            p->message = st == VIGEN_CHECK_UNDECIDED
+                             ? vigen_strdup_printf("claim symplectic = %s: undecided at this precision",
+                                                   want ? "true" : "false")
+                             : vigen_strdup_printf("claim symplectic = %s is false", want ? "true" : "false");
+        }
+    }
+}
+
+static void compare_entry(vigen_check_report *rep, const char *mat, slong i, slong j, const arb_t x, const arb_t y,
+                          slong prec)
+{
+    if (arb_overlaps(x, y)) return;
+    rep->against_differences++;
+    vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_AGAINST);
+    p->matrix = mat;
+    p->row = i + 1;
+    p->col = j >= 0 ? j + 1 : 0;
+    p->has_value = p->has_expected = 1;
+    arb_set(p->value, x);
+    arb_set(p->expected, y);
+    slong digits = digits_to_separate(x, y, prec);
+    char *a = ball_str(x, digits), *b = ball_str(y, digits);
+    if (j >= 0)
+        p->message = vigen_strdup_printf("%s[%ld][%ld] = %s here but %s there", mat, (long)(i + 1), (long)(j + 1),
+                                         a, b);
+    else
+        p->message = vigen_strdup_printf("%s[%ld] = %s here but %s there", mat, (long)(i + 1), a, b);
+    free(a);
+    free(b);
+}
+
+static void check_against(vigen_check_report *rep, const ctx_t *x, const ctx_t *y)
+{
+    rep->against_checked = 1;
+    rep->against_differences = 0;
+    if (x->s != y->s) {
+        rep->against_differences = 1;
+        vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_AGAINST);
+        p->value_json = vigen_strdup_printf("%ld", (long)x->s);
+        p->expected_json = vigen_strdup_printf("%ld", (long)y->s);
+        p->message = vigen_strdup_printf("the tableaux have %ld and %ld stages", (long)x->s, (long)y->s);
+        return;
+    }
+    slong s = x->s, prec = x->prec;
+    int p_part = x->has_At || y->has_At;
+    for (slong i = 0; i < s; i++) compare_entry(rep, "c", i, -1, x->c + i, y->c + i, prec);
+    for (slong i = 0; i < s; i++)
+        for (slong j = 0; j < s; j++)
+            compare_entry(rep, "A", i, j, arb_mat_entry(x->A, i, j), arb_mat_entry(y->A, i, j), prec);
+    for (slong i = 0; i < s; i++) compare_entry(rep, "b", i, -1, x->b + i, y->b + i, prec);
+    if (!p_part) return;
+    for (slong i = 0; i < s; i++) compare_entry(rep, "ct", i, -1, x->ct + i, y->ct + i, prec);
+    for (slong i = 0; i < s; i++)
+        for (slong j = 0; j < s; j++)
+            compare_entry(rep, "At", i, j, arb_mat_entry(x->At, i, j), arb_mat_entry(y->At, i, j), prec);
+    for (slong i = 0; i < s; i++) compare_entry(rep, "bt", i, -1, x->bt + i, y->bt + i, prec);
+}
+
+/* ------------------------------------------------------------- driver */
+
+void vigen_check_report_init(vigen_check_report *rep)
+{
+    memset(rep, 0, sizeof(*rep));
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+        arb_init(rep->orders[f].fail_value);
+        arb_init(rep->orders[f].fail_expected);
+        arb_init(rep->orders[f].undecided_value);
+        arb_init(rep->orders[f].undecided_expected);
+    }
+    rep->claim_order = -1;
+    rep->claim_symplectic = -1;
+}
+
+void vigen_check_report_clear(vigen_check_report *rep)
+{
+    problems_clear(rep);
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+        free(rep->orders[f].fail_tree);
+        free(rep->orders[f].undecided_tree);
+        arb_clear(rep->orders[f].fail_value);
+        arb_clear(rep->orders[f].fail_expected);
+        arb_clear(rep->orders[f].undecided_value);
+        arb_clear(rep->orders[f].undecided_expected);
+    }
+    free(rep->path);
+    free(rep->name);
+    memset(rep, 0, sizeof(*rep));
+}
+
+static int has_texts(const vigen_tableau *t) { return t->c_text != NULL && t->A_text != NULL && t->b_text != NULL; }
+
+/* Digits of the longest rounded decimal entry (0 when every entry is exact). */
+static slong decimal_digits(const vigen_tableau *t)
+{
+    slong s = t->s, d = 0;
+    char **lists[6] = {t->c_text, t->b_text, t->ct_text, t->bt_text, t->A_text, t->At_text};
+    slong lens[6] = {s, s, s, s, s * s, s * s};
+    for (int l = 0; l < 6; l++) {
+        if (lists[l] == NULL) continue;
+        for (slong k = 0; k < lens[l]; k++)
+            if (lists[l][k] && vigen_decimal_is_rounded(lists[l][k])) {
+                slong n = vigen_decimal_significant_digits(lists[l][k]);
+                if (n > d) d = n;
+            }
+    }
+    return d;
+}
+
+static slong adequate_prec(const vigen_tableau *t)
+{
+    slong p = (slong)ceil((double)decimal_digits(t) * 3.3219280948873623) + 64;
+    if (!has_texts(t) && t->prec > p) p = t->prec;
+    return p < 128 ? 128 : p;
+}
+
+/* Evaluates t at prec (texts), retrying higher on precision-dependent domain
+ * errors; a tableau without texts keeps its balls. */
+static int evaluate(vigen_tableau *t, slong *prec, slong max_prec, vigen_error *err)
+{
+    if (!has_texts(t)) {
+        if (t->prec <= 0)
+            return vigen_error_set(err, VIGEN_E_USAGE, "the tableau has neither entry texts nor evaluated balls");
+        return VIGEN_OK;
+    }
+    for (;;) {
+        int rc = vigen_tableau_evaluate(t, *prec, err);
+        if (rc == VIGEN_OK) return VIGEN_OK;
+        if (rc != VIGEN_E_DOMAIN || 2 * *prec > max_prec) return rc;
+        vigen_error_clear(err);
+        *prec *= 2;
+    }
+}
+
+static void report_reset_round(vigen_check_report *rep)
+{
+    problems_clear(rep);
+    rep->against_checked = 0;
+    rep->against_differences = 0;
+}
+
+int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against,
+                        const vigen_check_options *opt_in, vigen_error *err)
+{
+    vigen_check_options opt;
+    if (opt_in) opt = *opt_in;
+    else vigen_check_options_init(&opt);
+    if (opt.max_order <= 0) opt.max_order = DEFAULT_MAX_ORDER;
+    if (opt.max_prec <= 0) opt.max_prec = 4096;
+    if (opt.tol_bits <= 0) opt.tol_bits = 30;
+    if (opt.max_order > VIGEN_TREE_MAX_ORDER)
+        return vigen_error_set(err, VIGEN_E_USAGE, "--max-order %d: at most %d is supported", opt.max_order,
+                               VIGEN_TREE_MAX_ORDER);
+
+    int P = opt.max_order;
+    if (t->claim_order >= 0) {
+        int want = t->claim_order + 1 <= AUTO_MAX_ORDER ? t->claim_order + 1 : t->claim_order;
+        if (want > VIGEN_TREE_MAX_ORDER) want = VIGEN_TREE_MAX_ORDER;
+        if (want > P) P = want;
+    }
+
+    free(rep->path);
+    free(rep->name);
+    rep->path = opt.path ? vigen_strdup(opt.path) : NULL;
+    rep->name = t->name ? vigen_strdup(t->name) : NULL;
+    rep->s = t->s;
+    rep->max_order = P;
+    rep->has_At = t->has_At;
+    rep->has_bt = t->has_At && t->has_bt;
+    rep->has_ct = t->has_At && t->has_ct;
+    rep->tol_bits = opt.tol_bits;
+    rep->claim_order = t->claim_order;
+    rep->claim_symplectic = t->claim_symplectic;
+
+    slong prec = opt.prec > 0 ? opt.prec : adequate_prec(t);
+    if (against && opt.prec <= 0 && adequate_prec(against) > prec) prec = adequate_prec(against);
+    int refinable = has_texts(t) || (against && has_texts(against));
+    mag_t last_worst;
+    mag_init(last_worst);
+    mag_inf(last_worst);
+    int rc = VIGEN_OK;
+    rep->rounds = 0;
+
+    for (;;) {
+        rc = evaluate(t, &prec, opt.max_prec, err);
+        if (rc == VIGEN_OK && against) {
+            slong p2 = prec;
+            rc = evaluate(against, &p2, opt.max_prec, err);
+            if (rc != VIGEN_OK) vigen_error_prefix(err, "--against: ");
+        }
+        if (rc != VIGEN_OK) break;
+        rep->rounds++;
+        report_reset_round(rep);
+
+        ctx_t cx;
+        ctx_init(&cx, t, opt.tol_bits);
+        if (!has_texts(t)) prec = t->prec;
+        cx.prec = prec;
+        rep->prec = prec;
+        check_rows_and_symplecticity(rep, &cx, t->claim_symplectic);
+        rc = check_orders(rep, &cx, P, err);
+        if (rc != VIGEN_OK) { ctx_clear(&cx); break; }
+        check_simplifying(rep, &cx);
+        check_claims(rep);
+        if (against) {
+            ctx_t cy;
+            ctx_init(&cy, against, opt.tol_bits);
+            cy.prec = prec;
+            check_against(rep, &cx, &cy);
+            ctx_clear(&cy);
+        }
+
+        slong undecided = cx.n_undecided;
+        int improved = mag_cmp(cx.worst, last_worst) < 0;
+        /* doubling the precision should shrink a precision-limited radius by
+         * far more than 2; anything less means the data limit the balls */
+        mag_t half;
+        mag_init(half);
+        mag_mul_2exp_si(half, last_worst, -(prec / 4));
+        improved = improved && (mag_is_inf(last_worst) || mag_cmp(cx.worst, half) < 0);
+        mag_clear(half);
+        mag_set(last_worst, cx.worst);
+        ctx_clear(&cx);
+        if (undecided == 0 || !refinable || 2 * prec > opt.max_prec || (rep->rounds > 1 && !improved)) break;
+        prec *= 2;
+    }
+    mag_clear(last_worst);
+    if (rc != VIGEN_OK) return rc;
+
+    int code = 0;
+    if (rep->consistent != VIGEN_CHECK_YES) code = 1;
+    if (rep->claim_order >= 0 && rep->claim_order_status != VIGEN_CHECK_YES) code = 1;
+    if (rep->claim_symplectic >= 0 && rep->claim_symplectic_status != VIGEN_CHECK_YES) code = 1;
+    if (rep->against_differences > 0) code = 1;
+    rep->exit_code = code;
+    return VIGEN_OK;
+}
+
+/* --------------------------------------------------------------- text */
+
+static const char *family_title[VIGEN_CHECK_FAMILIES] = {
+    "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",
+    "(ct, At, bt) alone as an RK method"};
+
+static void print_level_words(FILE *out, const vigen_check_level *L)
+{
+    if (L->capped) fprintf(out, "%d or more", L->value);
+    else if (L->undecided) fprintf(out, "at least %d (order %d undecided at this precision)", L->value, L->value + 1);
+    else fprintf(out, "%d", L->value);
+}
+
+static void print_ball(FILE *out, const arb_t x, slong digits)
+{
+    char *s = ball_str(x, digits);
+    fputs(s, out);
+    free(s);
+}
+
+static void print_bad_tree(FILE *out, const vigen_check_orders *o, const char *indent)
+{
+    const vigen_check_level *L = &o->level;
+    if (L->capped) return;
+    int undecided = L->undecided;
+    const char *tree = undecided ? o->undecided_tree : o->fail_tree;
+    if (tree == NULL) return;
+    fprintf(out, "%s%s tree: %s (order %d): sum bhat_i Phi_i = ", indent, undecided ? "first undecided" : "first failing",
+            tree, L->value + 1);
+    slong digits = digits_to_separate(undecided ? o->undecided_value : o->fail_value,
+                                      undecided ? o->undecided_expected : o->fail_expected, 128);
+    print_ball(out, undecided ? o->undecided_value : o->fail_value, digits);
+    fputs(", 1/gamma = ", out);
+    print_ball(out, undecided ? o->undecided_expected : o->fail_expected, digits);
+    fputc('\n', out);
+}
+
+static const char *tri_word(int v, const char *yes, const char *no)
+{
+    return v == VIGEN_CHECK_YES ? yes : v == VIGEN_CHECK_NO ? no : "undecided at this precision";
+}
+
+static void print_assumption(FILE *out, const char *name, const vigen_check_level *L)
+{
+    if (L->capped) fprintf(out, "%s(>=%d)", name, L->value);
+    else if (L->undecided) fprintf(out, "%s(%d, %d undecided)", name, L->value, L->value + 1);
+    else fprintf(out, "%s(%d)", name, L->value);
+}
+
+void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
+{
+    fputs(rep->path ? rep->path : "tableau", out);
+    if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
+    fprintf(out, ": %ld stages, %s\n", (long)rep->s,
+            rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
+    fprintf(out, "  checked at %ld bits (%ld evaluation%s); a condition holds when its ball contains 0 with radius "
+                 "<= 2^-%d, fails when the ball excludes 0\n",
+            (long)rep->prec, (long)rep->rounds, rep->rounds == 1 ? "" : "s", rep->tol_bits);
+
+    fprintf(out, "row sums      %s (%ld conditions: c_i = sum_j a_ij%s, sum b = 1)\n",
+            tri_word(rep->consistent, "hold", "FAIL"), (long)rep->row_total, rep->has_ct ? ", ct_i = sum_j at_ij" : "");
+    fprintf(out, "symplectic    %s (%ld conditions: %sb_i %s_ij + b_j a_ji - b_i b_j = 0",
+            tri_word(rep->symplectic, "yes", "no"), (long)rep->sym_total, rep->has_bt ? "bt = b, " : "",
+            rep->has_At ? "at" : "a");
+    if (rep->sym_fail) fprintf(out, "; %ld fail", (long)rep->sym_fail);
+    if (rep->sym_undecided) fprintf(out, "; %ld undecided", (long)rep->sym_undecided);
+    fputs(")\n", out);
+    if (rep->has_bt && rep->symplectic != VIGEN_CHECK_YES)
+        fprintf(out, "              for separable H (b_i at_ij + bt_j a_ji - b_i bt_j = 0 suffices): %s\n",
+                tri_word(rep->symplectic_separable, "yes", "no"));
+
+    const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
+    fputs("order         ", out);
+    print_level_words(out, &g->level);
+    fprintf(out, "   (orders 1..%d checked)\n", rep->max_order);
+    print_bad_tree(out, g, "              ");
+
+    fputs("  order  conditions   hold   fail  undecided |  separable     A alone    At alone\n", out);
+    for (int n = 1; n <= g->evaluated_to; n++) {
+        fprintf(out, "  %5d  %10ld %6ld %6ld %10ld |", n, (long)g->count[n], (long)g->hold[n], (long)g->fail[n],
+                (long)g->undecided[n]);
+        for (int f = 1; f < VIGEN_CHECK_FAMILIES; f++) {
+            char buf[64];
+            snprintf(buf, sizeof(buf), "%ld/%ld", (long)rep->orders[f].hold[n], (long)rep->orders[f].count[n]);
+            fprintf(out, " %11s", buf);
+        }
+        fputc('\n', out);
+    }
+    if (g->evaluated_to < rep->max_order)
+        fprintf(out, "  (orders %d..%d not evaluated: every family already fails)\n", g->evaluated_to + 1,
+                rep->max_order);
+    fputs("  (x/y: conditions holding / conditions of that family)\n", out);
+
+    for (int f = 1; f < VIGEN_CHECK_FAMILIES; f++) {
+        const vigen_check_orders *o = &rep->orders[f];
+        if (f == VIGEN_CHECK_AT_ALONE && !rep->has_At) {
+            fprintf(out, "%s: same as (c, A, b) (At = A)\n", family_title[f]);
+            continue;
+        }
+        fprintf(out, "%s: ", family_title[f]);
+        print_level_words(out, &o->level);
+        if (f == VIGEN_CHECK_SEPARABLE && o->level.value == g->level.value && o->level.capped == g->level.capped &&
+            o->level.undecided == g->level.undecided) {
+            fputs(" (same)\n", out);
+            continue;
+        }
+        fputc('\n', out);
+        const char *mine = o->level.undecided ? o->undecided_tree : o->fail_tree;
+        const char *general = g->level.undecided ? g->undecided_tree : g->fail_tree;
+        if (!(mine && general && strcmp(mine, general) == 0 && o->level.value == g->level.value))
+            print_bad_tree(out, o, "  ");
+    }
+
+    fputs("simplifying assumptions\n", out);
+    for (int part = 0; part < (rep->has_At ? 2 : 1); part++) {
+        fprintf(out, "  %-13s ", part ? "(ct, At, bt):" : "(c, A, b):");
+        print_assumption(out, "B", &rep->B[part]);
+        fputc(' ', out);
+        print_assumption(out, "C", &rep->C[part]);
+        fputc(' ', out);
+        print_assumption(out, "D", &rep->D[part]);
+        fputs(", stage order ", out);
+        const vigen_check_level *S = &rep->stage_order[part];
+        if (S->capped) fprintf(out, ">= %d", S->value);
+        else fprintf(out, "%d%s", S->value, S->undecided ? " (undecided above)" : "");
+        fputc('\n', out);
+    }
+    if (!rep->has_At) fputs("  (ct, At, bt):  same (At = A)\n", out);
+
+    if (rep->claim_order >= 0 || rep->claim_symplectic >= 0) {
+        fputs("claims       ", out);
+        if (rep->claim_order >= 0)
+            fprintf(out, " order = %d: %s%s;", rep->claim_order,
+                    tri_word(rep->claim_order_status, "holds", "FALSE"),
+                    rep->claim_order_separable ? " (for separable H)" : "");
+        if (rep->claim_symplectic >= 0)
+            fprintf(out, " symplectic = %s: %s%s;", rep->claim_symplectic ? "true" : "false",
+                    tri_word(rep->claim_symplectic_status, "holds", "FALSE"),
+                    rep->claim_symplectic_separable ? " (for separable H)" : "");
+        fputc('\n', out);
+    }
+    if (rep->against_checked)
+        fprintf(out, "against       %ld entr%s differ%s beyond the certified precision\n",
+                (long)rep->against_differences, rep->against_differences == 1 ? "y" : "ies",
+                rep->against_differences == 1 ? "s" : "");
+
+    if (rep->nproblems) {
+        fprintf(out, "problems (%ld)\n", (long)rep->nproblems);
+        slong shown = 0;
+        for (slong k = 0; k < rep->nproblems; k++) {
+            if (shown == 40) {
+                fprintf(out, "  ... and %ld more (see --json)\n", (long)(rep->nproblems - shown));
+                break;
+            }
+            /* a diagnosis is filed once per kind of condition, with one message */
+            if (k > 0 && rep->problems[k].diagnosed && rep->problems[k - 1].diagnosed &&
+                strcmp(rep->problems[k].message, rep->problems[k - 1].message) == 0)
+                continue;
+            fprintf(out, "  %s\n", rep->problems[k].message);
+            shown++;
+        }
+    } else fputs("problems      none\n", out);
+    fprintf(out, "trees: %s\n", vigen_tree_notation_help());
+    fprintf(out, "result        %s (exit %d)\n",
+            rep->exit_code == 0 ? "consistent; every stated claim holds"
+                                : "FAILED: see the problems above", rep->exit_code);
+}
+
+/* --------------------------------------------------------------- JSON */
+
+static void json_string(FILE *out, const char *s)
+{
+    fputc('"', out);
+    for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
+        if (*p == '"' || *p == '\\') fprintf(out, "\\%c", *p);
+        else if (*p == '\n') fputs("\\n", out);
+        else if (*p < 0x20) fprintf(out, "\\u%04x", *p);
+        else fputc(*p, out);
+    }
+    fputc('"', out);
+}
+
+static void json_ball(FILE *out, const arb_t x, slong prec)
+{
+    slong digits = (slong)(prec * 0.30103);
+    if (digits > 60) digits = 60;
+    if (digits < 10) digits = 10;
+    char *s = ball_str(x, digits);
+    json_string(out, s);
+    free(s);
+}
+
+static void json_tri(FILE *out, int v)
+{
+    fputs(v == VIGEN_CHECK_YES ? "true" : v == VIGEN_CHECK_NO ? "false" : "null", out);
+}
+
+static const char *level_status(const vigen_check_level *L)
+{
+    return L->capped ? "at_least" : L->undecided ? "undecided" : "exact";
+}
+
+static void json_level(FILE *out, const vigen_check_level *L)
+{
+    fprintf(out, "{\"value\": %d, \"status\": \"%s\"}", L->value, level_status(L));
+}
+
+static void json_bad_tree(FILE *out, const vigen_check_orders *o, slong prec)
+{
+    const vigen_check_level *L = &o->level;
+    const char *tree = L->capped ? NULL : L->undecided ? o->undecided_tree : o->fail_tree;
+    if (tree == NULL) { fputs("null", out); return; }
+    fputs("{\"tree\": ", out);
+    json_string(out, tree);
+    fprintf(out, ", \"order\": %d, \"undecided\": %s, \"value\": ", L->value + 1, L->undecided ? "true" : "false");
+    json_ball(out, L->undecided ? o->undecided_value : o->fail_value, prec);
+    fputs(", \"expected\": ", out);
+    json_ball(out, L->undecided ? o->undecided_expected : o->fail_expected, prec);
+    fputc('}', out);
+}
+
+void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
+{
+    static const char *const kinds[] = {"rowsum", "symplectic", "claim", "against"};
+    static const char *const family_keys[] = {"general", "separable", "A", "At"};
+    const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
+    fputs("{\"file\": ", out);
+    if (rep->path) json_string(out, rep->path); else fputs("null", out);
+    fputs(", \"name\": ", out);
+    if (rep->name) json_string(out, rep->name); else fputs("null", out);
+    fprintf(out, ", \"stages\": %ld, \"partitioned\": %s, \"precision_bits\": %ld, \"tolerance_bits\": %d, "
+                 "\"max_order\": %d,\n",
+            (long)rep->s, rep->has_At ? "true" : "false", (long)rep->prec, rep->tol_bits, rep->max_order);
+    fputs(" \"consistent\": ", out);
+    json_tri(out, rep->consistent);
+    fputs(", \"symplectic\": ", out);
+    json_tri(out, rep->symplectic);
+    fputs(", \"symplectic_separable\": ", out);
+    json_tri(out, rep->symplectic_separable);
+    fprintf(out, ",\n \"order\": %d, \"order_status\": \"%s\", \"order_separable\": %d, "
+                 "\"order_separable_status\": \"%s\",\n",
+            g->level.value, level_status(&g->level), rep->orders[VIGEN_CHECK_SEPARABLE].level.value,
+            level_status(&rep->orders[VIGEN_CHECK_SEPARABLE].level));
+    fprintf(out, " \"order_A\": %d, \"order_At\": %d,\n", rep->orders[VIGEN_CHECK_A_ALONE].level.value,
+            rep->orders[VIGEN_CHECK_AT_ALONE].level.value);
+    fputs(" \"orders\": {", out);
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+        const vigen_check_orders *o = &rep->orders[f];
+        fprintf(out, "%s\n  \"%s\": {\"level\": ", f ? "," : "", family_keys[f]);
+        json_level(out, &o->level);
+        fputs(", \"first_bad_tree\": ", out);
+        json_bad_tree(out, o, rep->prec);
+        fputs(", \"per_order\": [", out);
+        for (int n = 1; n <= o->evaluated_to; n++)
+            fprintf(out, "%s{\"order\": %d, \"conditions\": %ld, \"hold\": %ld, \"fail\": %ld, \"undecided\": %ld}",
+                    n > 1 ? ", " : "", n, (long)o->count[n], (long)o->hold[n], (long)o->fail[n],
+                    (long)o->undecided[n]);
+        fputs("]}", out);
+    }
+    fputs("},\n \"simplifying\": {", out);
+    for (int part = 0; part < 2; part++) {
+        fprintf(out, "%s\"%s\": {\"B\": ", part ? ", " : "", part ? "At" : "A");
+        json_level(out, &rep->B[part]);
+        fputs(", \"C\": ", out);
+        json_level(out, &rep->C[part]);
+        fputs(", \"D\": ", out);
+        json_level(out, &rep->D[part]);
+        fputs(", \"stage_order\": ", out);
+        json_level(out, &rep->stage_order[part]);
+        fputc('}', out);
+    }
+    fputs("},\n \"claims\": {", out);
+    int first = 1;
+    if (rep->claim_order >= 0) {
+        fprintf(out, "\"order\": {\"claimed\": %d, \"holds\": ", rep->claim_order);
+        json_tri(out, rep->claim_order_status);
+        fprintf(out, ", \"separable_only\": %s}", rep->claim_order_separable ? "true" : "false");
+        first = 0;
+    }
+    if (rep->claim_symplectic >= 0) {
+        fprintf(out, "%s\"symplectic\": {\"claimed\": %s, \"holds\": ", first ? "" : ", ",
+                rep->claim_symplectic ? "true" : "false");
+        json_tri(out, rep->claim_symplectic_status);
+        fprintf(out, ", \"separable_only\": %s}", rep->claim_symplectic_separable ? "true" : "false");
+    }
+    fputs("},\n \"problems\": [", out);
+    for (slong k = 0; k < rep->nproblems; k++) {
+        const vigen_check_problem *p = rep->problems + k;
+        fprintf(out, "%s\n  {\"kind\": \"%s\"", k ? "," : "", kinds[p->kind]);
+        if (p->matrix) fprintf(out, ", \"matrix\": \"%s\"", p->matrix);
+        if (p->row) fprintf(out, ", \"row\": %ld", (long)p->row);
+        if (p->col) fprintf(out, ", \"col\": %ld", (long)p->col);
+        if (p->has_value) { fputs(", \"value\": ", out); json_ball(out, p->value, rep->prec); }
+        else if (p->value_json) fprintf(out, ", \"value\": %s", p->value_json);
+        if (p->has_expected) { fputs(", \"expected\": ", out); json_ball(out, p->expected, rep->prec); }
+        else if (p->expected_json) fprintf(out, ", \"expected\": %s", p->expected_json);
+        if (p->undecided) fputs(", \"undecided\": true", out);
+        if (p->diagnosed) fputs(", \"diagnosed\": true", out);
+        fputs(", \"message\": ", out);
+        json_string(out, p->message ? p->message : "");
+        fputc('}', out);
+    }
+    fputs(rep->nproblems ? "\n ],\n" : "],\n", out);
+    fputs(" \"notation\": ", out);
+    json_string(out, vigen_tree_notation_help());
+    fprintf(out, ",\n \"exit\": %d}\n", rep->exit_code);
+}
+
+/* ------------------------------------------------------- file and CLI */
+
+static int load_file(vigen_tableau *t, const char *path, const vigen_check_options *opt, vigen_error *err)
+{
+    if (opt->load) return opt->load(t, path, opt->spec_digits, err);
+    return vigen_tableau_load(t, path, NULL, err);
+}
+
+int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err)
+{
+    if (opt->path == NULL) {
+        vigen_error_set(err, VIGEN_E_USAGE, "no tableau file given");
+        return 2;
+    }
+    vigen_tableau t, u;
+    int rc = load_file(&t, opt->path, opt, err);
+    if (rc != VIGEN_OK) return rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION ? 1 : 2;
+    if (opt->against) {
+        rc = load_file(&u, opt->against, opt, err);
+        if (rc != VIGEN_OK) {
+            vigen_tableau_clear(&t);
+            return rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION ? 1 : 2;
+        }
+    }
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    rc = vigen_check_tableau(&rep, &t, opt->against ? &u : NULL, opt, err);
+    int code;
+    if (rc != VIGEN_OK) {
+        vigen_error_prefix(err, "%s: ", opt->path);
+        code = rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION ? 1 : 2;
+    } else {
+        if (opt->json) vigen_check_print_json(out, &rep);
+        else vigen_check_print_text(out, &rep);
+        code = rep.exit_code;
+    }
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    if (opt->against) vigen_tableau_clear(&u);
+    return code;
+}
+
+int vigen_check_main(int argc, char **argv, vigen_check_loader_fn load)
+{
+    vigen_check_options opt;
+    vigen_check_options_init(&opt);
+    opt.load = load;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { fputs(vigen_check_usage, stdout); return 0; }
+        if (strcmp(a, "--json") == 0) opt.json = 1;
+        else if (strcmp(a, "--against") == 0 && i + 1 < argc) opt.against = argv[++i];
+        else if ((strcmp(a, "--max-order") == 0 || strcmp(a, "--prec") == 0) && i + 1 < argc) {
+            const char *v = argv[++i];
+            char *end = NULL;
+            long n = strtol(v, &end, 10);
+            int is_order = strcmp(a, "--max-order") == 0;
+            long lo = is_order ? 1 : 16, hi = is_order ? VIGEN_TREE_MAX_ORDER : 1000000;
+            if (end == v || *end != '\0' || n < lo || n > hi) {
+                fprintf(stderr, "vigen check: %s takes a whole number from %ld to %ld, not '%s'\n", a, lo, hi, v);
+                return 2;
+            }
+            if (is_order) opt.max_order = (int)n;
+            else {
+                opt.prec = n;
+                if (opt.max_prec < n) opt.max_prec = n;
+            }
+        } else if (a[0] == '-' && a[1] != '\0') {
+            fprintf(stderr, "vigen check: unknown or incomplete option '%s'\n\n%s", a, vigen_check_usage);
+            return 2;
+        } else if (opt.path == NULL) opt.path = a;
+        else {
+            fprintf(stderr, "vigen check: one file at a time (use --against FILE2 to compare)\n");
+            return 2;
+        }
+    }
+    if (opt.path == NULL) { fputs(vigen_check_usage, stderr); return 2; }
+    vigen_error err;
+    vigen_error_init(&err);
+    int code = vigen_check_run(&opt, stdout, &err);
+    if (err.code != VIGEN_OK) {
+        fprintf(stderr, "vigen check: %s\n", err.message ? err.message : vigen_status_name(err.code));
+        vigen_error_clear(&err);
+    }
+    return code;
+}

@@ -1,0 +1,75 @@
+/* emit.h — `vigen emit`: compiles a tableau into a specialised C stepper.
+ *
+ *   vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]
+ *
+ * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
+ * templates/stepper.h.in and templates/stepper.c.in (see template.h) and
+ * linked against the runtime library (runtime/include/vigen/runtime.h).
+ *
+ * - Coefficients are literals correctly rounded (to nearest, ties to even)
+ *   from the certified balls to the target type: 53, 64 or 113 bits, printed
+ *   as exact C hex-float literals.  When a ball straddles a rounding boundary
+ *   the tableau is re-evaluated at higher precision; an entry given as a
+ *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION).  An
+ *   entry that is a ball around zero of radius below 2^-(bits+20) is emitted
+ *   as an exact zero with a warning.
+ * - A tableau without At is a classical RK method: At = A, bt = b.
+ * - NAME becomes a C identifier: characters outside [A-Za-z0-9_] become '_',
+ *   a leading digit or underscore gets the prefix "m_", C keywords get the
+ *   suffix "_"; a warning tells when NAME changed.  The file names use the
+ *   sanitised name, so NAME cannot point elsewhere.  Texts from the tableau
+ *   file (name, source, description, entry texts) enter the output only inside
+ *   comments or string literals and only as printable ASCII with comment and
+ *   string terminators broken.
+ * - Output is byte-identical for identical input: the header names the
+ *   tableau, its digest, the generator version and the options; there is no
+ *   timestamp and no path.  Digest: FNV-1a 64 of the canonical text
+ *   "vigen-tableau-v1\n" + name + "\n" + s + "\n" then every entry text of c,
+ *   A (row-major), b, At, ct, bt, one per line, "-" for an absent part.
+ * - Structure: the stage equations are solved by fixed-point iteration or
+ *   simplified Newton (runtime options).  When the tableau's dependency graph
+ *   is acyclic for separable H (H = T(p) + V(t, q)), an explicit path is also
+ *   emitted and used when sys->separable is set; when it is acyclic for any H
+ *   only the explicit path is emitted.  Equal rows share stage values and
+ *   gradients, zero coefficients are skipped, and the gradient at the end of
+ *   a step is reused at the start of the next (first same as last) when the
+ *   tableau has a zero row and a row equal to b.
+ *
+ * Data handed to the templates (fields of the Lua table): NAME, UNAME, REAL,
+ * SFX, HAM, STEPPER_TYPE, real_check, header (comment lines), coef_lines,
+ * tableau_name, s, order, c[i], a[i][j], at[i][j], b[i], bt[i] (literals;
+ * false = exact zero; c never false), extrap ("lagrange" or "copy"),
+ * inv[j][m] (1/(c_j - c_m)), explicit_mode ("none", "separable", "general"),
+ * explicit_separable, nx, copy_q0, copy_p0, xops, fsal, fsal_swaps,
+ * nevals_f, nevals_g.
+ */
+#ifndef VIGEN_EMIT_H
+#define VIGEN_EMIT_H
+
+#include <stddef.h>
+#include "error.h"
+#include "tableau.h"
+
+enum { VIGEN_REAL_DOUBLE, VIGEN_REAL_LONG_DOUBLE, VIGEN_REAL_FLOAT128 };
+
+typedef struct {
+    const char *name;        /* requested NAME (sanitised by the emitter) */
+    int real;                /* VIGEN_REAL_* */
+    const char *input_label; /* how the input is named in the header (basename) */
+} vigen_emit_options;
+
+/* Renders the header and source for a loaded tableau (balls need not be
+ * evaluated: the emitter evaluates at the precision it needs).  *h_text and
+ * *c_text are heap strings; *ident receives the sanitised name. */
+int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
+                      char **ident, vigen_error *err);
+
+/* Sanitises a requested name into a C identifier (heap string). */
+char *vigen_emit_identifier(const char *name);
+
+/* The `vigen emit` command: argv[0] is "emit", options follow.  Returns the
+ * process exit status: 0 success, 1 the tableau cannot be emitted (precision),
+ * 2 usage, input or output error. */
+int vigen_emit_main(int argc, char **argv);
+
+#endif

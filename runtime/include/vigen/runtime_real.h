@@ -1,0 +1,79 @@
+/* vigen/runtime_real.h — declarations repeated for each real type.
+ *
+ * Included by vigen/runtime.h only, once per type, with VIGEN_REAL the type
+ * and VIGEN_SFX(name) adding the type's suffix (none, _ld, _q).  No include
+ * guard on purpose.  See runtime.h for the double expansion and semantics.
+ */
+#if !defined(VIGEN_REAL) || !defined(VIGEN_SFX)
+#error "include <vigen/runtime.h>, not runtime_real.h"
+#endif
+
+/* Gradient of H with respect to q or p, written into out[0 .. dim-1]. */
+typedef void (*VIGEN_SFX(vigen_grad_fn))(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p,
+                                         VIGEN_REAL *out, void *ctx);
+/* Hessian of H, (2 dim) x (2 dim) row-major as doubles: rows (dH/dq, dH/dp),
+ * columns (q, p).  Used only by the Newton solver; NULL = finite differences. */
+typedef void (*VIGEN_SFX(vigen_hess_fn))(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p,
+                                         double *out, void *ctx);
+
+typedef struct {
+    size_t dim;
+    VIGEN_SFX(vigen_grad_fn) dHdq, dHdp;
+    VIGEN_REAL (*H)(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, void *ctx);
+    void *ctx;
+    int separable;
+    VIGEN_SFX(vigen_hess_fn) hessian;
+} VIGEN_SFX(vigen_hamiltonian);
+
+/* A stepper as a const type object (GSL style), for the driver. */
+typedef struct {
+    const char *name;          /* tableau name */
+    int stages;
+    int order;                 /* order claimed by the tableau file, -1 unknown */
+    int explicit_separable;    /* 1 when explicit for separable H */
+    void *(*alloc)(const VIGEN_SFX(vigen_hamiltonian) *sys, const vigen_solver_options *opt);
+    int (*step)(void *w, VIGEN_REAL *t, VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h);
+    void (*reset)(void *w);
+    const vigen_stats *(*stats)(const void *w);
+    void (*free)(void *w);
+} VIGEN_SFX(vigen_stepper_type);
+
+/* Observer: called with the step count done so far; nonzero return stops. */
+typedef int (*VIGEN_SFX(vigen_observer_fn))(unsigned long step, VIGEN_REAL t, const VIGEN_REAL *q,
+                                            const VIGEN_REAL *p, void *ctx);
+
+/* Takes nsteps steps of size h from (t, q, p) with the workspace w of type T,
+ * calling obs (may be NULL) at step 0, after every `every` steps (0 = never
+ * in between) and after the last step.  Returns VIGEN_SUCCESS, the stepper's
+ * error status (state left at the last good step), or VIGEN_ESTOPPED.
+ * *done (may be NULL) receives the number of steps taken. */
+int VIGEN_SFX(vigen_integrate)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t,
+                               VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
+                               unsigned long every, VIGEN_SFX(vigen_observer_fn) obs, void *obs_ctx,
+                               unsigned long *done);
+
+/* Finite-difference Hessian (forward differences of the gradients, 2 dim
+ * evaluations of each gradient) into hess ((2 dim)^2 doubles).  work holds
+ * 6 dim reals.  rel_step 0 = default.  Adds the calls made to *nq, *np. */
+void VIGEN_SFX(vigen_hessian_fd)(const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL t,
+                                 const VIGEN_REAL *q, const VIGEN_REAL *p, double *hess,
+                                 VIGEN_REAL *work, double rel_step, unsigned long *nq,
+                                 unsigned long *np);
+
+/* Machine epsilon of the type and the default stall tolerance 2^20 eps. */
+double VIGEN_SFX(vigen_epsilon)(void);
+double VIGEN_SFX(vigen_default_tol)(void);
+
+/* TwoSum update x <- x + d with compensation c carried between calls:
+ * the low-order bits lost in x are kept in c and fed back next time. */
+static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_update)(VIGEN_REAL x, VIGEN_REAL d, VIGEN_REAL *c)
+{
+    VIGEN_REAL e = d + *c;
+    VIGEN_REAL s = x + e;
+    VIGEN_REAL bb = s - x;
+    *c = (x - (s - bb)) + (e - bb);
+    return s;
+}
+
+/* Compensated sum of an array of this type. */
+VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);

@@ -1,0 +1,98 @@
+/* newton.c — the linear algebra of simplified Newton for PRK stage equations
+ * (GSL LU with GSL's aborting error handler switched off). */
+#include <stdlib.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_matrix.h>
+#include <gsl/gsl_permutation.h>
+#include <gsl/gsl_vector.h>
+#include <vigen/runtime.h>
+
+struct vigen_newton {
+    size_t s, n, N;           /* stages, dimension, N = 2 s n */
+    double *hess;             /* (2n)^2, row-major */
+    gsl_matrix *M;
+    gsl_permutation *perm;
+    gsl_vector *rhs, *x;
+};
+
+vigen_newton *vigen_newton_alloc(size_t stages, size_t dim)
+{
+    if (stages == 0 || dim == 0) return NULL;
+    gsl_set_error_handler_off();
+    vigen_newton *nw = calloc(1, sizeof *nw);
+    if (nw == NULL) return NULL;
+    nw->s = stages;
+    nw->n = dim;
+    nw->N = 2 * stages * dim;
+    nw->hess = calloc(4 * dim * dim, sizeof(double));
+    nw->M = gsl_matrix_alloc(nw->N, nw->N);
+    nw->perm = gsl_permutation_alloc(nw->N);
+    nw->rhs = gsl_vector_alloc(nw->N);
+    nw->x = gsl_vector_alloc(nw->N);
+    if (!nw->hess || !nw->M || !nw->perm || !nw->rhs || !nw->x) {
+        vigen_newton_free(nw);
+        return NULL;
+    }
+    return nw;
+}
+
+void vigen_newton_free(vigen_newton *nw)
+{
+    if (nw == NULL) return;
+    free(nw->hess);
+    if (nw->M) gsl_matrix_free(nw->M);
+    if (nw->perm) gsl_permutation_free(nw->perm);
+    if (nw->rhs) gsl_vector_free(nw->rhs);
+    if (nw->x) gsl_vector_free(nw->x);
+    free(nw);
+}
+
+double *vigen_newton_hessian(vigen_newton *nw) { return nw->hess; }
+double *vigen_newton_rhs(vigen_newton *nw) { return nw->rhs->data; }
+
+void vigen_newton_matrix_identity(vigen_newton *nw) { gsl_matrix_set_identity(nw->M); }
+
+/* Q rows of stage i: M[Qi, Qj] -= ha Hpq,  M[Qi, Pj] -= ha Hpp;
+ * P rows of stage i: M[Pi, Qj] += hat Hqq, M[Pi, Pj] += hat Hqp. */
+void vigen_newton_matrix_block(vigen_newton *nw, size_t i, size_t j, double ha, double hat)
+{
+    const size_t n = nw->n, s = nw->s, n2 = 2 * n;
+    const size_t qi = i * n, pi = (s + i) * n, qj = j * n, pj = (s + j) * n;
+    for (size_t r = 0; r < n; r++) {
+        const double *hq = nw->hess + r * n2;          /* row r of d(dH/dq)/d(q,p) */
+        const double *hp = nw->hess + (n + r) * n2;    /* row r of d(dH/dp)/d(q,p) */
+        double *mq = gsl_matrix_ptr(nw->M, qi + r, 0);
+        double *mp = gsl_matrix_ptr(nw->M, pi + r, 0);
+        if (ha != 0.0) {
+            for (size_t k = 0; k < n; k++) {
+                mq[qj + k] -= ha * hp[k];
+                mq[pj + k] -= ha * hp[n + k];
+            }
+        }
+        if (hat != 0.0) {
+            for (size_t k = 0; k < n; k++) {
+                mp[qj + k] += hat * hq[k];
+                mp[pj + k] += hat * hq[n + k];
+            }
+        }
+    }
+}
+
+int vigen_newton_factor(vigen_newton *nw)
+{
+    int signum = 0;
+    if (gsl_linalg_LU_decomp(nw->M, nw->perm, &signum) != GSL_SUCCESS) return VIGEN_ESINGULAR;
+    for (size_t k = 0; k < nw->N; k++) {
+        double d = gsl_matrix_get(nw->M, k, k);
+        if (d == 0.0 || d != d) return VIGEN_ESINGULAR;
+    }
+    return VIGEN_SUCCESS;
+}
+
+int vigen_newton_solve(vigen_newton *nw)
+{
+    if (gsl_linalg_LU_solve(nw->M, nw->perm, nw->rhs, nw->x) != GSL_SUCCESS) return VIGEN_ESINGULAR;
+    gsl_vector_memcpy(nw->rhs, nw->x);
+    return VIGEN_SUCCESS;
+}

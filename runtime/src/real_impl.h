@@ -1,0 +1,71 @@
+/* real_impl.h — runtime functions repeated for each real type (included by
+ * real.c with VIGEN_REAL, VIGEN_SFX, VIGEN_EPS and VIGEN_SQRT defined). */
+
+int VIGEN_SFX(vigen_integrate)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t,
+                               VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
+                               unsigned long every, VIGEN_SFX(vigen_observer_fn) obs, void *obs_ctx,
+                               unsigned long *done)
+{
+    unsigned long k = 0;
+    int status = VIGEN_SUCCESS;
+    if (done) *done = 0;
+    if (T == NULL || w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
+    if (obs && obs(0, *t, q, p, obs_ctx)) return VIGEN_ESTOPPED;
+    while (k < nsteps) {
+        status = T->step(w, t, q, p, h);
+        if (status != VIGEN_SUCCESS) break;
+        k++;
+        if (obs && ((every && k % every == 0) || k == nsteps)) {
+            if (obs(k, *t, q, p, obs_ctx)) { status = VIGEN_ESTOPPED; break; }
+        }
+    }
+    if (done) *done = k;
+    return status;
+}
+
+/* Column c of the Hessian is (grad(x + d e_c) - grad(x)) / d with
+ * grad = (dH/dq, dH/dp) and x = (q, p); d is relative to |x_c|. */
+void VIGEN_SFX(vigen_hessian_fd)(const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL t,
+                                 const VIGEN_REAL *q, const VIGEN_REAL *p, double *hess,
+                                 VIGEN_REAL *work, double rel_step, unsigned long *nq,
+                                 unsigned long *np)
+{
+    const size_t n = sys->dim, n2 = 2 * n;
+    VIGEN_REAL *x = work;              /* (q, p) perturbed in one component */
+    VIGEN_REAL *g0 = work + n2;        /* gradients at (q, p) */
+    VIGEN_REAL *g1 = work + 2 * n2;    /* gradients at the perturbed point */
+    if (rel_step <= 0.0) rel_step = (double)VIGEN_SQRT(VIGEN_EPS);
+    for (size_t k = 0; k < n; k++) { x[k] = q[k]; x[n + k] = p[k]; }
+    sys->dHdq(t, x, x + n, g0, sys->ctx);
+    sys->dHdp(t, x, x + n, g0 + n, sys->ctx);
+    *nq += 1;
+    *np += 1;
+    for (size_t c = 0; c < n2; c++) {
+        VIGEN_REAL xc = x[c];
+        VIGEN_REAL ax = xc < 0 ? -xc : xc;
+        VIGEN_REAL d = (VIGEN_REAL)rel_step * (ax > 1 ? ax : 1);
+        x[c] = xc + d;
+        d = x[c] - xc;                 /* the step actually represented */
+        sys->dHdq(t, x, x + n, g1, sys->ctx);
+        sys->dHdp(t, x, x + n, g1 + n, sys->ctx);
+        *nq += 1;
+        *np += 1;
+        for (size_t r = 0; r < n2; r++) hess[r * n2 + c] = (double)((g1[r] - g0[r]) / d);
+        x[c] = xc;
+    }
+}
+
+double VIGEN_SFX(vigen_epsilon)(void) { return (double)VIGEN_EPS; }
+double VIGEN_SFX(vigen_default_tol)(void) { return 1048576.0 * (double)VIGEN_EPS; }
+
+VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n)
+{
+    VIGEN_REAL s = 0, c = 0;
+    for (size_t i = 0; i < n; i++) {
+        VIGEN_REAL t = s + x[i];
+        VIGEN_REAL bb = t - s;
+        c += (s - (t - bb)) + (x[i] - bb);   /* TwoSum error, Neumaier style */
+        s = t;
+    }
+    return s + c;
+}

@@ -1,0 +1,1 @@
+return { name = "chebyshev8", basis = "lagrange", nodes = chebyshev_quadrature(8) }

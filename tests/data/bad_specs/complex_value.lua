@@ -1,0 +1,1 @@
+return { name = "complex_value", basis = { "1", "sqrt(t - 2)" }, nodes = { "0", "1" } }

@@ -1,0 +1,1 @@
+return { name = "count_mismatch", basis = { "1", "t" }, nodes = { "0" } }

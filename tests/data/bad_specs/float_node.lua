@@ -1,0 +1,1 @@
+return { name = "float_node", basis = { "1", "t" }, nodes = { 0, 1/3 } }

@@ -1,0 +1,257 @@
+/* driver.c — runs an emitted stepper on problems with known solutions and
+ * prints key=value lines for tests/test_emit.c.  Compiled by the test with
+ *   -DSTEPPER_HEADER='"NAME.h"' -DSTEPPER_TYPE=NAME_type [-DREAL_LD]
+ * together with the runtime sources.
+ *
+ *   driver order-ho            empirical order on q'' = -q (exact cos/sin)
+ *   driver order-kepler E      empirical order on Kepler, eccentricity E, up to
+ *                              t = 5 (not a period), exact solution from Kepler's equation
+ *   driver longrun E N H       N steps of size H on Kepler: energy error and
+ *                              angular momentum error (max, early, late)
+ *   driver qp                  H = q p: q0 e^t, p0 e^-t and q p conserved
+ *   driver huge-h              fixed-point iteration on q'' = -q with h = 50
+ *   driver newton              simplified Newton, h = 10 on q'' = -q
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include STEPPER_HEADER
+
+#ifdef REAL_LD
+typedef long double real;
+typedef vigen_hamiltonian_ld ham_t;
+typedef vigen_stepper_type_ld type_t;
+#define R_SIN sinl
+#define R_COS cosl
+#define R_SQRT sqrtl
+#define R_EXP expl
+#define R_FABS fabsl
+#else
+typedef double real;
+typedef vigen_hamiltonian ham_t;
+typedef vigen_stepper_type type_t;
+#define R_SIN sin
+#define R_COS cos
+#define R_SQRT sqrt
+#define R_EXP exp
+#define R_FABS fabs
+#endif
+
+extern const type_t STEPPER_TYPE;
+static const type_t *T = &STEPPER_TYPE;
+
+/* ---- problems ---- */
+static void ho_dq(real t, const real *q, const real *p, real *o, void *c) { (void)t; (void)p; (void)c; o[0] = q[0]; }
+static void ho_dp(real t, const real *q, const real *p, real *o, void *c) { (void)t; (void)q; (void)c; o[0] = p[0]; }
+static real ho_H(real t, const real *q, const real *p, void *c) { (void)t; (void)c; return (q[0] * q[0] + p[0] * p[0]) / 2; }
+
+static void kep_dq(real t, const real *q, const real *p, real *o, void *c)
+{
+    (void)t; (void)p; (void)c;
+    real r2 = q[0] * q[0] + q[1] * q[1], r3 = r2 * R_SQRT(r2);
+    o[0] = q[0] / r3;
+    o[1] = q[1] / r3;
+}
+static void kep_dp(real t, const real *q, const real *p, real *o, void *c) { (void)t; (void)q; (void)c; o[0] = p[0]; o[1] = p[1]; }
+static real kep_H(real t, const real *q, const real *p, void *c)
+{
+    (void)t; (void)c;
+    return (p[0] * p[0] + p[1] * p[1]) / 2 - 1 / R_SQRT(q[0] * q[0] + q[1] * q[1]);
+}
+
+static void qp_dq(real t, const real *q, const real *p, real *o, void *c) { (void)t; (void)q; (void)c; o[0] = p[0]; }
+static void qp_dp(real t, const real *q, const real *p, real *o, void *c) { (void)t; (void)p; (void)c; o[0] = q[0]; }
+
+/* Exact Kepler orbit with a = 1, period 2 pi, pericentre at t = 0. */
+static void kepler_exact(real e, real t, real *q, real *p)
+{
+    real E = t;
+    for (int k = 0; k < 100; k++) {
+        real d = (E - e * R_SIN(E) - t) / (1 - e * R_COS(E));
+        E -= d;
+        if (R_FABS(d) < 1e-30L) break;
+    }
+    real s = R_SQRT(1 - e * e), den = 1 - e * R_COS(E);
+    q[0] = R_COS(E) - e;
+    q[1] = s * R_SIN(E);
+    p[0] = -R_SIN(E) / den;
+    p[1] = s * R_COS(E) / den;
+}
+
+static int run(ham_t *sys, real *t, real *q, real *p, real h, long n, int separable)
+{
+    sys->separable = separable;
+    void *w = T->alloc(sys, NULL);
+    if (!w) { printf("alloc=failed\n"); exit(1); }
+    int st = VIGEN_SUCCESS;
+    for (long k = 0; k < n && st == VIGEN_SUCCESS; k++) st = T->step(w, t, q, p, h);
+    T->free(w);
+    return st;
+}
+
+/* error at time T_end after n steps */
+static double err_ho(long n, int sep)
+{
+    ham_t sys = { 1, ho_dq, ho_dp, ho_H, NULL, 1, NULL };
+    real t = 0, q[1] = { 1 }, p[1] = { 0 }, Tend = 2;
+    if (run(&sys, &t, q, p, Tend / n, n, sep)) return -1;
+    return (double)R_SQRT((q[0] - R_COS(Tend)) * (q[0] - R_COS(Tend)) + (p[0] + R_SIN(Tend)) * (p[0] + R_SIN(Tend)));
+}
+
+static double err_kepler(real e, long n, int sep)
+{
+    ham_t sys = { 2, kep_dq, kep_dp, kep_H, NULL, 1, NULL };
+    real t = 0, q[2], p[2], qe[2], pe[2], Tend = 5;
+    kepler_exact(e, 0, q, p);
+    if (run(&sys, &t, q, p, Tend / n, n, sep)) return -1;
+    kepler_exact(e, Tend, qe, pe);
+    real d = 0;
+    for (int k = 0; k < 2; k++) d += (q[k] - qe[k]) * (q[k] - qe[k]) + (p[k] - pe[k]) * (p[k] - pe[k]);
+    return (double)R_SQRT(d);
+}
+
+static double err_qp(long n, int sep)
+{
+    ham_t sys = { 1, qp_dq, qp_dp, NULL, NULL, 0, NULL };
+    real t = 0, q[1] = { 1 }, p[1] = { 2 }, Tend = 1;
+    (void)sep;
+    if (run(&sys, &t, q, p, Tend / n, n, 0)) return -1;
+    return (double)R_SQRT((q[0] - R_EXP(Tend)) * (q[0] - R_EXP(Tend)) + (p[0] - 2 * R_EXP(-Tend)) * (p[0] - 2 * R_EXP(-Tend)));
+}
+
+/* Prints the observed order from the first pair of step counts (n, 2n) whose
+ * errors both lie in [floor, 1e-3], for the explicit and the implicit path. */
+static void order(const char *label, double (*err)(long, int), double floor_)
+{
+    for (int sep = 1; sep >= 0; sep--) {
+        double best = -1, e1 = 0, e2 = 0;
+        for (long n = 4; n <= (1L << 20); n *= 2) {
+            e1 = err(n, sep);
+            if (e1 < 0 || e1 > 1e-3) continue;   /* step too large (no convergence) or not asymptotic */
+            e2 = err(2 * n, sep);
+            if (e2 < 0) continue;
+            if (e2 < floor_) break;
+            best = log(e1 / e2) / log(2.0);
+            break;
+        }
+        printf("%s_order_%s=%.3f\n%s_err_%s=%.3e\n", label, sep ? "sep" : "nonsep", best, label, sep ? "sep" : "nonsep", e2);
+    }
+}
+
+static real angmom(const real *q, const real *p) { return q[0] * p[1] - q[1] * p[0]; }
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) return 2;
+#ifdef REAL_LD
+    double floor_ = 1e-15;
+#else
+    double floor_ = 1e-11;
+#endif
+    if (strcmp(argv[1], "order-ho") == 0) {
+        order("ho", err_ho, floor_);
+    } else if (strcmp(argv[1], "order-kepler") == 0) {
+        real ecc = (real)atof(argv[2]);
+        for (int sep = 1; sep >= 0; sep--) {
+            double best = -1, e1, e2 = 0;
+            for (long n = 16; n <= (1L << 22); n *= 2) {
+                e1 = err_kepler(ecc, n, sep);
+                if (e1 < 0 || e1 > 1e-3) continue;
+                e2 = err_kepler(ecc, 2 * n, sep);
+                if (e2 < 0) continue;
+                if (e2 < floor_) break;
+                best = log(e1 / e2) / log(2.0);
+                break;
+            }
+            printf("kepler_order_%s=%.3f\nkepler_err_%s=%.3e\n", sep ? "sep" : "nonsep", best, sep ? "sep" : "nonsep", e2);
+        }
+    } else if (strcmp(argv[1], "longrun") == 0) {
+        real e = (real)atof(argv[2]);
+        long n = atol(argv[3]);
+        real h = (real)atof(argv[4]);
+        ham_t sys = { 2, kep_dq, kep_dp, kep_H, NULL, 1, NULL };
+        real t = 0, q[2], p[2];
+        kepler_exact(e, 0, q, p);
+        real H0 = kep_H(0, q, p, NULL), L0 = angmom(q, p);
+        double emax = 0, early = 0, late = 0, lmax = 0;
+        void *w = T->alloc(&sys, NULL);
+        int st = 0;
+        for (long k = 1; k <= n && st == 0; k++) {
+            st = T->step(w, &t, q, p, h);
+            double de = (double)R_FABS((kep_H(t, q, p, NULL) - H0) / H0);
+            double dl = (double)R_FABS((angmom(q, p) - L0) / L0);
+            if (de > emax) emax = de;
+            if (dl > lmax) lmax = dl;
+            if (k <= n / 10 && de > early) early = de;
+            if (k > n - n / 10 && de > late) late = de;
+        }
+        const vigen_stats *S = T->stats(w);
+        printf("status=%d\nenergy_max=%.3e\nenergy_early=%.3e\nenergy_late=%.3e\nangmom_max=%.3e\n", st, emax, early,
+               late, lmax);
+        printf("grad_per_step=%.3f\niter_per_step=%.3f\n", (double)(S->dHdq_evals + S->dHdp_evals) / (double)S->steps,
+               (double)S->iterations / (double)S->steps);
+        T->free(w);
+    } else if (strcmp(argv[1], "qp") == 0) {
+        order("qp", err_qp, floor_);
+        ham_t sys = { 1, qp_dq, qp_dp, NULL, NULL, 0, NULL };
+        real t = 0, q[1] = { 1 }, p[1] = { 2 };
+        double inv = 0;
+        void *w = T->alloc(&sys, NULL);
+        int st = 0;
+        for (long k = 0; k < 1000 && st == 0; k++) {
+            st = T->step(w, &t, q, p, (real)0.01);
+            double d = (double)R_FABS(q[0] * p[0] - 2) / 2;
+            if (d > inv) inv = d;
+        }
+        printf("qp_status=%d\nqp_invariant=%.3e\nqp_q_relerr=%.3e\nqp_p_relerr=%.3e\n", st, inv,
+               (double)R_FABS(q[0] / R_EXP(t) - 1), (double)R_FABS(p[0] / (2 * R_EXP(-t)) - 1));
+        T->free(w);
+    } else if (strcmp(argv[1], "huge-h") == 0) {
+        /* H = q p with h = 50: the stage map has Lipschitz constant ~ h |a_ij| */
+        ham_t sys = { 1, qp_dq, qp_dp, NULL, NULL, 0, NULL };
+        real t = 0, q[1] = { 1 }, p[1] = { (real)0.5 };
+        void *w = T->alloc(&sys, NULL);
+        int st = T->step(w, &t, q, p, 50);
+        const vigen_stats *S = T->stats(w);
+        printf("huge_status=%d\nhuge_message=%s\nhuge_iterations=%lu\nhuge_unchanged=%d\n", st, vigen_strerror(st),
+               S->last_iterations, t == 0 && q[0] == 1 && p[0] == (real)0.5);
+        T->free(w);
+    } else if (strcmp(argv[1], "newton") == 0) {
+        /* Newton and fixed-point iteration solve the same stage equations:
+         * same result to round-off at h = 0.05 on H = q p; Newton also
+         * succeeds at h = 5 where fixed-point iteration diverges, with q p
+         * still conserved (a quadratic invariant of every symplectic PRK). */
+        ham_t sys = { 1, qp_dq, qp_dp, NULL, NULL, 0, NULL };
+        vigen_solver_options opt;
+        vigen_solver_options_default(&opt);
+        opt.solver = VIGEN_SOLVER_NEWTON;
+        real t = 0, q[1] = { 1 }, p[1] = { (real)0.5 }, t2 = 0, q2[1] = { 1 }, p2[1] = { (real)0.5 };
+        void *w = T->alloc(&sys, &opt), *w2 = T->alloc(&sys, NULL);
+        int st = 0, st2 = 0;
+        for (int k = 0; k < 20 && st == 0 && st2 == 0; k++) {
+            st = T->step(w, &t, q, p, (real)0.05);
+            st2 = T->step(w2, &t2, q2, p2, (real)0.05);
+        }
+        double diff = (double)(R_FABS(q[0] - q2[0]) / R_FABS(q2[0]) + R_FABS(p[0] - p2[0]) / R_FABS(p2[0]));
+        printf("newton_status=%d\nnewton_vs_fp=%.3e\nnewton_iter_per_step=%.2f\n", st ? st : st2, diff,
+               (double)T->stats(w)->iterations / (double)T->stats(w)->steps);
+        T->free(w);
+        t = 0; q[0] = 1; p[0] = (real)0.5;
+        w = T->alloc(&sys, &opt);
+        double inv = 0;
+        for (int k = 0; k < 3 && st == 0; k++) {
+            st = T->step(w, &t, q, p, 5);
+            double d = (double)R_FABS(q[0] * p[0] / (real)0.5 - 1);
+            if (d > inv) inv = d;
+        }
+        printf("newton_stiff_status=%d\nnewton_stiff_invariant=%.3e\n", st, inv);
+        st2 = T->step(w2, &t2, q2, p2, 5);
+        printf("fp_stiff_status=%d\n", st2);
+        T->free(w);
+        T->free(w2);
+    } else {
+        return 2;
+    }
+    return 0;
+}
