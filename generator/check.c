@@ -244,8 +244,7 @@ static slong cond_entries(entry *out, const ctx_t *cx, const cond *c)
 static int cond_involves(const ctx_t *cx, const cond *c, entry e)
 {
     entry buf[4];
-    entry *list = c->type == C_ROWSUM_A || c->type == C_ROWSUM_AT || c->type == C_SUM_B || c->type == C_SUM_BT
-                      ? flint_malloc(sizeof(entry) * (size_t)(cx->s + 1)) : buf;
+    entry *list = cond_is_rowsum(c) ? flint_malloc(sizeof(entry) * (size_t)(cx->s + 1)) : buf;
     slong n = cond_entries(list, cx, c);
     int hit = 0;
     for (slong k = 0; k < n && !hit; k++) hit = entry_eq(list[k], e);
@@ -307,16 +306,20 @@ static slong digits_to_separate(const arb_t x, const arb_t y, slong prec)
     double xx = fabs(arf_get_d(arb_midref(x), ARF_RND_NEAR));
     arb_clear(d);
     double scale = yy > xx ? yy : xx;
-    if (scale == 0.0 || dd == 0.0) return 8;
+    if (scale == 0.0 || dd == 0.0 || !isfinite(scale) || !isfinite(dd)) return 8;
     double rel = dd / scale;
     if (rel >= 1e-5) return 8;
+    if (rel < 1e-40) return 45;
     slong n = (slong)ceil(-log10(rel)) + 4;
     return n > 45 ? 45 : n;
 }
 
+/* Up to `digits` certain digits; the radius is shown when the ball is too
+ * wide for them ("[0.21 +/- 5.01e-4]", "[+/- 1.01e-38]"). */
 static char *ball_str(const arb_t x, slong digits)
 {
-    char *s = arb_get_str(x, digits, ARB_STR_NO_RADIUS);
+    int narrow = arb_is_exact(x) || arb_rel_accuracy_bits(x) >= (slong)(digits * 3.33);
+    char *s = arb_get_str(x, digits, narrow ? ARB_STR_NO_RADIUS : 0);
     char *r = vigen_strdup(s);
     flint_free(s);
     return r;
@@ -389,7 +392,7 @@ static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, cond *conds, slong n, 
     for (slong k = 0; k < n; k++)
         if (in_scope[k] && conds[k].status == FAILS) { first = k; break; }
     if (first < 0) return 0;
-    entry *cand = flint_malloc(sizeof(entry) * (size_t)(cx->s + 1));
+    entry *cand = flint_malloc(sizeof(entry) * (size_t)(cx->s + 4));   /* s + 1 or 4 entries */
     slong ncand = cond_entries(cand, cx, conds + first);
     /* deduplicate and intersect with every other failed condition */
     slong m = 0;
@@ -909,6 +912,7 @@ static void check_claims(vigen_check_report *rep)
         rep->claim_order_status = st;
         if (st != VIGEN_CHECK_YES) {
             vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_CLAIM);
+            p->claim = "order";
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup_printf("%d", g->value);
             p->expected_json = vigen_strdup_printf("%d", claim);
@@ -941,6 +945,7 @@ static void check_claims(vigen_check_report *rep)
         rep->claim_symplectic_status = st;
         if (st != VIGEN_CHECK_YES) {
             vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_CLAIM);
+            p->claim = "symplectic";
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup(rep->symplectic == VIGEN_CHECK_YES ? "true"
                                          : rep->symplectic == VIGEN_CHECK_NO ? "false" : "null");
@@ -1128,7 +1133,9 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     rep->rounds = 0;
 
     for (;;) {
+        rep->undecided_reason = NULL;
         rc = evaluate(t, &prec, opt.max_prec, err);
+        if (rc == VIGEN_OK && !has_texts(t)) prec = t->prec;
         if (rc == VIGEN_OK && against) {
             slong p2 = prec;
             rc = evaluate(against, &p2, opt.max_prec, err);
@@ -1140,7 +1147,6 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
 
         ctx_t cx;
         ctx_init(&cx, t, opt.tol_bits);
-        if (!has_texts(t)) prec = t->prec;
         cx.prec = prec;
         rep->prec = prec;
         check_rows_and_symplecticity(rep, &cx, t->claim_symplectic);
@@ -1167,7 +1173,14 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
         mag_clear(half);
         mag_set(last_worst, cx.worst);
         ctx_clear(&cx);
-        if (undecided == 0 || !refinable || 2 * prec > opt.max_prec || (rep->rounds > 1 && !improved)) break;
+        rep->undecided_left = undecided;
+        if (undecided == 0) break;
+        if (!refinable) { rep->undecided_reason = "the tableau has no entry texts to re-evaluate"; break; }
+        if (2 * prec > opt.max_prec) { rep->undecided_reason = "the precision cap was reached"; break; }
+        if (rep->rounds > 1 && !improved) {
+            rep->undecided_reason = "more precision does not help: decimal entries carry too few digits";
+            break;
+        }
         prec *= 2;
     }
     mag_clear(last_worst);
@@ -1328,8 +1341,11 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                 (long)rep->against_differences, rep->against_differences == 1 ? "y" : "ies",
                 rep->against_differences == 1 ? "s" : "");
 
+    if (rep->undecided_left)
+        fprintf(out, "undecided     %ld conditions at %ld bits: %s\n", (long)rep->undecided_left, (long)rep->prec,
+                rep->undecided_reason ? rep->undecided_reason : "");
     if (rep->nproblems) {
-        fprintf(out, "problems (%ld)\n", (long)rep->nproblems);
+        fputs("problems\n", out);
         slong shown = 0;
         for (slong k = 0; k < rep->nproblems; k++) {
             if (shown == 40) {
@@ -1471,6 +1487,7 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     for (slong k = 0; k < rep->nproblems; k++) {
         const vigen_check_problem *p = rep->problems + k;
         fprintf(out, "%s\n  {\"kind\": \"%s\"", k ? "," : "", kinds[p->kind]);
+        if (p->claim) fprintf(out, ", \"claim\": \"%s\"", p->claim);
         if (p->matrix) fprintf(out, ", \"matrix\": \"%s\"", p->matrix);
         if (p->row) fprintf(out, ", \"row\": %ld", (long)p->row);
         if (p->col) fprintf(out, ", \"col\": %ld", (long)p->col);
@@ -1487,6 +1504,8 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     fputs(rep->nproblems ? "\n ],\n" : "],\n", out);
     fputs(" \"notation\": ", out);
     json_string(out, vigen_tree_notation_help());
+    fprintf(out, ",\n \"undecided_conditions\": %ld, \"undecided_reason\": ", (long)rep->undecided_left);
+    if (rep->undecided_reason) json_string(out, rep->undecided_reason); else fputs("null", out);
     fprintf(out, ",\n \"exit\": %d}\n", rep->exit_code);
 }
 
@@ -1537,7 +1556,7 @@ int vigen_check_main(int argc, char **argv, vigen_check_loader_fn load)
     vigen_check_options opt;
     vigen_check_options_init(&opt);
     opt.load = load;
-    for (int i = 1; i < argc; i++) {
+    for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) { fputs(vigen_check_usage, stdout); return 0; }
         if (strcmp(a, "--json") == 0) opt.json = 1;

@@ -91,6 +91,7 @@ enum { VIGEN_PROBLEM_ROWSUM, VIGEN_PROBLEM_SYMPLECTIC, VIGEN_PROBLEM_CLAIM, VIGE
 
 typedef struct {
     int kind;                    /* VIGEN_PROBLEM_* */
+    const char *claim;           /* claims: "order" or "symplectic"; NULL otherwise */
     const char *matrix;          /* "A", "At", "b", "bt", "c", "ct"; NULL when not applicable */
     slong row, col;              /* 1-based; 0 when not applicable */
     int undecided;               /* the condition is undecided, not failing */
@@ -105,6 +106,8 @@ typedef struct {
     char *path, *name;
     slong s, prec;               /* precision of the final round, bits */
     slong rounds;                /* evaluations done (1 + refinements) */
+    slong undecided_left;        /* undecided balls in the final round */
+    const char *undecided_reason;/* why refining stopped with undecided balls (static string) */
     int max_order;
     int has_At, has_bt, has_ct;
     int tol_bits;
@@ -160,8 +163,10 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err);
 
 /* The command line `vigen check FILE [--against FILE2] [--max-order P] [--json]
- * [--prec BITS]`: argv[0] is "check", argv[1..] the arguments.  Messages go to
- * stderr; returns the exit status.  load: the spec hook (vigen_source_load). */
+ * [--prec BITS]`: argv[0 .. argc-1] are the arguments after "check" (as
+ * cmd_generate gets them: main calls vigen_check_main(argc - 2, argv + 2,
+ * vigen_source_load)).  The report goes to stdout, messages to stderr;
+ * returns the exit status.  load: the spec hook (vigen_source_load). */
 int vigen_check_main(int argc, char **argv, vigen_check_loader_fn load);
 
 extern const char *vigen_check_usage;

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "check.h"
 #include "decimal.h"
 #include "galerkin.h"
 #include "show.h"
@@ -21,6 +22,8 @@ static const char *usage_main =
     "  generate SPEC [--digits N] [-o FILE]   tableau of the Galerkin variational integrator of a spec\n"
     "  show FILE [--format text|latex|json|lua] [--digits N]\n"
     "                                         print a tableau (or the tableau of a spec)\n"
+    "  check FILE [--against FILE2] [--max-order P] [--json]\n"
+    "                                         certify order, symplecticity and consistency\n"
     "\n"
     "Run 'vigen COMMAND --help' for the options of a command.\n";
 
@@ -169,6 +172,7 @@ int main(int argc, char **argv)
     int rc;
     if (strcmp(argv[1], "generate") == 0) rc = cmd_generate(argc - 2, argv + 2);
     else if (strcmp(argv[1], "show") == 0) rc = cmd_show(argc - 2, argv + 2);
+    else if (strcmp(argv[1], "check") == 0) rc = vigen_check_main(argc - 2, argv + 2, vigen_source_load);
     else {
         fprintf(stderr, "vigen: unknown command '%s'\n\n%s", argv[1], usage_main);
         rc = 2;
