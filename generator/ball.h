@@ -22,13 +22,16 @@
 #include <lua.h>
 #include <acb.h>
 
-/* Registers the ball metatable and library in L (called by the sandbox). */
+/* Registers the ball metatable and library in L (called by the sandbox).  It
+ * keeps a pointer in lua_getextraspace(L). */
 void vigen_ball_open(lua_State *L);
 
-/* Sets the precision and analytic flag used by ball operations in L. */
+/* Sets the precision and analytic flag used by ball operations in L (after
+ * vigen_ball_open; touches no Lua API, so it may be called unprotected). */
 void vigen_ball_set_context(lua_State *L, slong prec, int analytic);
 
-/* Pushes a copy of z as a ball userdata. */
+/* Pushes a copy of z as a ball userdata.  Allocates Lua memory, so it may raise
+ * "not enough memory": call it inside a protected call. */
 void vigen_ball_push(lua_State *L, const acb_t z);
 
 /* If the value at idx is a ball, or a Lua integer, writes it to res and

@@ -156,7 +156,9 @@ int vigen_galerkin_compute(vigen_tableau *t, vigen_spec *spec, slong prec, vigen
         if (rc == VIGEN_OK) rc = vigen_basis_integral(arb_mat_entry(rhs, i, 0), basis, i, one, prec, err);
         for (slong j = 0; j < s && rc == VIGEN_OK; j++)
             rc = vigen_basis_integral(arb_mat_entry(rhs, i, j + 1), basis, i, t->c + j, prec, err);
-        if (rc != VIGEN_OK) vigen_error_prefix(err, "%s: basis[%ld]: ", spec->path, (long)(i + 1));
+        /* messages from Lua basis functions already name the file and entry */
+        if (rc != VIGEN_OK && (err->message == NULL || strncmp(err->message, spec->path, strlen(spec->path)) != 0))
+            vigen_error_prefix(err, "%s: basis[%ld]: ", spec->path, (long)(i + 1));
     }
 
     /* X = M^-1 [B | Apsi^T]: column 0 is b, columns 1..s are the rows of A */

@@ -6,6 +6,7 @@
 #include "check.h"
 #include "decimal.h"
 #include "galerkin.h"
+#include "sandbox.h"
 #include "show.h"
 #include "source.h"
 #include "spec.h"
@@ -24,6 +25,10 @@ static const char *usage_main =
     "                                         print a tableau (or the tableau of a spec)\n"
     "  check FILE [--against FILE2] [--max-order P] [--json]\n"
     "                                         certify order, symplecticity and consistency\n"
+    "\n"
+    "Options for every command (spec and tableau files run in a Lua sandbox):\n"
+    "  --max-memory MIB        memory cap of the sandbox (default 256)\n"
+    "  --max-instructions N    Lua instructions per call (default 50000000)\n"
     "\n"
     "Run 'vigen COMMAND --help' for the options of a command.\n";
 
@@ -162,8 +167,34 @@ static int cmd_show(int argc, char **argv)
     return 0;
 }
 
+/* Removes the sandbox options from argv (they apply to every command);
+ * returns 0 after printing a message when one is malformed. */
+static int take_sandbox_options(int *argc, char **argv)
+{
+    vigen_sandbox_limits limits = {0, 0};
+    int out = 1;
+    for (int i = 1; i < *argc; i++) {
+        int mem = strcmp(argv[i], "--max-memory") == 0, ins = strcmp(argv[i], "--max-instructions") == 0;
+        if (!mem && !ins) { argv[out++] = argv[i]; continue; }
+        char *end = NULL;
+        long long v = i + 1 < *argc ? strtoll(argv[i + 1], &end, 10) : 0;
+        if (i + 1 >= *argc || end == argv[i + 1] || *end != '\0' || v < 1 || (mem && v > 1048576)) {
+            fprintf(stderr, "vigen: %s takes a positive whole number%s\n", argv[i], mem ? " of MiB (at most 1048576)" : "");
+            return 0;
+        }
+        if (mem) limits.memory_limit = (size_t)v << 20;
+        else limits.instruction_limit = (long)v;
+        i++;
+    }
+    *argc = out;
+    argv[out] = NULL;
+    vigen_sandbox_limits_set_default(&limits);
+    return 1;
+}
+
 int main(int argc, char **argv)
 {
+    if (!take_sandbox_options(&argc, argv)) return 2;
     if (argc < 2 || is_help(argv[1])) {
         fputs(usage_main, argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;

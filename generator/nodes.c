@@ -231,14 +231,14 @@ static int nodes_lfun_sign(const nodes_lfun *F, const arf_t x, slong prec)
 
 /* One Newton step x <- x - f(x)/f'(x) on midpoints at precision prec, kept
  * inside (lo, hi) (bisection otherwise); tightens (lo, hi) by the sign of f(x)
- * when certified.  Returns |step| as a bound exponent, or WORD_MIN once the
- * sign of f(x) is undetermined (x is as good as this precision allows). */
-static slong nodes_newton_step(arf_t x, arf_t lo, arf_t hi, int sign_lo, const nodes_lfun *F,
-                               slong prec, slong extra)
+ * when certified.  Returns 1 when converged at this precision: the sign of
+ * f(x) is undetermined or the step is below 2^(12 - prec). */
+static int nodes_newton_step(arf_t x, arf_t lo, arf_t hi, int sign_lo, const nodes_lfun *F,
+                             slong prec, slong extra)
 {
     arb_t xb, f, df;
     arf_t xn;
-    slong mag = WORD_MIN;
+    int converged = 1;
     arb_init(xb); arb_init(f); arb_init(df);
     arf_init(xn);
     arb_set_arf(xb, x);
@@ -265,13 +265,12 @@ static slong nodes_newton_step(arf_t x, arf_t lo, arf_t hi, int sign_lo, const n
     }
     if (sgn != 0) {
         arf_sub(arb_midref(f), xn, x, MAG_BITS, ARF_RND_UP);
-        mag = arf_is_zero(arb_midref(f)) ? WORD_MIN : ARF_EXP(arb_midref(f));
-        if (COEFF_IS_MPZ(mag)) mag = WORD_MIN;
+        converged = arf_cmpabs_2exp_si(arb_midref(f), 12 - prec) < 0;
     }
     arf_set(x, xn);
     arb_clear(xb); arb_clear(f); arb_clear(df);
     arf_clear(xn);
-    return mag;
+    return converged;
 }
 
 /* The unique root of f in (lo, hi), f(lo) having sign sign_lo and f(hi) the
@@ -290,10 +289,8 @@ static int nodes_lfun_root(arb_t root, const nodes_lfun *F, const arf_t lo_in, c
     arf_mul_2exp_si(x, x, -1);
 
     /* Safeguarded Newton at low precision until the step is tiny. */
-    for (int it = 0; it < 4 * FLINT_BITS; it++) {
-        slong mag = nodes_newton_step(x, lo, hi, sign_lo, F, p0, extra);
-        if (mag < 12 - p0) break;
-    }
+    for (int it = 0; it < 4 * FLINT_BITS; it++)
+        if (nodes_newton_step(x, lo, hi, sign_lo, F, p0, extra)) break;
     /* Doubling precision: one quadratically convergent step per level. */
     slong target = wp + 16, levels[FLINT_BITS];
     slong nlev = 0;
@@ -378,7 +375,7 @@ static int nodes_gauss_lobatto(arb_ptr nodes, slong s, slong wp, vigen_error *er
         }
     _arb_vec_clear(x, s - 2);
     if (status != VIGEN_OK)
-        vigen_error_set(err, status, "gauss_lobatto(%ld): nodes could not be isolated at %ld bits",
+        vigen_error_set(err, status, "gauss_lobatto(%ld): nodes could not be isolated at %ld bits; retry with a higher precision",
                         (long)s, (long)wp);
     return status;
 }
@@ -397,7 +394,7 @@ static int nodes_radau(arb_ptr nodes, slong s, slong wp, int sigma, const char *
         for (slong i = 0; i < s - 1; i++) nodes_map(nodes + off + i, x + i, wp);
     _arb_vec_clear(x, s - 1);
     if (status != VIGEN_OK)
-        vigen_error_set(err, status, "%s(%ld): nodes could not be isolated at %ld bits",
+        vigen_error_set(err, status, "%s(%ld): nodes could not be isolated at %ld bits; retry with a higher precision",
                         family, (long)s, (long)wp);
     return status;
 }

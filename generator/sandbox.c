@@ -4,6 +4,9 @@
  *   - libraries: base, math, string, table only; dofile, loadfile, load,
  *     require, collectgarbage and string.dump removed; print writes to stderr
  *     (never to stdout, which may carry emitted code);
+ *   - what would run outside the instruction cap is refused: setmetatable
+ *     with a __gc field (Lua runs finalisers with hooks off) and the pattern
+ *     functions string.find/match/gmatch/gsub (backtracking in C);
  *   - the allocator counts bytes and refuses to pass memory_limit;
  *   - a count hook charges executed VM instructions against a budget that is
  *     reset at every top-level call; once the budget is spent the hook fires on
@@ -56,10 +59,16 @@ typedef struct {
     lua_Integer s;
 } family_desc;
 
-void vigen_sandbox_limits_default(vigen_sandbox_limits *limits)
+/* Process-wide defaults; the command line changes them with --max-memory and
+ * --max-instructions (vigen_sandbox_limits_set_default). */
+static vigen_sandbox_limits default_limits = {256 * MIB, 50000000L};
+
+void vigen_sandbox_limits_default(vigen_sandbox_limits *limits) { *limits = default_limits; }
+
+void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits)
 {
-    limits->memory_limit = 256 * MIB;
-    limits->instruction_limit = 50000000L;
+    if (limits->memory_limit > 0) default_limits.memory_limit = limits->memory_limit;
+    if (limits->instruction_limit > 0) default_limits.instruction_limit = limits->instruction_limit;
 }
 
 lua_State *vigen_sandbox_state(vigen_sandbox *sb) { return sb->L; }
@@ -203,14 +212,14 @@ static int translate_error(vigen_sandbox *sb, int status, vigen_error *err)
                                        : vigen_strdup("");
         vigen_error_set(err, VIGEN_E_LIMIT,
                         "%s: the file ran for more than %ld Lua instructions (an endless loop?)%s; "
-                        "if it really needs more, raise the cap with --max-instructions",
+                        "if it really needs more, raise the cap with the option --max-instructions N",
                         sb->display, sb->instruction_limit, where);
         free(where);
     } else if (sb->memory_hit && (status == LUA_ERRMEM || (msg && strcmp(msg, "not enough memory") == 0))) {
         char *cap = memory_text(sb->memory_limit);
         vigen_error_set(err, VIGEN_E_LIMIT,
                         "%s: the file used more than %s of memory (a runaway table or string?); "
-                        "if it really needs more, raise the cap with --max-memory",
+                        "if it really needs more, raise the cap with the option --max-memory MIB",
                         sb->display, cap);
         free(cap);
     } else if (status == LUA_ERRMEM) {
@@ -328,7 +337,7 @@ int vigen_sandbox_run_file(vigen_sandbox *sb, const char *path, vigen_error *err
             char *lim = memory_text(sb->memory_limit);
             code = vigen_error_set(err, VIGEN_E_LIMIT,
                                    "%s: the file is larger than the sandbox's memory cap (%s); "
-                                   "if it really needs more, raise the cap with --max-memory", path, lim);
+                                   "if it really needs more, raise the cap with the option --max-memory MIB", path, lim);
             free(lim);
         }
     }
@@ -431,6 +440,31 @@ static int strict_index(lua_State *L)
     return luaL_error(L, "%s", lua_tostring(L, -1));
 }
 
+/* setmetatable without __gc: Lua runs finalisers with hooks off, so a
+ * finaliser would escape the instruction cap (an endless __gc hangs lua_close). */
+static int safe_setmetatable(lua_State *L)
+{
+    if (lua_type(L, 2) == LUA_TTABLE) {
+        lua_pushliteral(L, "__gc");
+        if (lua_rawget(L, 2) != LUA_TNIL)
+            return luaL_error(L, "setmetatable: __gc finalisers are not allowed in spec and tableau files "
+                                 "(they run outside the instruction cap)");
+        lua_pop(L, 1);
+    }
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+    return lua_gettop(L);
+}
+
+/* Lua patterns run in C, where the instruction cap cannot see them, and some
+ * ('.-.-.-b' on a long string) take exponential time: they are not offered. */
+static int no_patterns(lua_State *L)
+{
+    return luaL_error(L, "string.%s is not available in spec and tableau files: Lua patterns run outside the "
+                         "instruction cap", lua_tostring(L, lua_upvalueindex(1)));
+}
+
 /* print writes to stderr: stdout may be carrying emitted code. */
 static int stderr_print(lua_State *L)
 {
@@ -472,7 +506,16 @@ static int setup_state(lua_State *L)
     lua_getglobal(L, LUA_STRLIBNAME);
     lua_pushnil(L);
     lua_setfield(L, -2, "dump");
+    static const char *const pattern_functions[] = { "find", "match", "gmatch", "gsub", NULL };
+    for (int i = 0; pattern_functions[i]; i++) {
+        lua_pushstring(L, pattern_functions[i]);
+        lua_pushcclosure(L, no_patterns, 1);
+        lua_setfield(L, -2, pattern_functions[i]);
+    }
     lua_pop(L, 1);
+    lua_getglobal(L, "setmetatable");
+    lua_pushcclosure(L, safe_setmetatable, 1);
+    lua_setglobal(L, "setmetatable");
     lua_pushcfunction(L, stderr_print);
     lua_setglobal(L, "print");
 

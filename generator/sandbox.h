@@ -2,10 +2,14 @@
  *
  * Spec and tableau files are code written by someone else.  The sandbox opens
  * only the base, math, string and table libraries, removes dofile, loadfile,
- * load, require, collectgarbage and the io/os/package/debug libraries, loads
- * source text only (never precompiled chunks), caps memory with a custom
- * allocator and caps executed instructions with a count hook.  Exceeding a cap
- * raises a Lua error whose message says which cap and how to raise it.
+ * load, require, collectgarbage, string.dump and the io/os/package/debug
+ * libraries, loads source text only (never precompiled chunks), caps memory
+ * with a custom allocator and caps executed instructions with a count hook.
+ * Exceeding a cap raises a Lua error whose message says which cap and how to
+ * raise it.  What would run outside the instruction cap is refused: __gc
+ * finalisers (setmetatable with a __gc field) and the pattern functions
+ * string.find/match/gmatch/gsub.  print writes to stderr.  Reading an unknown
+ * global is an error listing the vocabulary below.
  *
  * The sandbox also provides the vocabulary of spec files (node and basis family
  * constructors such as gauss_legendre(3) and trig(5)) and the ball library
@@ -21,11 +25,13 @@
 typedef struct vigen_sandbox vigen_sandbox;
 
 typedef struct {
-    size_t memory_limit;      /* bytes; default 256 MiB */
-    long instruction_limit;   /* VM instructions per top-level call; default 50 million */
+    size_t memory_limit;      /* bytes; default 256 MiB (0: the default) */
+    long instruction_limit;   /* VM instructions per top-level call; default 50 million (<= 0: the default) */
 } vigen_sandbox_limits;
 
 void vigen_sandbox_limits_default(vigen_sandbox_limits *limits);
+/* Changes the process-wide defaults (fields <= 0 are left as they are). */
+void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits);
 
 int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits /* NULL: defaults */,
                       vigen_error *err);

@@ -29,6 +29,8 @@ typedef struct {
     vigen_error err;        /* validation failure, if any */
     char **warnings;        /* unknown fields, sorted before they are reported */
     size_t n_warnings;
+    vigen_strbuf text;      /* nodes_text / basis_text being built */
+    char *entry, *src;      /* the list entry being checked: "nodes[2]", its text */
 } load_ctx;
 
 /* ------------------------------------------------------------------ helpers */
@@ -257,54 +259,66 @@ static int check_list(lua_State *L, int idx, const char *field, const char *exam
 static const char nodes_example[] = "{\"0\", \"1/2\", \"1\"}";
 static const char basis_example[] = "{\"1\", \"cos(pi*t)\"}";
 
+/* The list entry being checked: cx->entry = "nodes[2]", and cx->src = its
+ * expression text when it is a string or an integer (NULL otherwise, after an
+ * error has been recorded for anything that is not a Lua function). */
+static int read_entry(lua_State *L, int idx, const char *field, slong i, load_ctx *cx)
+{
+    const char *P = cx->spec->path;
+    free(cx->entry);
+    free(cx->src);
+    cx->src = NULL;
+    cx->entry = vigen_strdup_printf("%s[%ld]", field, (long)i + 1);
+    int t = lua_type(L, idx);
+    const char *family;
+    long fs;
+    if (t == LUA_TNUMBER && lua_isinteger(L, idx)) {
+        cx->src = vigen_strdup_printf("%lld", (long long)lua_tointeger(L, idx));
+    } else if (t == LUA_TNUMBER) {
+        return refuse_float(cx, cx->entry, lua_tonumber(L, idx));
+    } else if (t == LUA_TSTRING) {
+        const char *str = plain_string(L, idx);
+        if (str == NULL) return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s contains a zero byte", P, cx->entry);
+        cx->src = vigen_strdup(str);
+    } else if (vigen_sandbox_get_family(L, idx, NULL, &family, &fs)) {
+        return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is %s(%ld); a family is not a list entry: write %s = %s(%ld)",
+                               P, cx->entry, family, fs, field, family, fs);
+    } else if (t != LUA_TFUNCTION || strcmp(field, "basis") != 0) {
+        if (strcmp(field, "basis") == 0)
+            return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is a %s; basis functions are expression strings in t "
+                                   "such as \"cos(pi*t)\" or Lua functions of t", P, cx->entry, luaL_typename(L, idx));
+        return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is a %s; nodes are exact numbers written as strings, "
+                               "such as \"1/2\" or \"1/2 - sqrt(3)/6\"", P, cx->entry, luaL_typename(L, idx));
+    }
+    return VIGEN_OK;
+}
+
+/* The temporaries of the list checks live in cx (freed by the loader) because
+ * luaL_ref may raise "not enough memory" while they are held. */
 static int check_nodes_list(lua_State *L, int idx, load_ctx *cx)
 {
     vigen_spec *sp = cx->spec;
-    const char *P = sp->path;
     slong n;
     int code = check_list(L, idx, "nodes", nodes_example, cx, &n);
     if (code) return code;
     sp->nodes_kind = VIGEN_SPEC_NODES_LIST;
     sp->node_exprs = xcalloc((size_t)n, sizeof *sp->node_exprs);
     sp->s = n;
-    vigen_strbuf text;
-    vigen_strbuf_init(&text);
-    vigen_strbuf_append(&text, "{");
+    vigen_strbuf_clear(&cx->text);
+    vigen_strbuf_append(&cx->text, "{");
     for (slong i = 0; i < n && code == VIGEN_OK; i++) {
-        int t = lua_rawgeti(L, idx, (lua_Integer)i + 1);
-        char *entry = vigen_strdup_printf("nodes[%ld]", (long)i + 1);
-        char *src = NULL;
-        const char *kind;
-        long fs;
-        if (t == LUA_TNUMBER && lua_isinteger(L, -1)) {
-            src = vigen_strdup_printf("%lld", (long long)lua_tointeger(L, -1));
-        } else if (t == LUA_TNUMBER) {
-            code = refuse_float(cx, entry, lua_tonumber(L, -1));
-        } else if (t == LUA_TSTRING) {
-            const char *s = plain_string(L, -1);
-            if (s) src = vigen_strdup(s);
-            else code = vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s contains a zero byte", P, entry);
-        } else if (vigen_sandbox_get_family(L, -1, NULL, &kind, &fs)) {
-            code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
-                                   "%s: %s is %s(%ld); a family is not a list entry: write nodes = %s(%ld)",
-                                   P, entry, kind, fs, kind, fs);
-        } else {
-            code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
-                                   "%s: %s is a %s; nodes are exact numbers written as strings, such as "
-                                   "\"1/2\" or \"1/2 - sqrt(3)/6\"", P, entry, luaL_typename(L, -1));
-        }
-        if (src) {
-            code = vigen_expr_parse(&sp->node_exprs[i], src, 0, &cx->err);
-            if (code) vigen_error_prefix(&cx->err, "%s: %s: ", P, entry);
-            if (i) vigen_strbuf_append(&text, ", ");
-            append_lua_string(&text, src);
-        }
-        free(src);
-        free(entry);
+        lua_rawgeti(L, idx, (lua_Integer)i + 1);
+        code = read_entry(L, -1, "nodes", i, cx);
         lua_pop(L, 1);
+        if (code) break;
+        code = vigen_expr_parse(&sp->node_exprs[i], cx->src, 0, &cx->err);
+        if (code) vigen_error_prefix(&cx->err, "%s: %s: ", sp->path, cx->entry);
+        if (i) vigen_strbuf_append(&cx->text, ", ");
+        append_lua_string(&cx->text, cx->src);
     }
-    vigen_strbuf_append(&text, "}");
-    sp->nodes_text = text.data;
+    vigen_strbuf_append(&cx->text, "}");
+    sp->nodes_text = cx->text.data;
+    vigen_strbuf_init(&cx->text);
     return code;
 }
 
@@ -317,13 +331,12 @@ static int check_nodes(lua_State *L, int table, load_ctx *cx)
     int code = VIGEN_OK, kind;
     const char *family;
     long s;
-    char *names = join_names(vigen_nodes_family_names);
-    if (t == LUA_TNIL) {
-        code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
-                               "%s: nodes is missing: give a list of exact numbers such as %s or a node family "
-                               "such as gauss_legendre(3) (node families: %s)", P, nodes_example, names);
+    char *names = NULL;
+    if (t == LUA_TTABLE) {
+        code = check_nodes_list(L, idx, cx);
     } else if (vigen_sandbox_get_family(L, idx, &kind, &family, &s)) {
         if (kind != VIGEN_FAMILY_NODES) {
+            names = join_names(vigen_nodes_family_names);
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: nodes: %s(%ld) is a basis family, not a node family (node families: %s)",
                                    P, family, s, names);
@@ -333,8 +346,11 @@ static int check_nodes(lua_State *L, int table, load_ctx *cx)
             sp->s = s;
             sp->nodes_text = vigen_strdup_printf("%s(%ld)", family, s);
         }
-    } else if (t == LUA_TTABLE) {
-        code = check_nodes_list(L, idx, cx);
+    } else if (t == LUA_TNIL) {
+        names = join_names(vigen_nodes_family_names);
+        code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
+                               "%s: nodes is missing: give a list of exact numbers such as %s or a node family "
+                               "such as gauss_legendre(3) (node families: %s)", P, nodes_example, names);
     } else if (t == LUA_TSTRING) {
         const char *str = lua_tostring(L, idx);
         vigen_expr *e = NULL;
@@ -348,6 +364,7 @@ static int check_nodes(lua_State *L, int table, load_ctx *cx)
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: nodes is a single string; write a list: nodes = {\"%s\"}", P, str);
         } else {
+            names = join_names(vigen_nodes_family_names);
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: nodes: unknown node family '%s' (known: %s); write a family call such as "
                                    "gauss_legendre(3) or a list of exact numbers such as %s", P, str, names,
@@ -376,7 +393,6 @@ static int check_nodes(lua_State *L, int table, load_ctx *cx)
 static int check_basis_list(lua_State *L, int idx, load_ctx *cx)
 {
     vigen_spec *sp = cx->spec;
-    const char *P = sp->path;
     slong n;
     int code = check_list(L, idx, "basis", basis_example, cx, &n);
     if (code) return code;
@@ -384,75 +400,65 @@ static int check_basis_list(lua_State *L, int idx, load_ctx *cx)
     sp->items = xcalloc((size_t)n, sizeof *sp->items);
     for (slong i = 0; i < n; i++) sp->items[i].lua_ref = LUA_NOREF;
     sp->basis_count = n;
-    vigen_strbuf text;
-    vigen_strbuf_init(&text);
-    vigen_strbuf_append(&text, "{");
+    vigen_strbuf_clear(&cx->text);
+    vigen_strbuf_append(&cx->text, "{");
     for (slong i = 0; i < n && code == VIGEN_OK; i++) {
         vigen_spec_basis_item *item = &sp->items[i];
         int t = lua_rawgeti(L, idx, (lua_Integer)i + 1);
-        char *entry = vigen_strdup_printf("basis[%ld]", (long)i + 1);
-        char *src = NULL;
-        const char *kind;
-        long fs;
-        if (i) vigen_strbuf_append(&text, ", ");
+        code = read_entry(L, -1, "basis", i, cx);
+        if (code) {
+            lua_pop(L, 1);
+            break;
+        }
+        if (i) vigen_strbuf_append(&cx->text, ", ");
         if (t == LUA_TFUNCTION) {
             item->kind = VIGEN_SPEC_ITEM_LUA;
-            item->label = vigen_strdup_printf("<Lua function, %s>", entry);
-            lua_pushvalue(L, -1);
-            item->lua_ref = luaL_ref(L, LUA_REGISTRYINDEX);
-            append_lua_string(&text, "<Lua function>");
-        } else if (t == LUA_TNUMBER && lua_isinteger(L, -1)) {
-            src = vigen_strdup_printf("%lld", (long long)lua_tointeger(L, -1));
-        } else if (t == LUA_TNUMBER) {
-            code = refuse_float(cx, entry, lua_tonumber(L, -1));
-        } else if (t == LUA_TSTRING) {
-            const char *s = plain_string(L, -1);
-            if (s) src = vigen_strdup(s);
-            else code = vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s contains a zero byte", P, entry);
-        } else if (vigen_sandbox_get_family(L, -1, NULL, &kind, &fs)) {
-            code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
-                                   "%s: %s is %s(%ld); a family is not a list entry: write basis = %s(%ld)",
-                                   P, entry, kind, fs, kind, fs);
+            item->label = vigen_strdup_printf("<Lua function, %s>", cx->entry);
+            item->lua_ref = luaL_ref(L, LUA_REGISTRYINDEX);      /* pops the function */
+            append_lua_string(&cx->text, "<Lua function>");
         } else {
-            code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
-                                   "%s: %s is a %s; basis functions are expression strings in t such as "
-                                   "\"cos(pi*t)\" or Lua functions of t", P, entry, luaL_typename(L, -1));
-        }
-        if (src) {
+            lua_pop(L, 1);
             item->kind = VIGEN_SPEC_ITEM_EXPR;
-            item->label = vigen_strdup(src);
-            code = vigen_expr_parse(&item->expr, src, 1, &cx->err);
-            if (code) vigen_error_prefix(&cx->err, "%s: %s: ", P, entry);
-            append_lua_string(&text, src);
+            item->label = vigen_strdup(cx->src);
+            code = vigen_expr_parse(&item->expr, cx->src, 1, &cx->err);
+            if (code) vigen_error_prefix(&cx->err, "%s: %s: ", sp->path, cx->entry);
+            append_lua_string(&cx->text, cx->src);
         }
-        free(src);
-        free(entry);
-        lua_pop(L, 1);
     }
-    vigen_strbuf_append(&text, "}");
-    sp->basis_text = text.data;
+    vigen_strbuf_append(&cx->text, "}");
+    sp->basis_text = cx->text.data;
+    vigen_strbuf_init(&cx->text);
     return code;
+}
+
+/* "monomials(s), trig(s), legendre(s), chebyshev_t(s)" (heap) */
+static char *basis_calls(void)
+{
+    vigen_strbuf b;
+    vigen_strbuf_init(&b);
+    for (int i = 0; vigen_basis_family_names[i]; i++)
+        vigen_strbuf_printf(&b, "%s%s(s)", i ? ", " : "", vigen_basis_family_names[i]);
+    return b.data;
 }
 
 static int check_basis(lua_State *L, int table, load_ctx *cx)
 {
     vigen_spec *sp = cx->spec;
     const char *P = sp->path;
-    static const char *const basis_names = "monomials(s), trig(s), legendre(s), chebyshev_t(s)";
     int t = raw_field(L, table, "basis");
     int idx = lua_gettop(L);
     int code = VIGEN_OK, kind;
     const char *family;
     long s;
-    if (t == LUA_TNIL) {
-        code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
-                               "%s: basis is missing: write basis = \"lagrange\", a family (%s) or a list of "
-                               "functions of t such as %s", P, basis_names, basis_example);
+    char *calls = NULL;
+    if (t == LUA_TTABLE) {
+        code = check_basis_list(L, idx, cx);
     } else if (vigen_sandbox_get_family(L, idx, &kind, &family, &s)) {
         if (kind != VIGEN_FAMILY_BASIS) {
+            calls = basis_calls();
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: basis: %s(%ld) is a node family, not a basis family (basis families: %s; "
-                                   "or \"lagrange\")", P, family, s, basis_names);
+                                   "or \"lagrange\")", P, family, s, calls);
         } else {
             sp->basis_kind = VIGEN_SPEC_BASIS_FAMILY;
             sp->basis_family = vigen_strdup(family);
@@ -461,36 +467,43 @@ static int check_basis(lua_State *L, int table, load_ctx *cx)
         }
     } else if (t == LUA_TSTRING) {
         const char *str = lua_tostring(L, idx);
+        int is_family = 0;
+        for (int i = 0; vigen_basis_family_names[i]; i++) is_family |= strcmp(str, vigen_basis_family_names[i]) == 0;
+        calls = basis_calls();
         if (strcmp(str, "lagrange") == 0) {
             sp->basis_kind = VIGEN_SPEC_BASIS_LAGRANGE;
             sp->basis_count = sp->s;
             sp->basis_text = vigen_strdup("\"lagrange\"");
-        } else if (strcmp(str, "monomials") == 0 || strcmp(str, "trig") == 0 || strcmp(str, "legendre") == 0 ||
-                   strcmp(str, "chebyshev_t") == 0) {
+        } else if (is_family) {
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: basis = \"%s\" needs the number of functions: write basis = %s(%ld), "
                                    "without quotes", P, str, str, (long)sp->s);
         } else if (vigen_nodes_is_family(str)) {
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: basis: '%s' is a node family, not a basis (write \"lagrange\", a family "
-                                   "%s or a list of functions of t)", P, str, basis_names);
+                                   "such as %s, or a list of functions of t)", P, str, calls);
         } else {
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                    "%s: basis: unknown basis '%s'; write \"lagrange\", a family (%s) or a list of "
-                                   "functions of t such as %s", P, str, basis_names, basis_example);
+                                   "functions of t such as %s", P, str, calls, basis_example);
         }
-    } else if (t == LUA_TTABLE) {
-        code = check_basis_list(L, idx, cx);
+    } else if (t == LUA_TNIL) {
+        calls = basis_calls();
+        code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
+                               "%s: basis is missing: write basis = \"lagrange\", a family (%s) or a list of "
+                               "functions of t such as %s", P, calls, basis_example);
     } else if (t == LUA_TFUNCTION) {
         code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                "%s: basis is a function; a basis family is called with the number of functions "
                                "(basis = trig(5)) and Lua functions go in a list "
                                "(basis = {\"1\", function(t) return cos(pi*t) end})", P);
     } else {
+        calls = basis_calls();
         code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                "%s: basis must be \"lagrange\", a basis family (%s) or a list, not a %s", P,
-                               basis_names, luaL_typename(L, idx));
+                               calls, luaL_typename(L, idx));
     }
+    free(calls);
     lua_settop(L, idx - 1);
     return code;
 }
@@ -533,7 +546,11 @@ int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limi
     if (code == VIGEN_OK) code = vigen_sandbox_run_file(sp->sandbox, path, err);
     if (code == VIGEN_OK) {
         lua_State *L = vigen_sandbox_state(sp->sandbox);
-        load_ctx cx = { sp, { VIGEN_OK, NULL }, NULL, 0 };
+        load_ctx cx;
+        memset(&cx, 0, sizeof cx);
+        cx.spec = sp;
+        vigen_error_init(&cx.err);
+        vigen_strbuf_init(&cx.text);
         if (!lua_checkstack(L, 3)) {
             code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
         } else {
@@ -547,6 +564,9 @@ int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limi
         vigen_error_clear(&cx.err);
         for (size_t i = 0; i < cx.n_warnings; i++) free(cx.warnings[i]);
         free(cx.warnings);
+        vigen_strbuf_clear(&cx.text);
+        free(cx.entry);
+        free(cx.src);
     }
     if (code != VIGEN_OK) {
         vigen_spec_free(sp);

@@ -45,23 +45,25 @@ typedef struct {
     vigen_spec_basis_item *items;/* BASIS_LIST: basis_count items */
 
     /* Lua-readable descriptions for tableau metadata, e.g. `gauss_legendre(3)`,
-     * `{"0", "1/2", "1"}`, `"lagrange"`, `{"1", "cos(pi*t)", <Lua function>}`. */
+     * `{"0", "1/2", "1"}`, `"lagrange"`, `trig(5)`, `{"1", "cos(pi*t)", "<Lua function>"}`. */
     char *nodes_text, *basis_text;
 
     vigen_sandbox *sandbox;      /* kept alive for Lua basis functions */
 } vigen_spec;
 
-/* Loads and validates a spec.  Messages start with "PATH: " and name the field
+/* Loads and validates a spec.  Unknown fields of the spec table are warned
+ * about (vigen_warn), not refused.  Messages start with "PATH: " and name the field
  * ("nodes[2]", "basis[3]"), e.g.
  *   spec.lua: nodes[2] is the Lua float 0.3333333333333333; write the exact string "1/3"
- *   spec.lua:4: attempt to call a nil value (global 'gauss')
+ *   spec.lua:4: unknown name 'gauss' (node families: gauss_legendre, ...)
  *   spec.lua: nodes: unknown node family 'gaus' (known: gauss_legendre, ...)
  * The checks needing arithmetic (repeated nodes, singular M) belong to galerkin.c. */
 int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limits *limits,
                     vigen_error *err);
 void vigen_spec_free(vigen_spec *spec);
 
-/* Evaluates Lua basis item `index` (0-based) at t; contract as
+/* Evaluates Lua basis item `index` (0-based) at t (an expression item of the
+ * list is evaluated with vigen_expr_eval_acb); contract as
  * vigen_expr_eval_acb (indeterminate result when analytic and not certainly
  * holomorphic).  A Lua error or a non-ball return value is reported through err
  * with the path and basis index. */

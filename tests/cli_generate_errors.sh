@@ -65,5 +65,15 @@ expect node_outside        0 "outside \[0, 1\]"
 "$vigen" generate "$work/missing.lua" >/dev/null 2>"$work/stderr"
 [ $? = 2 ] && grep -q "missing.lua" "$work/stderr" || { echo "FAIL: a missing file should be named, exit 2"; failures=$((failures + 1)); }
 
+# the sandbox caps can be set on the command line
+"$vigen" generate "$bad/endless_loop.lua" --max-instructions 12345 -o "$work/capped.lua" 2>"$work/stderr"
+[ $? = 2 ] && grep -q "more than 12345 Lua instructions" "$work/stderr" && [ ! -e "$work/capped.lua" ] ||
+  { echo "FAIL: --max-instructions 12345 should be the cap"; cat "$work/stderr"; failures=$((failures + 1)); }
+"$vigen" --max-memory 1024 generate "$src/tableaux/specs/exponential_lua.lua" -q -o "$work/ok.lua" 2>"$work/stderr" ||
+  { echo "FAIL: --max-memory 1024 should be accepted"; cat "$work/stderr"; failures=$((failures + 1)); }
+"$vigen" generate "$src/tableaux/specs/exponential_lua.lua" --max-memory -3 >/dev/null 2>&1
+[ $? = 2 ] || { echo "FAIL: --max-memory -3 should be a usage error"; failures=$((failures + 1)); }
+rm -f "$work"/*.lua
+
 if [ $failures -gt 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo ok

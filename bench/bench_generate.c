@@ -1,0 +1,59 @@
+/* bench_generate.c — time the generator in-process (no process start-up, no
+ * file output): vigen_galerkin_generate on a spec, repeated, median wall time.
+ *
+ *   bench_generate SPEC DIGITS     prints "<median seconds> <runs>"
+ *
+ * Run by bench/run_generate.sh, which writes docs/benchmarks.md. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+#include "galerkin.h"
+#include "spec.h"
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int main(int argc, char **argv)
+{
+    if (argc != 3) {
+        fprintf(stderr, "usage: bench_generate SPEC DIGITS\n");
+        return 2;
+    }
+    long digits = strtol(argv[2], NULL, 10);
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_spec *spec = NULL;
+    if (vigen_spec_load(&spec, argv[1], NULL, &err) != VIGEN_OK) {
+        fprintf(stderr, "%s\n", err.message);
+        return 1;
+    }
+    double times[101];
+    int runs = 0;
+    double total = 0;
+    while (runs < 101 && (runs < 3 || total < 1.0)) {
+        vigen_tableau t;
+        double t0 = now();
+        if (vigen_galerkin_generate(&t, spec, digits, &err) != VIGEN_OK) {
+            fprintf(stderr, "%s\n", err.message);
+            return 1;
+        }
+        times[runs] = now() - t0;
+        total += times[runs++];
+        vigen_tableau_clear(&t);
+    }
+    qsort(times, (size_t)runs, sizeof(double), cmp);
+    printf("%.6f %d\n", times[runs / 2], runs);
+    vigen_spec_free(spec);
+    flint_cleanup();
+    return 0;
+}
