@@ -257,8 +257,23 @@ static void test_high_precision(void)
     if (ok2) vigen_tableau_clear(&hi);
 }
 
+/* 2000 digits (the issue's upper end): the 3-stage Gauss closed forms hold to
+ * 1990 digits and every entry carries 2000 certified digits. */
+static void test_2000_digits(void)
+{
+    vigen_tableau t;
+    if (!generate(&t, "tableaux/specs/gauss_legendre_s3.lua", 2000)) { CHECK(0); return; }
+    const char *A[] = {"5/36", "2/9 - sqrt(15)/15", "5/36 - sqrt(15)/30",
+                       "5/36 + sqrt(15)/24", "2/9", "5/36 - sqrt(15)/24",
+                       "5/36 + sqrt(15)/30", "2/9 + sqrt(15)/15", "5/36"};
+    expect_matrix(t.A, A, 3, 1990, "gauss3 A at 2000 digits");
+    for (slong k = 0; k < 9; k++) CHECK(vigen_decimal_significant_digits(t.A_text[k]) == 2000);
+    vigen_tableau_clear(&t);
+}
+
 int main(void)
 {
+    test_2000_digits();
     test_gauss();
     test_lobatto();
     test_radau();
