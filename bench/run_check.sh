@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# run_check.sh [BUILD] — benchmark of `vigen check` (issue 3 item 7): median
+# in-process time of the whole check (row sums, symplecticity, every
+# bicoloured-tree condition up to P, separable and single-part orders,
+# simplifying assumptions) for shipped tableaux.  Rewrites the "Checker"
+# section of docs/benchmarks.md.  Not a test.
+set -euo pipefail
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(dirname "$here")
+build=${1:-$root/build}
+cmake --build "$build" --target bench_check >/dev/null
+bench=$build/bench/bench_check
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+row() { # file P
+  local out
+  out=$("$bench" "$root/$1" "$2")
+  set -- "$1" "$2" $out
+  printf '| %s | %s | %s | %s | %.4f |\n' "$1" "$2" "$5" "$6" "$3"
+}
+{
+  echo "<!-- checker:begin (written by bench/run_check.sh) -->"
+  echo "## Checker: \`vigen check\`"
+  echo
+  echo "Median wall time of \`vigen_check_tableau\` in-process (tableau already loaded)."
+  echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'); $(date -u +%Y-%m-%d)."
+  echo
+  echo "| tableau | P | certified order | conditions evaluated | time (s) |"
+  echo "|---|---|---|---|---|"
+  row tableaux/generated/gauss_legendre_s8.lua 8
+  row tableaux/generated/gauss_lobatto_s6.lua 8
+  row tableaux/published/yoshida_6.lua 8
+  row tableaux/generated/gauss_legendre_s5.lua 10
+  echo
+  echo "Target (issue 3): order <= 8 for an 8-stage tableau at 128 bits well under a second."
+  echo "<!-- checker:end -->"
+} >"$work/section.md"
+doc=$root/docs/benchmarks.md
+python3 - "$doc" "$work/section.md" <<'PY'
+import re, sys
+doc, sec = sys.argv[1], open(sys.argv[2]).read()
+text = open(doc).read()
+pat = re.compile(r"<!-- checker:begin.*?<!-- checker:end -->\n?", re.S)
+text = pat.sub(lambda m: sec, text) if pat.search(text) else text.rstrip("\n") + "\n\n" + sec
+open(doc, "w").write(text)
+PY
+cat "$work/section.md"
