@@ -1,6 +1,7 @@
 /* emit.h — `vigen emit`: compiles a tableau into a specialised C stepper.
  *
  *   vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]
+ *              [--allow-inexact] [-q]
  *
  * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
  * templates/stepper.h.in and templates/stepper.c.in (see template.h) and
@@ -10,7 +11,8 @@
  *   from the certified balls to the target type: 53, 64 or 113 bits, printed
  *   as exact C hex-float literals.  When a ball straddles a rounding boundary
  *   the tableau is re-evaluated at higher precision; an entry given as a
- *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION).  An
+ *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION) unless
+ *   --allow-inexact asks for the decimal as written to be rounded.  An
  *   entry that is a ball around zero of radius below 2^-(bits+20) is emitted
  *   as an exact zero with a warning.
  * - A tableau without At is a classical RK method: At = A, bt = b.
@@ -56,6 +58,9 @@ typedef struct {
     const char *name;        /* requested NAME (sanitised by the emitter) */
     int real;                /* VIGEN_REAL_* */
     const char *input_label; /* how the input is named in the header (basename) */
+    int allow_inexact;       /* round the midpoint of a ball that straddles a rounding
+                                boundary (decimal entries with too few digits), with a
+                                warning, instead of refusing */
 } vigen_emit_options;
 
 /* Renders the header and source for a loaded tableau (balls need not be

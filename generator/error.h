@@ -9,6 +9,7 @@
 #define VIGEN_ERROR_H
 
 #include <stdarg.h>
+#include <stddef.h>
 
 enum {
     VIGEN_OK = 0,

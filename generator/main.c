@@ -5,6 +5,7 @@
 #include <string.h>
 #include "check.h"
 #include "decimal.h"
+#include "emit.h"
 #include "galerkin.h"
 #include "sandbox.h"
 #include "show.h"
@@ -25,6 +26,8 @@ static const char *usage_main =
     "                                         print a tableau (or the tableau of a spec)\n"
     "  check FILE [--against FILE2] [--max-order P] [--json]\n"
     "                                         certify order, symplecticity and consistency\n"
+    "  emit FILE --name NAME [--real double|long-double|float128] [-o DIR]\n"
+    "                                         compile a tableau into a C stepper (NAME.h, NAME.c)\n"
     "\n"
     "Options for every command (spec and tableau files run in a Lua sandbox):\n"
     "  --max-memory MIB        memory cap of the sandbox (default 256)\n"
@@ -203,6 +206,7 @@ int main(int argc, char **argv)
     int rc;
     if (strcmp(argv[1], "generate") == 0) rc = cmd_generate(argc - 2, argv + 2);
     else if (strcmp(argv[1], "show") == 0) rc = cmd_show(argc - 2, argv + 2);
+    else if (strcmp(argv[1], "emit") == 0) rc = vigen_emit_main(argc - 1, argv + 1);
     else if (strcmp(argv[1], "check") == 0) rc = vigen_check_main(argc - 2, argv + 2, vigen_source_load);
     else {
         fprintf(stderr, "vigen: unknown command '%s'\n\n%s", argv[1], usage_main);
