@@ -276,8 +276,13 @@ int vigen_galerkin_generate(vigen_tableau *out, vigen_spec *spec, slong digits, 
         if (rc == VIGEN_OK) break;
         vigen_tableau_clear(out);
         if (rc != VIGEN_E_PRECISION) return rc;
-        if (prec >= max_prec)
-            return vigen_error_prefix(err, "cannot certify %ld digits even at %ld bits: ", (long)digits, (long)prec);
+        if (prec >= max_prec) {
+            char *why = vigen_strdup(err->message ? err->message : "");
+            vigen_error_set(err, VIGEN_E_PRECISION, "%s (gave up certifying %ld digits at %ld bits, the cap)", why,
+                            (long)digits, (long)prec);
+            free(why);
+            return VIGEN_E_PRECISION;
+        }
         prec = prec * 2 > max_prec ? max_prec : prec * 2;
     }
     warn_about(out, spec);
