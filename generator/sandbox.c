@@ -42,6 +42,8 @@ struct vigen_sandbox {
     long instruction_limit, instructions_left;
     int instruction_step;           /* the count the hook is armed with */
     int instructions_hit;           /* budget spent in this call */
+    long total_left;                /* instructions left for the whole life of the state (all calls) */
+    int total_hit;                  /* ...and that budget is spent */
     int hit_line;                   /* line running when the budget ran out */
     int depth;                      /* nesting of vigen_sandbox_pcall */
     char *display;                  /* file name for messages ("spec.lua") */
@@ -146,11 +148,13 @@ static void count_hook(lua_State *L, lua_Debug *ar)
     vigen_sandbox *sb = sandbox_of(L);
     if (!sb->instructions_hit) {
         sb->instructions_left -= sb->instruction_step;
-        if (sb->instructions_left > 0) {
+        sb->total_left -= sb->instruction_step;
+        if (sb->instructions_left > 0 && sb->total_left > 0) {
             arm_hook(sb);
             return;
         }
         sb->instructions_hit = 1;
+        sb->total_hit = sb->total_left <= 0;
         if (lua_getinfo(L, "l", ar)) sb->hit_line = ar->currentline;
         /* From now on every instruction raises: pcall cannot absorb the cap. */
         lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
@@ -159,9 +163,15 @@ static void count_hook(lua_State *L, lua_Debug *ar)
     lua_error(L);
 }
 
+/* The hook fires every `step` instructions (at most HOOK_STEP): fine enough
+ * that the budget of the whole run (total_left) sees every long call, coarse
+ * enough to cost nothing measurable. */
+#define HOOK_STEP 4096
+
 static void arm_hook(vigen_sandbox *sb)
 {
-    long step = sb->instructions_left < INT_MAX ? sb->instructions_left : INT_MAX;
+    long step = sb->instructions_left < sb->total_left ? sb->instructions_left : sb->total_left;
+    if (step > HOOK_STEP) step = HOOK_STEP;
     if (step < 1) step = 1;
     sb->instruction_step = (int)step;
     lua_sethook(sb->L, count_hook, LUA_MASKCOUNT, (int)step);
@@ -207,7 +217,13 @@ static int translate_error(vigen_sandbox *sb, int status, vigen_error *err)
 {
     lua_State *L = sb->L;
     const char *msg = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
-    if (sb->instructions_hit) {
+    if (sb->instructions_hit && sb->total_hit) {
+        vigen_error_set(err, VIGEN_E_LIMIT,
+                        "%s: its Lua code ran for more than %ld instructions in all (the basis functions are "
+                        "called for every evaluation of the rigorous integrals; 20 times the per-call cap); "
+                        "if it really needs more, raise the cap with the option --max-instructions N",
+                        sb->display, 20 * sb->instruction_limit);
+    } else if (sb->instructions_hit) {
         char *where = sb->hit_line > 0 ? vigen_strdup_printf("; it was stopped at line %d", sb->hit_line)
                                        : vigen_strdup("");
         vigen_error_set(err, VIGEN_E_LIMIT,
@@ -465,6 +481,31 @@ static int no_patterns(lua_State *L)
                          "instruction cap", lua_tostring(L, lua_upvalueindex(1)));
 }
 
+/* string.rep loops in C: ("").rep(2^50) would spin forever outside the
+ * instruction cap, and a huge result is better refused before it is built. */
+static int safe_rep(lua_State *L)
+{
+    size_t len, seplen = 0;
+    luaL_checklstring(L, 1, &len);
+    lua_Integer n = luaL_checkinteger(L, 2);
+    luaL_optlstring(L, 3, "", &seplen);
+    if (n <= 0 || len + seplen == 0) {
+        lua_pushliteral(L, "");
+        return 1;
+    }
+    vigen_sandbox *sb = sandbox_of(L);
+    if ((lua_Unsigned)n > (lua_Unsigned)(sb->memory_limit / (len + seplen))) {
+        /* reported exactly like the allocator's refusal: the memory cap */
+        sb->memory_hit = 1;
+        lua_pushliteral(L, "not enough memory");
+        return lua_error(L);
+    }
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, 1);
+    return 1;
+}
+
 /* print writes to stderr: stdout may be carrying emitted code. */
 static int stderr_print(lua_State *L)
 {
@@ -506,6 +547,9 @@ static int setup_state(lua_State *L)
     lua_getglobal(L, LUA_STRLIBNAME);
     lua_pushnil(L);
     lua_setfield(L, -2, "dump");
+    lua_getfield(L, -1, "rep");
+    lua_pushcclosure(L, safe_rep, 1);
+    lua_setfield(L, -2, "rep");
     static const char *const pattern_functions[] = { "find", "match", "gmatch", "gsub", NULL };
     for (int i = 0; pattern_functions[i]; i++) {
         lua_pushstring(L, pattern_functions[i]);
@@ -575,6 +619,10 @@ int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits, v
     sb->memory_limit = limits && limits->memory_limit > 0 ? limits->memory_limit : def.memory_limit;
     sb->instruction_limit = limits && limits->instruction_limit > 0 ? limits->instruction_limit
                                                                     : def.instruction_limit;
+    /* every call has instruction_limit; all calls together 20 times that, so
+     * that a basis function called thousands of times by the integrator
+     * cannot run for hours one capped call at a time */
+    sb->total_left = sb->instruction_limit > LONG_MAX / 20 ? LONG_MAX : 20 * sb->instruction_limit;
     sb->display = vigen_strdup("sandbox");
     sb->L = lua_newstate(sandbox_alloc, sb);
     if (sb->L == NULL) {
@@ -599,6 +647,7 @@ void vigen_sandbox_free(vigen_sandbox *sb)
     if (sb == NULL) return;
     if (sb->L) {
         /* finalisers written in Lua run at close: give them a fresh budget */
+        if (sb->total_left < sb->instruction_limit) sb->total_left = sb->instruction_limit;
         reset_budget(sb);
         lua_close(sb->L);
     }

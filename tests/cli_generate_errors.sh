@@ -51,6 +51,7 @@ expect memory_bomb         2 "memory"
 expect escape_io           2 "escape_io.lua:1"
 expect escape_os           2 "escape_os.lua:1"
 expect chebyshev8          1 "complex"
+expect rep_hang            2 "memory"
 expect bad_expression      2 "cosh" "column"
 [ -e /tmp/vigen-escape ] && { echo "FAIL: a spec escaped the sandbox"; failures=$((failures + 1)); }
 
@@ -69,6 +70,9 @@ expect node_outside        0 "outside \[0, 1\]"
 "$vigen" generate "$bad/endless_loop.lua" --max-instructions 12345 -o "$work/capped.lua" 2>"$work/stderr"
 [ $? = 2 ] && grep -q "more than 12345 Lua instructions" "$work/stderr" && [ ! -e "$work/capped.lua" ] ||
   { echo "FAIL: --max-instructions 12345 should be the cap"; cat "$work/stderr"; failures=$((failures + 1)); }
+"$vigen" generate "$bad/slow_basis.lua" --max-instructions 100000 -o "$work/slow.lua" 2>"$work/stderr"
+[ $? = 2 ] && grep -q "2000000 instructions in all" "$work/stderr" && [ ! -e "$work/slow.lua" ] ||
+  { echo "FAIL: the total instruction budget should stop slow_basis"; cat "$work/stderr"; failures=$((failures + 1)); }
 "$vigen" --max-memory 1024 generate "$src/tableaux/specs/exponential_lua.lua" -q -o "$work/ok.lua" 2>"$work/stderr" ||
   { echo "FAIL: --max-memory 1024 should be accepted"; cat "$work/stderr"; failures=$((failures + 1)); }
 "$vigen" generate "$src/tableaux/specs/exponential_lua.lua" --max-memory -3 >/dev/null 2>&1
