@@ -108,7 +108,15 @@ static const char *push_float_text(lua_State *L, double x)
 static void check_operand(lua_State *L, int idx, const char *fname, const char *op)
 {
     int t = lua_type(L, idx);
-    if (t == LUA_TNUMBER && lua_isinteger(L, idx)) return;
+    if (t == LUA_TNUMBER && lua_isinteger(L, idx)) {
+        /* Lua integers wrap around silently past 2^63: one that large is
+         * more likely a wrapped result than a number the user meant */
+        lua_Integer v = lua_tointeger(L, idx);
+        if (v > ((lua_Integer)1 << 53) || v < -((lua_Integer)1 << 53))
+            luaL_error(L, "basis function: the Lua integer %I is beyond 2^53 (Lua integer arithmetic wraps around "
+                          "silently); compute with balls, e.g. exact(\"2\")^62", v);
+        return;
+    }
     if (t == LUA_TNUMBER) {
         const char *f = push_float_text(L, lua_tonumber(L, idx));
         if (fname) luaL_error(L, "basis function: %s got a Lua float (%s); %s", fname, f, float_hint);

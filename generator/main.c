@@ -46,8 +46,9 @@ static const char *usage_generate =
     "  -o FILE      write the tableau file to FILE (atomically); default: standard output\n"
     "  -q, --quiet  do not print the summary on standard error\n"
     "\n"
-    "Exit status: 0 success, 1 the method cannot be built (singular M, b_i = 0, ...),\n"
-    "2 unreadable input or usage error.\n";
+    "Exit status: 0 success, 1 the method cannot be built (singular M, b_i = 0, complex\n"
+    "nodes, digits that cannot be certified), 2 unusable input (unreadable or malformed\n"
+    "file, an expression outside its domain, a complex basis value) or usage error.\n";
 
 static const char *usage_show =
     "usage: vigen show FILE [--format text|latex|json|lua] [--digits N]\n"
@@ -60,10 +61,13 @@ static const char *usage_show =
     "  --digits N      digits for entries given as exact expressions (default 34); decimal\n"
     "                  entries are printed as they are in the file\n";
 
+/* 1: the mathematics fails (singular M, b_i = 0, complex nodes, a digit that
+ * cannot be certified); 2: the input is unusable (unreadable, malformed, an
+ * expression outside its domain such as log(-1) or a complex basis value). */
 static int exit_code_for(int status)
 {
     if (status == VIGEN_OK) return 0;
-    if (status == VIGEN_E_MATH || status == VIGEN_E_PRECISION || status == VIGEN_E_DOMAIN) return 1;
+    if (status == VIGEN_E_MATH || status == VIGEN_E_PRECISION) return 1;
     return 2;
 }
 

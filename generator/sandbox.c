@@ -75,6 +75,8 @@ void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits)
 
 lua_State *vigen_sandbox_state(vigen_sandbox *sb) { return sb->L; }
 
+void vigen_sandbox_lift_memory_cap(vigen_sandbox *sb) { sb->memory_limit = (size_t)-1 / 2; }
+
 /* ------------------------------------------------------------------ floats */
 
 size_t vigen_float_format(char *buf, size_t size, double x)

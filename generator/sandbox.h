@@ -38,6 +38,10 @@ int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits /*
 void vigen_sandbox_free(vigen_sandbox *sb);
 lua_State *vigen_sandbox_state(vigen_sandbox *sb);
 
+/* After the file has run: no memory cap any more, so that C code reading its
+ * result (raw accesses, outside protected calls) cannot hit a Lua error. */
+void vigen_sandbox_lift_memory_cap(vigen_sandbox *sb);
+
 /* Reads path, runs it as a text chunk named "@path" and leaves its single
  * return value on the stack.  Errors carry file:line: VIGEN_E_IO (unreadable),
  * VIGEN_E_SYNTAX (Lua syntax error), VIGEN_E_LUA (runtime error), VIGEN_E_LIMIT

@@ -10,16 +10,21 @@ int vigen_source_is_tableau(const char *path, vigen_error *err)
     vigen_sandbox *sb = NULL;
     if (vigen_sandbox_new(&sb, NULL, err) != VIGEN_OK) return -1;
     if (vigen_sandbox_run_file(sb, path, err) != VIGEN_OK) { vigen_sandbox_free(sb); return -1; }
+    vigen_sandbox_lift_memory_cap(sb);
     lua_State *L = vigen_sandbox_state(sb);
+    /* a tableau has s or A; anything else is read as a spec, whose loader
+     * explains what is missing.  Raw reads: the file is untrusted. */
     int is_tableau = 1;
     if (lua_istable(L, -1)) {
-        lua_getfield(L, -1, "A");
+        lua_pushliteral(L, "A");
+        lua_rawget(L, -2);
         int has_A = !lua_isnil(L, -1);
         lua_pop(L, 1);
-        lua_getfield(L, -1, "nodes");
-        int has_nodes = !lua_isnil(L, -1) && !lua_isstring(L, -1);
+        lua_pushliteral(L, "s");
+        lua_rawget(L, -2);
+        int has_s = !lua_isnil(L, -1);
         lua_pop(L, 1);
-        is_tableau = has_A || !has_nodes;
+        is_tableau = has_A || has_s;
     }
     vigen_sandbox_free(sb);
     return is_tableau;

@@ -273,7 +273,12 @@ static int read_entry(lua_State *L, int idx, const char *field, slong i, load_ct
     const char *family;
     long fs;
     if (t == LUA_TNUMBER && lua_isinteger(L, idx)) {
-        cx->src = vigen_strdup_printf("%lld", (long long)lua_tointeger(L, idx));
+        lua_Integer v = lua_tointeger(L, idx);
+        if (v > ((lua_Integer)1 << 53) || v < -((lua_Integer)1 << 53))
+            return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is the Lua integer %lld, beyond 2^53 (Lua integer "
+                                   "arithmetic wraps around silently): write it as a string", P, cx->entry,
+                                   (long long)v);
+        cx->src = vigen_strdup_printf("%lld", (long long)v);
     } else if (t == LUA_TNUMBER) {
         return refuse_float(cx, cx->entry, lua_tonumber(L, idx));
     } else if (t == LUA_TSTRING) {

@@ -1,6 +1,10 @@
 /* tableau.c — tableau records, the tableau file format (read and write),
  * atomic file output and the symplecticity residual. */
+#define _DEFAULT_SOURCE /* mkstemp, realpath, fchmod, lstat */
 #include <errno.h>
+#include <limits.h>
+#include <sys/stat.h>
+#include <sys/types.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,6 +74,23 @@ int vigen_tableau_entry_eval(arb_t res, const char *text, slong prec, vigen_erro
 
 /* ---------------------------------------------------------------- reading */
 
+/* Tableau files are untrusted: every read below is raw (no __index, __len or
+ * other metamethod can run outside a protected call), and tables carrying a
+ * metatable are refused outright. */
+static void raw_getfield(lua_State *L, int idx, const char *key)
+{
+    idx = lua_absindex(L, idx);
+    lua_pushstring(L, key);
+    lua_rawget(L, idx);
+}
+
+static int has_metatable(lua_State *L, int idx)
+{
+    if (!lua_getmetatable(L, idx)) return 0;
+    lua_pop(L, 1);
+    return 1;
+}
+
 /* Reads the entry at the top of the Lua stack into *out (a fresh string). */
 static int read_entry(lua_State *L, char **out, const char *path, const char *label, vigen_error *err)
 {
@@ -85,7 +106,13 @@ static int read_entry(lua_State *L, char **out, const char *path, const char *la
         return VIGEN_OK;
     }
     if (lua_isinteger(L, -1)) {
-        *out = vigen_strdup_printf("%lld", (long long)lua_tointeger(L, -1));
+        /* Lua integers wrap around silently beyond 2^63; refuse anything a
+         * double could not hold either, rather than trust it */
+        lua_Integer v = lua_tointeger(L, -1);
+        if (v > ((lua_Integer)1 << 53) || v < -((lua_Integer)1 << 53))
+            return vigen_error_set(err, VIGEN_E_SPEC, "%s: %s is the Lua integer %lld, beyond 2^53 (Lua integer "
+                                   "arithmetic wraps around): write it as a string", path, label, (long long)v);
+        *out = vigen_strdup_printf("%lld", (long long)v);
         return VIGEN_OK;
     }
     if (lua_type(L, -1) == LUA_TNUMBER)
@@ -102,17 +129,17 @@ static int read_vector(lua_State *L, const char *key, slong s, char ***out, int 
                        vigen_error *err)
 {
     int rc = VIGEN_OK;
-    lua_getfield(L, -1, key);
+    raw_getfield(L, -1, key);
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         if (required) return vigen_error_set(err, VIGEN_E_SPEC, "%s: the field '%s' is missing", path, key);
         return VIGEN_OK;
     }
-    if (!lua_istable(L, -1)) {
+    if (!lua_istable(L, -1) || has_metatable(L, -1)) {
         lua_pop(L, 1);
-        return vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' must be a list of %ld entries", path, key, (long)s);
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' must be a plain list of %ld entries", path, key, (long)s);
     }
-    lua_Integer n = luaL_len(L, -1);
+    lua_Integer n = (lua_Integer)lua_rawlen(L, -1);
     if (n != s) {
         lua_pop(L, 1);
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' has %lld entries but s = %ld", path, key, (long long)n,
@@ -120,7 +147,7 @@ static int read_vector(lua_State *L, const char *key, slong s, char ***out, int 
     }
     char **texts = texts_new(s);
     for (slong i = 0; i < s && rc == VIGEN_OK; i++) {
-        lua_geti(L, -1, i + 1);
+        lua_rawgeti(L, -1, i + 1);
         char *label = vigen_strdup_printf("%s[%ld]", key, (long)(i + 1));
         rc = read_entry(L, &texts[i], path, label, err);
         free(label);
@@ -136,26 +163,26 @@ static int read_matrix(lua_State *L, const char *key, slong s, char ***out, int 
                        vigen_error *err)
 {
     int rc = VIGEN_OK;
-    lua_getfield(L, -1, key);
+    raw_getfield(L, -1, key);
     if (lua_isnil(L, -1)) {
         lua_pop(L, 1);
         if (required) return vigen_error_set(err, VIGEN_E_SPEC, "%s: the field '%s' is missing", path, key);
         return VIGEN_OK;
     }
-    if (!lua_istable(L, -1) || luaL_len(L, -1) != s) {
+    if (!lua_istable(L, -1) || has_metatable(L, -1) || (slong)lua_rawlen(L, -1) != s) {
         lua_pop(L, 1);
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' must be a list of %ld rows of %ld entries", path, key,
                                (long)s, (long)s);
     }
     char **texts = texts_new(s * s);
     for (slong i = 0; i < s && rc == VIGEN_OK; i++) {
-        lua_geti(L, -1, i + 1);
-        if (!lua_istable(L, -1) || luaL_len(L, -1) != s) {
+        lua_rawgeti(L, -1, i + 1);
+        if (!lua_istable(L, -1) || has_metatable(L, -1) || (slong)lua_rawlen(L, -1) != s) {
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: %s[%ld] must be a row of %ld entries", path, key,
                                  (long)(i + 1), (long)s);
         }
         for (slong j = 0; j < s && rc == VIGEN_OK; j++) {
-            lua_geti(L, -1, j + 1);
+            lua_rawgeti(L, -1, j + 1);
             char *label = vigen_strdup_printf("%s[%ld][%ld]", key, (long)(i + 1), (long)(j + 1));
             rc = read_entry(L, &texts[i * s + j], path, label, err);
             free(label);
@@ -171,7 +198,7 @@ static int read_matrix(lua_State *L, const char *key, slong s, char ***out, int 
 
 static int read_string_field(lua_State *L, const char *key, char **out, const char *path, vigen_error *err)
 {
-    lua_getfield(L, -1, key);
+    raw_getfield(L, -1, key);
     int rc = VIGEN_OK;
     if (lua_type(L, -1) == LUA_TSTRING) *out = vigen_strdup(lua_tostring(L, -1));
     else if (!lua_isnil(L, -1))
@@ -192,9 +219,12 @@ int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_l
     rc = vigen_sandbox_run_file(sb, path, err);
     if (rc != VIGEN_OK) { vigen_sandbox_free(sb); return rc; }
     lua_State *L = vigen_sandbox_state(sb);
-    if (!lua_istable(L, -1)) {
+    /* reading below allocates outside any protected call: lift the memory cap
+     * so that it cannot raise (the file has finished running) */
+    vigen_sandbox_lift_memory_cap(sb);
+    if (!lua_istable(L, -1) || has_metatable(L, -1)) {
         vigen_sandbox_free(sb);
-        return vigen_error_set(err, VIGEN_E_SPEC, "%s: a tableau file must return a table (return { name = ..., s = ..., "
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: a tableau file must return a plain table (return { name = ..., s = ..., "
                                "c = {...}, A = {{...}}, b = {...} })", path);
     }
 
@@ -215,7 +245,7 @@ int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_l
         }
     }
 
-    lua_getfield(L, -1, "s");
+    raw_getfield(L, -1, "s");
     if (!lua_isinteger(L, -1) || lua_tointeger(L, -1) < 1 || lua_tointeger(L, -1) > 4096) {
         lua_pop(L, 1);
         vigen_sandbox_free(sb);
@@ -241,14 +271,14 @@ int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_l
     if (rc == VIGEN_OK) rc = read_string_field(L, "nodes", &t->nodes, path, err);
     if (rc == VIGEN_OK) rc = read_string_field(L, "generator", &t->generator, path, err);
     if (rc == VIGEN_OK) {
-        lua_getfield(L, -1, "digits");
+        raw_getfield(L, -1, "digits");
         if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 0) t->digits = (slong)lua_tointeger(L, -1);
         else if (!lua_isnil(L, -1))
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'digits' must be a non-negative integer", path);
         lua_pop(L, 1);
     }
     if (rc == VIGEN_OK) {
-        lua_getfield(L, -1, "order");
+        raw_getfield(L, -1, "order");
         if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 0 && lua_tointeger(L, -1) < 1000)
             t->claim_order = (int)lua_tointeger(L, -1);
         else if (!lua_isnil(L, -1))
@@ -256,7 +286,7 @@ int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_l
         lua_pop(L, 1);
     }
     if (rc == VIGEN_OK) {
-        lua_getfield(L, -1, "symplectic");
+        raw_getfield(L, -1, "symplectic");
         if (lua_isboolean(L, -1)) t->claim_symplectic = lua_toboolean(L, -1);
         else if (!lua_isnil(L, -1))
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'symplectic' (a claim) must be true or false", path);
@@ -467,6 +497,21 @@ char *vigen_tableau_to_lua(const vigen_tableau *t)
     return sb.data;
 }
 
+/* Writes everything or fails (no partial output left behind). */
+static int write_all(int fd, const char *text, size_t n)
+{
+    while (n > 0) {
+        ssize_t k = write(fd, text, n);
+        if (k < 0) {
+            if (errno == EINTR) continue;
+            return 0;
+        }
+        text += k;
+        n -= (size_t)k;
+    }
+    return 1;
+}
+
 int vigen_write_file_atomic(const char *path, const char *text, vigen_error *err)
 {
     size_t n = strlen(text);
@@ -475,22 +520,58 @@ int vigen_write_file_atomic(const char *path, const char *text, vigen_error *err
             return vigen_error_set(err, VIGEN_E_IO, "cannot write to standard output: %s", strerror(errno));
         return VIGEN_OK;
     }
-    char *tmp = vigen_strdup_printf("%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "wb");
-    if (f == NULL) {
-        int code = vigen_error_set(err, VIGEN_E_IO, "cannot create %s: %s", tmp, strerror(errno));
+    /* A symbolic link is followed: the file it points to is replaced, the
+     * link stays.  A device or FIFO (/dev/null, a pipe) is written directly:
+     * renaming over it would replace the device with a regular file. */
+    char *target = NULL;
+    struct stat st;
+    int exists = 0;
+    if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
+        target = realpath(path, NULL);
+        if (target == NULL)
+            return vigen_error_set(err, VIGEN_E_IO, "cannot write %s: it is a symbolic link to a missing file", path);
+    } else target = vigen_strdup(path);
+    if (stat(target, &st) == 0) {
+        exists = 1;
+        if (!S_ISREG(st.st_mode)) {
+            int code = VIGEN_OK;
+            FILE *f = fopen(target, "wb");
+            if (f == NULL || fwrite(text, 1, n, f) != n || fclose(f) != 0)
+                code = vigen_error_set(err, VIGEN_E_IO, "cannot write %s: %s", path, strerror(errno));
+            free(target);
+            return code;
+        }
+    }
+    /* A fresh, unpredictable temporary in the same directory (mkstemp creates
+     * it exclusively, so nobody can plant a link there), then rename. */
+    char *tmp = vigen_strdup_printf("%s.tmp.XXXXXX", target);
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        int code = vigen_error_set(err, VIGEN_E_IO, "cannot create a temporary file next to %s: %s", path,
+                                   strerror(errno));
         free(tmp);
+        free(target);
         return code;
     }
-    int ok = fwrite(text, 1, n, f) == n;
-    ok = (fclose(f) == 0) && ok;
-    if (!ok || rename(tmp, path) != 0) {
+    /* the new file gets the old one's permissions, or the usual 0666 & ~umask */
+    mode_t mode;
+    if (exists) mode = st.st_mode & 07777;
+    else {
+        mode_t mask = umask(0);
+        umask(mask);
+        mode = 0666 & ~mask;
+    }
+    int ok = fchmod(fd, mode) == 0 && write_all(fd, text, n);
+    ok = (close(fd) == 0) && ok;
+    if (!ok || rename(tmp, target) != 0) {
         int code = vigen_error_set(err, VIGEN_E_IO, "cannot write %s: %s", path, strerror(errno));
         remove(tmp);
         free(tmp);
+        free(target);
         return code;
     }
     free(tmp);
+    free(target);
     return VIGEN_OK;
 }
 
