@@ -349,9 +349,8 @@ int vigen_basis_integral(arb_t res, vigen_basis *B, slong i, const arb_t x, slon
             vigen_error_clear(&ctx.err);
         } else if (status != ARB_CALC_SUCCESS || !acb_is_finite(r)) {
             char *xs = arb_get_str(x, 10, 0);
-            rc = vigen_error_set(err, VIGEN_E_PRECISION,
-                                 "the integral of %s from 0 to %s could not be certified (a singularity or branch cut "
-                                 "on or near [0, 1]?)", f->label, xs);
+            rc = vigen_error_set(err, VIGEN_E_INTEGRAL, "the integral of %s from 0 to %s could not be certified",
+                                 f->label, xs);
             flint_free(xs);
         } else {
             rc = real_part_checked(res, r, f->label, "the integral", err);

@@ -30,9 +30,10 @@ int vigen_basis_is_interpolating(const vigen_basis *basis);
  * or infinite at x; VIGEN_E_PRECISION when realness cannot be decided yet. */
 int vigen_basis_value(arb_t res, vigen_basis *basis, slong i, const arb_t x, slong prec, vigen_error *err);
 
-/* res = int_0^x psi_i(t) dt.  VIGEN_E_PRECISION when the rigorous integration
- * does not reach the target accuracy (retry higher), VIGEN_E_DOMAIN when the
- * integrand is complex or singular on the interval. */
+/* res = int_0^x psi_i(t) dt.  VIGEN_E_INTEGRAL when the rigorous integration
+ * does not reach the target accuracy (worth one retry at a higher precision;
+ * failing again means a singularity or branch cut on or near the interval),
+ * VIGEN_E_DOMAIN when the integrand is complex there. */
 int vigen_basis_integral(arb_t res, vigen_basis *basis, slong i, const arb_t x, slong prec, vigen_error *err);
 
 /* Human-readable name of psi_i for messages: "cos(pi*t)", "t^2", "l_3 (Lagrange)". */

@@ -86,6 +86,7 @@ const char *vigen_status_name(int code)
     case VIGEN_E_MATH: return "mathematical failure";
     case VIGEN_E_PRECISION: return "precision limit reached";
     case VIGEN_E_MEMORY: return "out of memory";
+    case VIGEN_E_INTEGRAL: return "integral not certified";
     default: return "unknown status";
     }
 }

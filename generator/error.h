@@ -22,7 +22,8 @@ enum {
     VIGEN_E_DOMAIN,     /* value is complex, infinite, NaN, or outside a function's domain */
     VIGEN_E_MATH,       /* the mathematics fails: singular M, b_i = 0, complex roots, ... */
     VIGEN_E_PRECISION,  /* a result could not be certified within the precision cap */
-    VIGEN_E_MEMORY      /* allocation failed */
+    VIGEN_E_MEMORY,     /* allocation failed */
+    VIGEN_E_INTEGRAL    /* a rigorous integral did not converge at this precision (retryable once) */
 };
 
 typedef struct {

@@ -122,7 +122,7 @@ static void fill_metadata(vigen_tableau *t, const vigen_spec *spec)
     t->has_ct = 1;
 }
 
-int vigen_galerkin_compute(vigen_tableau *t, vigen_spec *spec, slong prec, vigen_error *err)
+static int compute(vigen_tableau *t, vigen_spec *spec, slong prec, int last_attempt, vigen_error *err)
 {
     slong s = spec->s;
     vigen_tableau_init(t, s);
@@ -183,24 +183,26 @@ int vigen_galerkin_compute(vigen_tableau *t, vigen_spec *spec, slong prec, vigen
             if (arb_is_one(t->c + i))
                 for (slong j = 0; j < s; j++) arb_set(arb_mat_entry(t->A, i, j), t->b + j);
         }
-        /* Theorem 3 divides by b_i */
+        /* Theorem 3 divides by b_i.  A ball around 0 may still separate at a
+         * higher precision (b_i = 1e-70 is legal): only the last attempt,
+         * at the precision cap, concludes that b_i vanishes. */
         for (slong i = 0; i < s && rc == VIGEN_OK; i++) {
             if (!arb_contains_zero(t->b + i)) continue;
-            mag_t m;
-            mag_init(m);
-            arb_get_mag(m, t->b + i);
-            if (mag_cmp_2exp_si(m, -prec / 3) < 0) {
-                char *cv = ball_text(t->c + i);
-                rc = vigen_error_set(err, VIGEN_E_MATH, "%s: b_%ld = 0 (|b_%ld| < 2^-%ld) for node c_%ld = %s: the quadrature "
-                                     "weight of this node vanishes and Theorem 3 divides by b_i; choose other nodes "
-                                     "or basis functions", spec->path, (long)(i + 1), (long)(i + 1), (long)(prec / 3),
-                                     (long)(i + 1), cv);
-                free(cv);
-            } else {
+            char *cv = ball_text(t->c + i);
+            arf_t u;
+            arf_init(u);
+            arb_get_abs_ubound_arf(u, t->b + i, 30);
+            slong ex = arf_is_zero(u) ? -prec : arf_abs_bound_lt_2exp_si(u);   /* |b_i| < 2^ex */
+            arf_clear(u);
+            if (arb_is_zero(t->b + i) || last_attempt)
+                rc = vigen_error_set(err, VIGEN_E_MATH, "%s: b_%ld = 0 (|b_%ld| < 2^%ld, certified at %ld bits) for "
+                                     "node c_%ld = %s: the quadrature weight of this node vanishes and Theorem 3 "
+                                     "divides by b_i; choose other nodes or basis functions", spec->path,
+                                     (long)(i + 1), (long)(i + 1), (long)ex, (long)prec, (long)(i + 1), cv);
+            else
                 rc = vigen_error_set(err, VIGEN_E_PRECISION, "%s: b_%ld cannot be separated from 0 at %ld bits",
                                      spec->path, (long)(i + 1), (long)prec);
-            }
-            mag_clear(m);
+            free(cv);
         }
     }
     if (rc == VIGEN_OK) {
@@ -233,6 +235,11 @@ int vigen_galerkin_compute(vigen_tableau *t, vigen_spec *spec, slong prec, vigen
     arb_mat_clear(X);
     vigen_basis_free(basis);
     return rc;
+}
+
+int vigen_galerkin_compute(vigen_tableau *t, vigen_spec *spec, slong prec, vigen_error *err)
+{
+    return compute(t, spec, prec, 0, err);
 }
 
 /* Warnings that do not stop generation: nodes outside [0, 1] and sum b != 1
@@ -269,12 +276,27 @@ int vigen_galerkin_generate(vigen_tableau *out, vigen_spec *spec, slong digits, 
         return vigen_error_set(err, VIGEN_E_USAGE, "--digits must be between 1 and 100000 (got %ld)", (long)digits);
     slong prec = vigen_galerkin_initial_prec(digits, spec->s);
     slong max_prec = vigen_galerkin_max_prec(digits, spec->s);
+    int integral_failures = 0;
     for (;;) {
         vigen_error_clear(err);
-        int rc = vigen_galerkin_compute(out, spec, prec, err);
+        int rc = compute(out, spec, prec, prec >= max_prec, err);
         if (rc == VIGEN_OK) rc = vigen_tableau_texts_from_balls(out, digits, err);
         if (rc == VIGEN_OK) break;
         vigen_tableau_clear(out);
+        if (rc == VIGEN_E_INTEGRAL) {
+            /* acb_calc_integrate converges for functions analytic near the
+             * interval; failing at two precisions means it is not */
+            if (++integral_failures >= 2) {
+                char *why = vigen_strdup(err->message ? err->message : "");
+                vigen_error_set(err, VIGEN_E_DOMAIN, "%s at %ld bits nor at the precision before: the basis function "
+                                "has a singularity, a branch point or complex values on or near the interval; "
+                                "vigen integrates only functions analytic on a neighbourhood of [0, 1]",
+                                why, (long)prec);
+                free(why);
+                return VIGEN_E_DOMAIN;
+            }
+            rc = VIGEN_E_PRECISION;
+        }
         if (rc != VIGEN_E_PRECISION) return rc;
         if (prec >= max_prec) {
             char *why = vigen_strdup(err->message ? err->message : "");

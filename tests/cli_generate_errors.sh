@@ -51,6 +51,8 @@ expect memory_bomb         2 "memory"
 expect escape_io           2 "escape_io.lua:1"
 expect escape_os           2 "escape_os.lua:1"
 expect chebyshev8          1 "complex"
+expect log_singular        2 "singularity"
+expect branch_point        2 "branch point"
 expect rep_hang            2 "memory"
 expect bad_expression      2 "cosh" "column"
 [ -e /tmp/vigen-escape ] && { echo "FAIL: a spec escaped the sandbox"; failures=$((failures + 1)); }

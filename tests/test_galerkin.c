@@ -271,8 +271,34 @@ static void test_2000_digits(void)
     vigen_tableau_clear(&t);
 }
 
+/* A tiny but non-zero weight is legal: nodes {0, 1/2 + 10^-70} with the
+ * Lagrange basis give b_1 = int_0^1 (t - c_2)/(0 - c_2) = (c_2 - 1/2)/c_2. */
+static void test_tiny_weight(void)
+{
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    char path[512];
+    snprintf(path, sizeof path, "%s/vigen_test_tiny_weight.lua", dir);
+    CHECK(write_text(path, "return { name = 'tiny', basis = 'lagrange', nodes = { '0', '1/2 + 1/10^70' } }\n"));
+    vigen_tableau t;
+    if (generate(&t, path, 40)) {
+        /* relative comparison: scale b_1 by 10^70 (an absolute one would pass for 0) */
+        arb_t scaled, p10;
+        arb_init(scaled);
+        arb_init(p10);
+        arb_ui_pow_ui(p10, 10, 70, t.prec);
+        arb_mul(scaled, t.b + 0, p10, t.prec);
+        expect_entry(scaled, "1 / (1/2 + 1/10^70)", 38, "tiny b_1 * 10^70");
+        arb_clear(scaled);
+        arb_clear(p10);
+        expect_entry(t.b + 1, "(1/2) / (1/2 + 1/10^70)", 38, "tiny b_2");
+        vigen_tableau_clear(&t);
+    } else CHECK(0);
+    remove(path);
+}
+
 int main(void)
 {
+    test_tiny_weight();
     test_2000_digits();
     test_gauss();
     test_lobatto();
