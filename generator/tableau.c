@@ -352,9 +352,36 @@ int vigen_tableau_evaluate(vigen_tableau *t, slong prec, vigen_error *err)
 
 /* ---------------------------------------------------------------- writing */
 
+/* True when the ball is far narrower than `digits` digits need: if those
+ * digits still cannot be certified, the value sits (within the radius) on a
+ * rounding tie, which no precision can decide. */
+static int tight_for(const arb_t x, slong digits)
+{
+    if (arb_contains_zero(x) || arb_is_exact(x)) return 0;
+    arb_t q;
+    arb_init(q);
+    arb_get_rad_arb(q, x);
+    arb_div_arf(q, q, arb_midref(x), 64);
+    arb_abs(q, q);
+    arb_t lim;
+    arb_init(lim);
+    arb_set_si(lim, 10);
+    arb_pow_ui(lim, lim, (ulong)(digits + 8), 64);
+    arb_mul(q, q, lim, 64);
+    int tight = arf_cmpabs_2exp_si(arb_midref(q), 0) < 0;
+    arb_clear(q);
+    arb_clear(lim);
+    return tight;
+}
+
 static int format_entry(char **out, const arb_t x, slong digits)
 {
     char *text = vigen_decimal_format(x, digits);
+    /* A value on a tie (9/40 = 0.225 at 2 digits) has two correct roundings
+     * and a ball around it never picks one: write it with the fewest extra
+     * digits that are certified (0.225), which is still a correct rounding. */
+    for (slong extra = 1; text == NULL && extra <= 20 && tight_for(x, digits); extra++)
+        text = vigen_decimal_format(x, digits + extra);
     if (text == NULL && arb_contains_zero(x)) {
         /* a ball around zero: certify |x| <= 10^-digits / 2, written "0e-digits" */
         char *z = vigen_decimal_format_zero(x);
@@ -373,35 +400,55 @@ static int format_entry(char **out, const arb_t x, slong digits)
     return VIGEN_OK;
 }
 
-static int format_vector(char ***texts, arb_srcptr v, slong n, slong digits)
+/* Formats one named entry; on failure says which entry and why. */
+static int format_named(char **out, const arb_t x, slong digits, slong prec, const char *label, vigen_error *err)
+{
+    if (format_entry(out, x, digits) == VIGEN_OK) return VIGEN_OK;
+    char *v = arb_get_str(x, digits + 20, 0);
+    int code = vigen_error_set(err, VIGEN_E_PRECISION,
+                               "%s = %s cannot be rounded to %ld certified digits at %ld bits (if the exact value "
+                               "lies halfway between two %ld-digit decimals, no precision decides it: ask for "
+                               "--digits %ld)", label, v, (long)digits, (long)prec, (long)digits, (long)(digits + 1));
+    flint_free(v);
+    return code;
+}
+
+static int format_vector(char ***texts, arb_srcptr v, slong n, slong digits, slong prec, const char *key,
+                         vigen_error *err)
 {
     if (*texts == NULL) *texts = texts_new(n);
-    for (slong k = 0; k < n; k++)
-        if (format_entry(&(*texts)[k], v + k, digits) != VIGEN_OK) return VIGEN_E_PRECISION;
+    for (slong k = 0; k < n; k++) {
+        char label[64];
+        snprintf(label, sizeof label, "%s[%ld]", key, (long)(k + 1));
+        if (format_named(&(*texts)[k], v + k, digits, prec, label, err) != VIGEN_OK) return VIGEN_E_PRECISION;
+    }
     return VIGEN_OK;
 }
 
-static int format_matrix(char ***texts, const arb_mat_t m, slong s, slong digits)
+static int format_matrix(char ***texts, const arb_mat_t m, slong s, slong digits, slong prec, const char *key,
+                         vigen_error *err)
 {
     if (*texts == NULL) *texts = texts_new(s * s);
     for (slong i = 0; i < s; i++)
-        for (slong j = 0; j < s; j++)
-            if (format_entry(&(*texts)[i * s + j], arb_mat_entry(m, i, j), digits) != VIGEN_OK) return VIGEN_E_PRECISION;
+        for (slong j = 0; j < s; j++) {
+            char label[64];
+            snprintf(label, sizeof label, "%s[%ld][%ld]", key, (long)(i + 1), (long)(j + 1));
+            if (format_named(&(*texts)[i * s + j], arb_mat_entry(m, i, j), digits, prec, label, err) != VIGEN_OK)
+                return VIGEN_E_PRECISION;
+        }
     return VIGEN_OK;
 }
 
 int vigen_tableau_texts_from_balls(vigen_tableau *t, slong digits, vigen_error *err)
 {
-    slong s = t->s;
-    int rc = format_vector(&t->c_text, t->c, s, digits);
-    if (rc == VIGEN_OK) rc = format_vector(&t->b_text, t->b, s, digits);
-    if (rc == VIGEN_OK) rc = format_matrix(&t->A_text, t->A, s, digits);
-    if (rc == VIGEN_OK && t->has_At) rc = format_matrix(&t->At_text, t->At, s, digits);
-    if (rc == VIGEN_OK && t->has_ct) rc = format_vector(&t->ct_text, t->ct, s, digits);
-    if (rc == VIGEN_OK && t->has_bt) rc = format_vector(&t->bt_text, t->bt, s, digits);
-    if (rc != VIGEN_OK)
-        return vigen_error_set(err, VIGEN_E_PRECISION, "cannot certify %ld digits of every entry at %ld bits",
-                               (long)digits, (long)t->prec);
+    slong s = t->s, p = t->prec;
+    int rc = format_vector(&t->c_text, t->c, s, digits, p, "c", err);
+    if (rc == VIGEN_OK) rc = format_vector(&t->b_text, t->b, s, digits, p, "b", err);
+    if (rc == VIGEN_OK) rc = format_matrix(&t->A_text, t->A, s, digits, p, "A", err);
+    if (rc == VIGEN_OK && t->has_At) rc = format_matrix(&t->At_text, t->At, s, digits, p, "At", err);
+    if (rc == VIGEN_OK && t->has_ct) rc = format_vector(&t->ct_text, t->ct, s, digits, p, "ct", err);
+    if (rc == VIGEN_OK && t->has_bt) rc = format_vector(&t->bt_text, t->bt, s, digits, p, "bt", err);
+    if (rc != VIGEN_OK) return rc;
     t->digits = digits;
     return VIGEN_OK;
 }

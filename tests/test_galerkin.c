@@ -296,8 +296,38 @@ static void test_tiny_weight(void)
     remove(path);
 }
 
+/* A rounding tie: Lagrange at equispaced(5) has a_43 = int_0^(3/4) l_3 = 9/40
+ * exactly (Newton–Cotes weights, computed by hand with fractions), which lies
+ * halfway between 0.22 and 0.23.  At --digits 2 it is written with the one
+ * extra digit that makes it certified, "0.225", instead of failing. */
+static void test_tie(void)
+{
+    const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
+    char path[512];
+    snprintf(path, sizeof path, "%s/vigen_test_tie.lua", dir);
+    CHECK(write_text(path, "return { name = 'tie', basis = 'lagrange', nodes = equispaced(5) }\n"));
+    vigen_tableau t;
+    if (generate(&t, path, 2)) {
+        CHECK_MSG(strcmp(t.A_text[3 * 5 + 2], "0.225") == 0, "a_43 written as %s", t.A_text[3 * 5 + 2]);
+        /* every entry, read back as a rounded decimal, contains its exact value */
+        vigen_error err;
+        vigen_error_init(&err);
+        arb_t x;
+        arb_init(x);
+        for (slong i = 0; i < 5; i++)
+            for (slong j = 0; j < 5; j++) {
+                CHECK(vigen_tableau_entry_eval(x, t.A_text[i * 5 + j], 256, &err) == VIGEN_OK);
+                CHECK(arb_contains(x, arb_mat_entry(t.A, i, j)));
+            }
+        arb_clear(x);
+        vigen_tableau_clear(&t);
+    } else CHECK(0);
+    remove(path);
+}
+
 int main(void)
 {
+    test_tie();
     test_tiny_weight();
     test_2000_digits();
     test_gauss();
