@@ -172,7 +172,10 @@ static int split_decimal(const char *text, int *negative, char **digits_out, slo
         if (*p == '+' || *p == '-') { eneg = (*p == '-'); p++; }
         if (!isdigit((unsigned char)*p)) { vigen_strbuf_clear(&sb); return 0; }
         while (isdigit((unsigned char)*p)) {
-            if (e < 100000000) e = 10 * e + (*p - '0');
+            e = 10 * e + (*p - '0');
+            /* an absurd exponent is not read as a rounded decimal (the exact
+             * expression parser, which handles any exponent, reads it) */
+            if (e > 100000000) { vigen_strbuf_clear(&sb); return 0; }
             p++;
         }
         if (eneg) e = -e;

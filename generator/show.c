@@ -1,4 +1,5 @@
 /* show.c — text, LaTeX, JSON and Lua renderings of a tableau. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "decimal.h"
@@ -26,16 +27,33 @@ static char *display(const char *text, const arb_t x, slong digits)
 {
     if (text != NULL && vigen_decimal_is_rounded(text)) return vigen_strdup(text);
     if (arb_is_zero(x)) return vigen_strdup("0");
-    return vigen_decimal_format(x, digits);
+    char *d = vigen_decimal_format(x, digits);
+    if (d == NULL && arb_contains_zero(x)) {
+        /* an exact expression whose value is 0 (sin(pi), sqrt(2)^2 - 2) never
+         * gives a ball excluding 0: certify |x| <= 0.5e-digits, as generate does */
+        char *z = vigen_decimal_format_zero(x);
+        long K = 0;
+        if (z != NULL && sscanf(z, "0e%ld", &K) == 1 && K <= -digits) d = vigen_strdup_printf("0e-%ld", (long)digits);
+        free(z);
+    }
+    return d;
 }
 
-static int fill(char ***out, char **texts, arb_srcptr v, const arb_mat_struct *m, slong s, slong n, slong digits)
+/* The entry that could not be displayed, for the message. */
+static char failed_label[64];
+
+static int fill(char ***out, char **texts, arb_srcptr v, const arb_mat_struct *m, slong s, slong n, slong digits,
+                const char *key)
 {
     *out = calloc((size_t)n, sizeof(char *));
     for (slong k = 0; k < n; k++) {
         arb_srcptr x = m ? arb_mat_entry(m, k / s, k % s) : v + k;
         (*out)[k] = display(texts ? texts[k] : NULL, x, digits);
-        if ((*out)[k] == NULL) return 0;
+        if ((*out)[k] == NULL) {
+            if (m) snprintf(failed_label, sizeof failed_label, "%s[%ld][%ld]", key, (long)(k / s + 1), (long)(k % s + 1));
+            else snprintf(failed_label, sizeof failed_label, "%s[%ld]", key, (long)(k + 1));
+            return 0;
+        }
     }
     return 1;
 }
@@ -46,11 +64,12 @@ int vigen_show_entry_strings(vigen_tableau *t, slong digits, char ***c, char ***
     slong s = t->s, prec = t->prec;
     for (int attempt = 0; attempt < 6; attempt++) {
         *c = *A = *b = *ct = *At = *bt = NULL;
-        int ok = fill(c, t->c_text, t->c, NULL, s, s, digits) && fill(A, t->A_text, NULL, t->A, s, s * s, digits) &&
-                 fill(b, t->b_text, t->b, NULL, s, s, digits);
-        if (ok && t->has_At) ok = fill(At, t->At_text, NULL, t->At, s, s * s, digits);
-        if (ok && t->has_At) ok = fill(ct, t->has_ct ? t->ct_text : NULL, t->ct, NULL, s, s, digits);
-        if (ok && t->has_bt) ok = fill(bt, t->bt_text, t->bt, NULL, s, s, digits);
+        int ok = fill(c, t->c_text, t->c, NULL, s, s, digits, "c") &&
+                 fill(A, t->A_text, NULL, t->A, s, s * s, digits, "A") &&
+                 fill(b, t->b_text, t->b, NULL, s, s, digits, "b");
+        if (ok && t->has_At) ok = fill(At, t->At_text, NULL, t->At, s, s * s, digits, "At");
+        if (ok && t->has_At) ok = fill(ct, t->has_ct ? t->ct_text : NULL, t->ct, NULL, s, s, digits, "ct");
+        if (ok && t->has_bt) ok = fill(bt, t->bt_text, t->bt, NULL, s, s, digits, "bt");
         if (ok) return VIGEN_OK;
         free_strings(*c, s); free_strings(*A, s * s); free_strings(*b, s);
         free_strings(*ct, s); free_strings(*At, s * s); free_strings(*bt, s);
@@ -60,8 +79,10 @@ int vigen_show_entry_strings(vigen_tableau *t, slong digits, char ***c, char ***
         int rc = vigen_tableau_evaluate(t, prec, err);
         if (rc != VIGEN_OK) return rc;
     }
-    return vigen_error_set(err, VIGEN_E_PRECISION, "cannot certify %ld digits of every entry of %s", (long)digits,
-                           t->name ? t->name : "the tableau");
+    return vigen_error_set(err, VIGEN_E_PRECISION, "%s: %s cannot be printed with %ld certified digits (it may lie "
+                           "exactly halfway between two %ld-digit decimals: try --digits %ld)",
+                           t->name ? t->name : "the tableau", failed_label, (long)digits, (long)digits,
+                           (long)(digits + 1));
 }
 
 static void json_string(vigen_strbuf *sb, const char *text)
@@ -220,7 +241,9 @@ int vigen_show_render(char **out, vigen_tableau *t, vigen_show_format fmt, slong
         }
         vigen_strbuf_append(&sb, "}\n");
     } else if (fmt == VIGEN_SHOW_LATEX) {
-        vigen_strbuf_printf(&sb, "%% %s (vigen)\n\\[\n", t->name);
+        vigen_strbuf_append(&sb, "% ");
+        for (const char *p = t->name; *p; p++) vigen_strbuf_appendn(&sb, (*p == '\n' || *p == '\r') ? " " : p, 1);
+        vigen_strbuf_append(&sb, " (vigen)\n\\[\n");
         latex_array(&sb, c, A, b, s);
         if (t->has_At) {
             vigen_strbuf_append(&sb, "\\qquad\n");
@@ -228,10 +251,14 @@ int vigen_show_render(char **out, vigen_tableau *t, vigen_show_format fmt, slong
         }
         vigen_strbuf_append(&sb, "\\]\n");
     } else {
-        vigen_strbuf_printf(&sb, "%s: %ld stage%s", t->name, (long)s, s == 1 ? "" : "s");
-        if (t->digits > 0) vigen_strbuf_printf(&sb, ", %ld certified digits", (long)t->digits);
-        if (t->generator) vigen_strbuf_printf(&sb, " (%s)", t->generator);
-        vigen_strbuf_append(&sb, "\n");
+        vigen_strbuf_printf(&sb, "%s: %ld stage%s\n", t->name, (long)s, s == 1 ? "" : "s");
+        /* metadata is what the file says about itself, not something show verifies */
+        if (t->digits > 0 || t->generator) {
+            vigen_strbuf_append(&sb, "the file states:");
+            if (t->digits > 0) vigen_strbuf_printf(&sb, " %ld certified digits", (long)t->digits);
+            if (t->generator) vigen_strbuf_printf(&sb, "%sgenerated by %s", t->digits > 0 ? ", " : " ", t->generator);
+            vigen_strbuf_append(&sb, "\n");
+        }
         if (t->description) vigen_strbuf_printf(&sb, "%s\n", t->description);
         if (t->source) vigen_strbuf_printf(&sb, "source: %s\n", t->source);
         if (t->basis) vigen_strbuf_printf(&sb, "basis:  %s\n", t->basis);
