@@ -71,6 +71,11 @@ grep -q "symplecticity" "$work/g.txt" && grep -q "contains 0" "$work/g.txt" || f
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['A'][0][0].startswith('0.5000') and d['At'][0][0].startswith('0.5000')" "$work/m.json" ||
   fail "midpoint rule from Example 2 (ii)"
 
+# exact expressions whose value is 0 (sin(pi), sqrt(2)^2 - 2): certified 0e-N, not a failure
+"$vigen" show "$src/tests/data/show/zero_exprs.lua" --format json --digits 20 >"$work/z.json" || fail "show of exact zeros"
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['c'] == ['0e-20'] and d['A'] == [['0e-20']], d" "$work/z.json" ||
+  fail "exact zeros: $(cat "$work/z.json")"
+
 # bad input: unknown format, missing file
 "$vigen" show "$gen" --format yaml >/dev/null 2>&1; [ $? = 2 ] || fail "unknown format should exit 2"
 "$vigen" show "$work/none.lua" >/dev/null 2>"$work/err"; [ $? = 2 ] && grep -q none.lua "$work/err" || fail "missing file"
