@@ -85,13 +85,27 @@ int vigen_show_entry_strings(vigen_tableau *t, slong digits, char ***c, char ***
                            (long)(digits + 1));
 }
 
+/* Length of the valid UTF-8 sequence at p, or 0 when it is not one. */
+static int utf8_length(const unsigned char *p)
+{
+    int n = p[0] < 0x80 ? 1 : (p[0] >> 5) == 0x6 ? 2 : (p[0] >> 4) == 0xE ? 3 : (p[0] >> 3) == 0x1E ? 4 : 0;
+    for (int k = 1; k < n; k++)
+        if ((p[k] & 0xC0) != 0x80) return 0;
+    return n;
+}
+
+/* A JSON string: escapes, and U+FFFD for bytes that are not UTF-8 (RFC 8259
+ * requires UTF-8; names come from untrusted files). */
 static void json_string(vigen_strbuf *sb, const char *text)
 {
     vigen_strbuf_append(sb, "\"");
-    for (const char *p = text; *p; p++) {
+    for (const unsigned char *p = (const unsigned char *)text; *p;) {
+        int n = utf8_length(p);
+        if (n == 0) { vigen_strbuf_append(sb, "\\ufffd"); p++; continue; }
         if (*p == '"' || *p == '\\') vigen_strbuf_printf(sb, "\\%c", *p);
-        else if ((unsigned char)*p < 0x20) vigen_strbuf_printf(sb, "\\u%04x", (unsigned)(unsigned char)*p);
-        else vigen_strbuf_appendn(sb, p, 1);
+        else if (*p < 0x20) vigen_strbuf_printf(sb, "\\u%04x", (unsigned)*p);
+        else vigen_strbuf_appendn(sb, (const char *)p, (size_t)n);
+        p += n;
     }
     vigen_strbuf_append(sb, "\"");
 }
