@@ -7,6 +7,7 @@
  * --against; the refinement loop; text and JSON output; the command line.
  */
 #include <math.h>
+#include <mpfr.h>
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
@@ -16,30 +17,41 @@ const char *vigen_check_usage =
     "usage: vigen check FILE [--against FILE2] [--max-order P] [--json] [--prec BITS]\n"
     "\n"
     "Certifies, in ball arithmetic, what the tableau in FILE (a tableau file or a spec\n"
-    "file) is: row sums, symplecticity, order (every bicoloured-tree condition up to P),\n"
-    "order for separable H and of each part alone, simplifying assumptions B, C, D, the\n"
-    "claims stated in the file (order = ..., symplectic = ...), and with --against every\n"
-    "entry that differs from FILE2 beyond the certified precision.  A condition holds\n"
-    "when its ball contains 0 (radius <= 2^-30), fails when the ball excludes 0, and is\n"
-    "reported undecided otherwise, after raising the precision as far as the entries allow.\n"
+    "file) is: row sums, symplecticity (every failing pair named), order (every\n"
+    "bicoloured-tree condition up to P), order for separable H and of each part alone,\n"
+    "simplifying assumptions B, C, D, the claims stated in the file (order = p: the\n"
+    "order is exactly p; symplectic = ...), and with --against every entry that differs\n"
+    "from FILE2 beyond the certified precision.\n"
+    "\n"
+    "A condition fails when its ball excludes 0 and holds when its ball contains 0:\n"
+    "  - rounded decimal entries (\"0.2113\") stand for balls of half a unit in their last\n"
+    "    digit; a condition on them that contains 0 holds within the precision of the\n"
+    "    data (the report shows the largest such radius);\n"
+    "  - on exact expressions (\"1/4 - sqrt(3)/6\") a condition holds only when its ball\n"
+    "    is tighter than 2^-(prec/2) of the size of its terms, with the same verdicts at\n"
+    "    two successive precisions; the precision is doubled until that is so (up to\n"
+    "    4096 bits, or twice the start);\n"
+    "  - anything else is reported undecided.\n"
+    "The starting precision covers the digits of every decimal and exact literal\n"
+    "(10^-45 included) plus 64 bits, at least 128.\n"
     "\n"
     "  --against FILE2  compare every entry with FILE2\n"
-    "  --max-order P    check orders 1..P (default 8, at most 12; raised to the claimed order + 1)\n"
+    "  --max-order P    check orders 1..P (default 8, at most 12; raised to the claimed\n"
+    "                   order + 1 so that a claim order = p can be confirmed)\n"
     "  --json           print one JSON object\n"
-    "  --prec BITS      starting working precision (default: adequate to the entries, >= 128)\n"
+    "  --prec BITS      starting working precision (default: adequate to the entries)\n"
     "\n"
-    "Exit status: 0 consistent and every stated claim holds, 1 something fails or cannot be\n"
-    "decided, 2 unreadable input or usage error.\n";
+    "Exit status: 0 consistent and every stated claim holds (and no entry differs from\n"
+    "FILE2), 1 something fails or cannot be decided, 2 unreadable input or usage error.\n";
 
 #define DEFAULT_MAX_ORDER 8
-#define AUTO_MAX_ORDER 10        /* claims raise max_order at most to this */
+#define DEFAULT_MAX_PREC 4096
 
 void vigen_check_options_init(vigen_check_options *opt)
 {
     memset(opt, 0, sizeof(*opt));
     opt->max_order = DEFAULT_MAX_ORDER;
-    opt->max_prec = 4096;
-    opt->tol_bits = 30;
+    opt->max_prec = DEFAULT_MAX_PREC;
     opt->spec_digits = 34;
 }
 
@@ -56,20 +68,103 @@ typedef struct {
     slong i, j;
 } entry;
 
+/* Which entries are exact expressions (1) rather than rounded decimals or
+ * balls without texts (0); row-major for the matrices, as the texts. */
+typedef struct {
+    slong s;
+    unsigned char *A, *At, *b, *bt, *c, *ct;
+    int part[2];                 /* every entry of (A, b) resp. (At, bt) is exact */
+    int part_c[2];               /* ... and of c resp. ct */
+    int any_exact, any_rounded;
+} exactness;
+
+static int text_exact(char **texts, slong k) { return texts != NULL && texts[k] != NULL && !vigen_decimal_is_rounded(texts[k]); }
+
+static void exactness_init(exactness *x, const vigen_tableau *t)
+{
+    slong s = t->s;
+    x->s = s;
+    x->A = flint_calloc((size_t)(s * s), 1);
+    x->At = flint_calloc((size_t)(s * s), 1);
+    x->b = flint_calloc((size_t)s, 1);
+    x->bt = flint_calloc((size_t)s, 1);
+    x->c = flint_calloc((size_t)s, 1);
+    x->ct = flint_calloc((size_t)s, 1);
+    int texts = t->c_text != NULL && t->A_text != NULL && t->b_text != NULL;
+    x->any_exact = 0;
+    x->any_rounded = !texts;
+    if (!texts) {
+        x->part[0] = x->part[1] = x->part_c[0] = x->part_c[1] = 0;
+        return;
+    }
+    int has_At = t->has_At, has_bt = t->has_At && t->has_bt, has_ct = t->has_At && t->has_ct;
+    for (slong k = 0; k < s * s; k++) {
+        x->A[k] = (unsigned char)text_exact(t->A_text, k);
+        x->At[k] = has_At ? (unsigned char)text_exact(t->At_text, k) : x->A[k];
+    }
+    for (slong i = 0; i < s; i++) {
+        x->b[i] = (unsigned char)text_exact(t->b_text, i);
+        x->bt[i] = has_bt ? (unsigned char)text_exact(t->bt_text, i) : x->b[i];
+        x->c[i] = (unsigned char)text_exact(t->c_text, i);
+        if (!has_At) x->ct[i] = x->c[i];
+        else if (has_ct) x->ct[i] = (unsigned char)text_exact(t->ct_text, i);
+        else {   /* ct computed from the row sums of At */
+            int all = 1;
+            for (slong j = 0; j < s; j++) all &= x->At[i * s + j];
+            x->ct[i] = (unsigned char)all;
+        }
+    }
+    for (int part = 0; part < 2; part++) {
+        const unsigned char *M = part ? x->At : x->A, *w = part ? x->bt : x->b, *c = part ? x->ct : x->c;
+        int all = 1, allc = 1;
+        for (slong k = 0; k < s * s; k++) all &= M[k];
+        for (slong i = 0; i < s; i++) all &= w[i];
+        for (slong i = 0; i < s; i++) allc &= c[i];
+        x->part[part] = all;
+        x->part_c[part] = all && allc;
+    }
+    /* what the file gives (texts present), exact or rounded */
+    char **lists[6] = {t->c_text, t->b_text, has_ct ? t->ct_text : NULL, has_bt ? t->bt_text : NULL, t->A_text,
+                       has_At ? t->At_text : NULL};
+    slong lens[6] = {s, s, s, s, s * s, s * s};
+    for (int l = 0; l < 6; l++)
+        for (slong k = 0; lists[l] && k < lens[l]; k++) {
+            if (lists[l][k] == NULL) continue;
+            if (vigen_decimal_is_rounded(lists[l][k])) x->any_rounded = 1;
+            else x->any_exact = 1;
+        }
+}
+
+static void exactness_clear(exactness *x)
+{
+    flint_free(x->A);
+    flint_free(x->At);
+    flint_free(x->b);
+    flint_free(x->bt);
+    flint_free(x->c);
+    flint_free(x->ct);
+}
+
 typedef struct {
     slong s, prec;
     int has_At, has_bt, has_ct;
+    const vigen_tableau *t;
     const arb_mat_struct *A, *At;
     arb_srcptr b, bt, c, ct;
-    mag_t tol;
-    slong n_undecided;
-    mag_t worst;                 /* largest radius among undecided balls */
+    const exactness *ex;
+    int strict;                  /* exact holds with a nonzero radius count as undecided */
+    int section;                 /* VIGEN_CHECK_SECT_* of the decisions being made */
+    vigen_check_holds *holds;    /* statistics per section (the report's) */
+    slong n_undecided, n_undecided_exact, n_unconfirmed;
+    ulong hash;                  /* of the sequence of verdicts */
 } ctx_t;
 
-static void ctx_init(ctx_t *cx, const vigen_tableau *t, int tol_bits)
+static void ctx_init(ctx_t *cx, const vigen_tableau *t, const exactness *ex, vigen_check_holds *holds)
 {
     cx->s = t->s;
     cx->prec = t->prec;
+    cx->t = t;
+    cx->ex = ex;
     cx->has_At = t->has_At;
     cx->has_bt = t->has_At && t->has_bt;
     cx->has_ct = t->has_At && t->has_ct;
@@ -79,36 +174,71 @@ static void ctx_init(ctx_t *cx, const vigen_tableau *t, int tol_bits)
     cx->bt = cx->has_bt ? t->bt : t->b;
     cx->c = t->c;
     cx->ct = t->has_At ? t->ct : t->c;   /* tableau.c fills ct with row sums of At when absent */
-    mag_init(cx->tol);
-    mag_one(cx->tol);
-    mag_mul_2exp_si(cx->tol, cx->tol, -tol_bits);
-    cx->n_undecided = 0;
-    mag_init(cx->worst);
+    cx->strict = 0;
+    cx->section = VIGEN_CHECK_SECT_ROWSUM;
+    cx->holds = holds;
+    cx->n_undecided = cx->n_undecided_exact = cx->n_unconfirmed = 0;
+    cx->hash = 1469598103934665603ULL;
 }
 
-static void ctx_clear(ctx_t *cx)
-{
-    mag_clear(cx->tol);
-    mag_clear(cx->worst);
-}
+/* |midpoint of x|, rounded up: the size of a term for the scales below (the
+ * radius is left out, so that a ball much wider than its terms shows it). */
+static void mid_mag(mag_t m, const arb_t x) { arf_get_mag(m, arb_midref(x)); }
 
-/* The three-valued verdict on a ball r = left side - right side. */
-static int verdict(const mag_t tol, const arb_t r)
+/* The verdict on a ball r = left side - right side (see check.h).  exact: every
+ * entry the condition involves is exact; scale: an upper bound of the size of
+ * its terms (exact conditions hold only with radius <= 2^-(prec/2) scale). */
+static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale, int *unconfirmed)
 {
+    *unconfirmed = 0;
     if (!arb_is_finite(r)) return UNDECIDED;
     if (!arb_contains_zero(r)) return FAILS;
-    return mag_cmp(arb_radref(r), tol) <= 0 ? HOLDS : UNDECIDED;
+    if (!exact || mag_is_zero(arb_radref(r))) return HOLDS;
+    mag_t thr;
+    mag_init(thr);
+    mag_mul_2exp_si(thr, scale, -(cx->prec / 2));
+    int tight = mag_cmp(arb_radref(r), thr) <= 0;
+    mag_clear(thr);
+    if (!tight || cx->strict) return UNDECIDED;
+    *unconfirmed = 1;
+    return HOLDS;
 }
 
-/* The verdict, counting undecided balls for the refinement loop. */
-static int decide(ctx_t *cx, const arb_t r)
+/* The verdict, with the bookkeeping of the refinement loop and the report. */
+static int decide(ctx_t *cx, const arb_t r, int exact, const mag_t scale)
 {
-    int v = verdict(cx->tol, r);
-    if (v != UNDECIDED) return v;
-    cx->n_undecided++;
-    if (arb_is_finite(r)) mag_max(cx->worst, cx->worst, arb_radref(r));
-    else mag_inf(cx->worst);
-    return UNDECIDED;
+    int unconfirmed;
+    int v = verdict(cx, r, exact, scale, &unconfirmed);
+    cx->hash = (cx->hash ^ (ulong)(v + 1)) * 1099511628211ULL;
+    cx->n_unconfirmed += unconfirmed;
+    vigen_check_holds *h = cx->holds + cx->section;
+    if (v == HOLDS) {
+        if (exact) h->exact++;
+        else {
+            h->data++;
+            mag_max(h->radius, h->radius, arb_radref(r));
+            h->wide += mag_cmp(arb_radref(r), scale) > 0;
+        }
+    } else if (v == UNDECIDED) {
+        cx->n_undecided++;
+        cx->n_undecided_exact += exact != 0;
+    }
+    return v;
+}
+
+/* decide() with the scale |a| + |b| of a comparison a = b. */
+static int decide2(ctx_t *cx, const arb_t r, int exact, const arb_t a, const arb_t b)
+{
+    mag_t m, t;
+    mag_init(m);
+    mag_init(t);
+    mid_mag(m, a);
+    mid_mag(t, b);
+    mag_add(m, m, t);
+    int v = decide(cx, r, exact, m);
+    mag_clear(m);
+    mag_clear(t);
+    return v;
 }
 
 static int tri_of(slong fail, slong undecided)
@@ -126,16 +256,62 @@ static entry canon(const ctx_t *cx, entry e)
 
 static int entry_eq(entry x, entry y) { return x.mat == y.mat && x.i == y.i && x.j == y.j; }
 
+static int entry_exact(const ctx_t *cx, entry e)
+{
+    slong s = cx->s;
+    switch (e.mat) {
+    case M_A: return cx->ex->A[e.i * s + e.j];
+    case M_AT: return cx->ex->At[e.i * s + e.j];
+    case M_B: return cx->ex->b[e.i];
+    case M_BT: return cx->ex->bt[e.i];
+    case M_C: return cx->ex->c[e.i];
+    default: return cx->ex->ct[e.i];
+    }
+}
+
+/* The text of a canonical entry as the file gives it, or NULL. */
+static const char *entry_text(const ctx_t *cx, entry e)
+{
+    const vigen_tableau *t = cx->t;
+    slong s = cx->s;
+    char **texts;
+    slong k = e.i;
+    switch (e.mat) {
+    case M_A: texts = t->A_text; k = e.i * s + e.j; break;
+    case M_AT: texts = t->At_text; k = e.i * s + e.j; break;
+    case M_B: texts = t->b_text; break;
+    case M_BT: texts = t->bt_text; break;
+    case M_C: texts = t->c_text; break;
+    default: texts = cx->has_ct ? t->ct_text : NULL; break;
+    }
+    return texts ? texts[k] : NULL;
+}
+
+/* Up to two entries replaced by other values. */
 typedef struct {
-    entry e;                     /* canonical */
-    arb_srcptr value;
+    int n;
+    entry e[2];                  /* canonical */
+    arb_srcptr value[2];
 } override;
+
+static override ov1(entry e, arb_srcptr v)
+{
+    override o;
+    o.n = 1;
+    o.e[0] = e;
+    o.value[0] = v;
+    o.e[1] = e;
+    o.value[1] = v;
+    return o;
+}
 
 static arb_srcptr get(const ctx_t *cx, int mat, slong i, slong j, const override *ov)
 {
     entry e = {mat, i, (mat == M_A || mat == M_AT) ? j : 0};
     e = canon(cx, e);
-    if (ov && entry_eq(e, ov->e)) return ov->value;
+    if (ov)
+        for (int k = 0; k < ov->n; k++)
+            if (entry_eq(e, ov->e[k])) return ov->value[k];
     switch (e.mat) {
     case M_A: return arb_mat_entry(cx->A, i, j);
     case M_AT: return arb_mat_entry(cx->At, i, j);
@@ -211,6 +387,63 @@ static void cond_eval(arb_t r, const ctx_t *cx, const cond *c, const override *o
     arb_clear(e);
 }
 
+/* An upper bound of the size of the terms of the condition (the scale of
+ * its tightness test). */
+static void cond_scale(mag_t m, const ctx_t *cx, const cond *c)
+{
+    slong s = cx->s, i = c->i, j = c->j;
+    mag_t t, u;
+    mag_init(t);
+    mag_init(u);
+    mag_zero(m);
+    switch (c->type) {
+    case C_ROWSUM_A:
+    case C_ROWSUM_AT: {
+        int mt = c->type == C_ROWSUM_A ? M_A : M_AT;
+        for (slong k = 0; k < s; k++) {
+            mid_mag(t, get(cx, mt, i, k, NULL));
+            mag_add(m, m, t);
+        }
+        mid_mag(t, get(cx, mt == M_A ? M_C : M_CT, i, 0, NULL));
+        mag_add(m, m, t);
+        break;
+    }
+    case C_SUM_B:
+    case C_SUM_BT:
+        for (slong k = 0; k < s; k++) {
+            mid_mag(t, get(cx, c->type == C_SUM_B ? M_B : M_BT, k, 0, NULL));
+            mag_add(m, m, t);
+        }
+        mag_one(t);
+        mag_add(m, m, t);
+        break;
+    case C_BT_EQ_B:
+        mid_mag(m, get(cx, M_BT, i, 0, NULL));
+        mid_mag(t, get(cx, M_B, i, 0, NULL));
+        mag_add(m, m, t);
+        break;
+    default: {
+        mag_t bi, bj;
+        mag_init(bi);
+        mag_init(bj);
+        mid_mag(bi, get(cx, M_B, i, 0, NULL));
+        mid_mag(bj, get(cx, M_BT, j, 0, NULL));
+        mid_mag(t, get(cx, M_AT, i, j, NULL));
+        mag_mul(m, bi, t);
+        mid_mag(t, get(cx, M_A, j, i, NULL));
+        mag_mul(u, bj, t);
+        mag_add(m, m, u);
+        mag_mul(u, bi, bj);
+        mag_add(m, m, u);
+        mag_clear(bi);
+        mag_clear(bj);
+        break;
+    }
+    }
+    mag_clear(t);
+    mag_clear(u);
+}
+
 /* The canonical entries a condition involves (at most s + 1 or 4). */
 static slong cond_entries(entry *out, const ctx_t *cx, const cond *c)
 {
@@ -250,6 +483,28 @@ static int cond_involves(const ctx_t *cx, const cond *c, entry e)
     for (slong k = 0; k < n && !hit; k++) hit = entry_eq(list[k], e);
     if (list != buf) flint_free(list);
     return hit;
+}
+
+/* Every entry the condition involves is exact. */
+static int cond_exact(const ctx_t *cx, const cond *c)
+{
+    entry buf[4];
+    entry *list = cond_is_rowsum(c) ? flint_malloc(sizeof(entry) * (size_t)(cx->s + 1)) : buf;
+    slong n = cond_entries(list, cx, c);
+    int all = 1;
+    for (slong k = 0; k < n && all; k++) all = entry_exact(cx, list[k]);
+    if (list != buf) flint_free(list);
+    return all;
+}
+
+static int cond_decide(ctx_t *cx, const cond *c)
+{
+    mag_t m;
+    mag_init(m);
+    cond_scale(m, cx, c);
+    int v = decide(cx, c->r, cond_exact(cx, c), m);
+    mag_clear(m);
+    return v;
 }
 
 static const char *cond_kind_words(int type)
@@ -314,14 +569,86 @@ static slong digits_to_separate(const arb_t x, const arb_t y, slong prec)
     return n > 45 ? 45 : n;
 }
 
-/* Up to `digits` certain digits; the radius is shown when the ball is too
- * wide for them ("[0.21 +/- 5.01e-4]", "[+/- 1.01e-38]"). */
+/* d significant digits of x, rounded down (up = 0) or up (up = 1). */
+static char *arf_text(const arf_t x, slong d, int up)
+{
+    if (arf_is_zero(x)) return vigen_strdup("0");
+    mpfr_t m;
+    slong bits = arf_bits(x);
+    mpfr_init2(m, bits < 2 ? 2 : bits);
+    arf_get_mpfr(m, x, MPFR_RNDN);   /* exact: m has the bits of x */
+    char fmt[32];
+    snprintf(fmt, sizeof(fmt), "%%.%ldR%cg", (long)d, up ? 'U' : 'D');
+    char *out = NULL;
+    char *r;
+    if (mpfr_asprintf(&out, fmt, m) >= 0) {
+        r = vigen_strdup(out);
+        mpfr_free_str(out);
+    } else r = vigen_strdup("?");
+    mpfr_clear(m);
+    return r;
+}
+
+/* The interval [lo, hi] containing x, rounded outward, with enough digits to
+ * show its width (3 .. digits). */
+static char *interval_str(const arb_t x, slong digits)
+{
+    slong acc = arb_rel_accuracy_bits(x);
+    slong d = acc > 0 ? (slong)(acc * 0.30103) + 2 : 3;
+    if (d < 3) d = 3;
+    if (d > digits && digits >= 3) d = digits;
+    arf_t lo, hi;
+    arf_init(lo);
+    arf_init(hi);
+    arb_get_lbound_arf(lo, x, 256);
+    arb_get_ubound_arf(hi, x, 256);
+    char *l = arf_text(lo, d, 0), *h = arf_text(hi, d, 1);
+    char *r = vigen_strdup_printf("[%s, %s]", l, h);
+    free(l);
+    free(h);
+    arf_clear(lo);
+    arf_clear(hi);
+    return r;
+}
+
+/* For messages: the `digits` digits of x when they are certain, otherwise the
+ * interval [lo, hi] that contains x (rounded outward), so that a reader sees
+ * at once whether the ball contains 0. */
 static char *ball_str(const arb_t x, slong digits)
 {
+    if (!arb_is_finite(x)) return vigen_strdup("[not finite]");
     int narrow = arb_is_exact(x) || arb_rel_accuracy_bits(x) >= (slong)(digits * 3.33);
-    char *s = arb_get_str(x, digits, narrow ? ARB_STR_NO_RADIUS : 0);
+    if (!narrow) return interval_str(x, digits);
+    char *s = arb_get_str(x, digits, ARB_STR_NO_RADIUS);
     char *r = vigen_strdup(s);
     flint_free(s);
+    return r;
+}
+
+/* For JSON: arb's "[mid +/- rad]" with the midpoint always shown. */
+static char *ball_json_str(const arb_t x, slong digits)
+{
+    int narrow = arb_is_exact(x) || arb_rel_accuracy_bits(x) >= (slong)(digits * 3.33);
+    if (!narrow) {
+        /* the midpoint to a few digits beyond the radius, not binary noise */
+        slong acc = arb_rel_accuracy_bits(x);
+        slong d = acc > 0 ? (slong)(acc * 0.30103) + 3 : 3;
+        if (d < digits) digits = d;
+    }
+    char *s = arb_get_str(x, digits, narrow ? ARB_STR_NO_RADIUS : ARB_STR_MORE);
+    char *r = vigen_strdup(s);
+    flint_free(s);
+    return r;
+}
+
+/* Radius (an upper bound) as a short decimal. */
+static char *mag_str(const mag_t m)
+{
+    arf_t x;
+    arf_init(x);
+    arf_set_mag(x, m);
+    char *r = arf_text(x, 2, 1);
+    arf_clear(x);
     return r;
 }
 
@@ -339,12 +666,14 @@ static char *entry_name(entry e)
 static int solve_for(arb_t x, const ctx_t *cx, const cond *c, entry e)
 {
     slong prec = cx->prec;
-    arb_srcptr x0 = entry_value(cx, e);
-    arb_t r0, rp, rm, xp, alpha, beta, disc, t;
-    arb_init(r0); arb_init(rp); arb_init(rm); arb_init(xp);
+    arb_t x0, r0, rp, rm, xp, alpha, beta, disc, t;
+    arb_init(x0); arb_init(r0); arb_init(rp); arb_init(rm); arb_init(xp);
     arb_init(alpha); arb_init(beta); arb_init(disc); arb_init(t);
-    override ov = {e, xp};
-    cond_eval(r0, cx, c, NULL);
+    /* the entry is the unknown: expand around its midpoint, taken as exact, so
+     * that the value found carries the radii of the other entries only */
+    arb_set_arf(x0, arb_midref(entry_value(cx, e)));
+    override ov0 = ov1(e, x0), ov = ov1(e, xp);
+    cond_eval(r0, cx, c, &ov0);
     arb_add_ui(xp, x0, 1, prec);
     cond_eval(rp, cx, c, &ov);
     arb_sub_ui(xp, x0, 1, prec);
@@ -378,15 +707,157 @@ static int solve_for(arb_t x, const ctx_t *cx, const cond *c, entry e)
             ok = arb_is_finite(x);
         }
     }
-    arb_clear(r0); arb_clear(rp); arb_clear(rm); arb_clear(xp);
+    arb_clear(x0); arb_clear(r0); arb_clear(rp); arb_clear(rm); arb_clear(xp);
     arb_clear(alpha); arb_clear(beta); arb_clear(disc); arb_clear(t);
+    return ok;
+}
+
+/* The tableau at the midpoints of its balls (exact values), for the typo
+ * diagnosis. */
+typedef struct {
+    arb_mat_t A, At;
+    arb_ptr b, bt, c, ct;
+    ctx_t cx;
+} midpoints;
+
+static void mid_vec(arb_ptr out, arb_srcptr x, slong s)
+{
+    for (slong i = 0; i < s; i++) arb_set_arf(out + i, arb_midref(x + i));
+}
+
+static void midpoints_init(midpoints *m, const ctx_t *cx)
+{
+    slong s = cx->s;
+    arb_mat_init(m->A, s, s);
+    arb_mat_init(m->At, s, s);
+    m->b = _arb_vec_init(s);
+    m->bt = _arb_vec_init(s);
+    m->c = _arb_vec_init(s);
+    m->ct = _arb_vec_init(s);
+    for (slong i = 0; i < s; i++)
+        for (slong j = 0; j < s; j++) {
+            arb_set_arf(arb_mat_entry(m->A, i, j), arb_midref(arb_mat_entry(cx->A, i, j)));
+            arb_set_arf(arb_mat_entry(m->At, i, j), arb_midref(arb_mat_entry(cx->At, i, j)));
+        }
+    mid_vec(m->b, cx->b, s);
+    mid_vec(m->bt, cx->bt, s);
+    mid_vec(m->c, cx->c, s);
+    mid_vec(m->ct, cx->ct, s);
+    m->cx = *cx;
+    m->cx.A = m->A;
+    m->cx.At = m->At;
+    m->cx.b = m->b;
+    m->cx.bt = m->bt;
+    m->cx.c = m->c;
+    m->cx.ct = m->ct;
+}
+
+static void midpoints_clear(midpoints *m)
+{
+    slong s = m->cx.s;
+    arb_mat_clear(m->A);
+    arb_mat_clear(m->At);
+    _arb_vec_clear(m->b, s);
+    _arb_vec_clear(m->bt, s);
+    _arb_vec_clear(m->c, s);
+    _arb_vec_clear(m->ct, s);
+}
+
+/* Encloses condition c over the balls of its entries without the dependency
+ * problem of plain ball arithmetic (an entry that occurs twice varies once):
+ *   r(mid) +- (sum_u |dr/du| rad_u + 2 (sum_u rad_u)^2),
+ * r and its derivatives taken at the midpoints of every entry u.  This is a
+ * rigorous enclosure for these conditions, which are polynomials of degree <= 2
+ * in the entries with coefficients of size 1 (the central difference gives
+ * dr/du exactly, and the quadratic remainder is at most 2 (sum_u rad_u)^2).
+ * When e is not NULL, entry e takes the value fix instead (midpoint f,
+ * radius rad(fix)). */
+static void cond_enclose(arb_t out, const ctx_t *cx, const ctx_t *mx, const cond *c, const entry *e,
+                         const arb_t fix)
+{
+    slong prec = cx->prec;
+    arb_t f, up, dn, u;
+    arb_init(f);
+    arb_init(up);
+    arb_init(dn);
+    arb_init(u);
+    override ov = {0, {{0, 0, 0}, {0, 0, 0}}, {NULL, NULL}};
+    if (e) {
+        arb_set_arf(f, arb_midref(fix));
+        ov = ov1(*e, f);
+    }
+    cond_eval(out, mx, c, &ov);
+    entry buf[4];
+    entry *list = cond_is_rowsum(c) ? flint_malloc(sizeof(entry) * (size_t)(cx->s + 1)) : buf;
+    slong n = cond_entries(list, cx, c);
+    mag_t tol, sum, g, rad;
+    mag_init(tol);
+    mag_init(sum);
+    mag_init(g);
+    mag_init(rad);
+    for (slong k = 0; k < n; k++) {
+        int dup = 0;
+        for (slong q = 0; q < k; q++) dup |= entry_eq(list[q], list[k]);
+        if (dup) continue;
+        int is_e = e && entry_eq(list[k], *e);
+        mag_set(rad, arb_radref(is_e ? fix : entry_value(cx, list[k])));
+        if (mag_is_zero(rad)) continue;
+        /* dr/du by a central difference (exact: r is at most quadratic in u) */
+        override o2 = ov;
+        int slot = is_e ? 0 : o2.n;
+        o2.e[slot] = list[k];
+        if (!is_e) o2.n++;
+        arb_srcptr base = is_e ? f : get(mx, list[k].mat, list[k].i, list[k].j, NULL);
+        arb_add_ui(u, base, 1, prec);
+        o2.value[slot] = u;
+        cond_eval(up, mx, c, &o2);
+        arb_sub_ui(u, base, 1, prec);
+        o2.value[slot] = u;
+        cond_eval(dn, mx, c, &o2);
+        arb_sub(up, up, dn, prec);
+        arb_mul_2exp_si(up, up, -1);
+        arb_get_mag(g, up);
+        mag_mul(g, g, rad);
+        mag_add(tol, tol, g);
+        mag_add(sum, sum, rad);
+    }
+    mag_mul(sum, sum, sum);
+    mag_mul_2exp_si(sum, sum, 1);
+    mag_add(tol, tol, sum);
+    arb_add_error_mag(out, tol);
+    if (list != buf) flint_free(list);
+    mag_clear(tol);
+    mag_clear(sum);
+    mag_clear(g);
+    mag_clear(rad);
+    arb_clear(f);
+    arb_clear(up);
+    arb_clear(dn);
+    arb_clear(u);
+}
+
+/* Is condition c consistent with the data once entry e is given the value
+ * fix (midpoint f, radius rho)?  Its enclosure over the data's balls (with e
+ * in [f - rho, f + rho]) must contain 0. */
+static int consistent_with_data(const ctx_t *cx, const ctx_t *mx, const cond *c, entry e, const arb_t fix)
+{
+    arb_t r;
+    arb_init(r);
+    cond_enclose(r, cx, mx, c, &e, fix);
+    int ok = arb_is_finite(r) && arb_contains_zero(r);
+    arb_clear(r);
     return ok;
 }
 
 /* Among the conditions with in_scope[k], the failed ones all involve exactly
  * one entry whose change can satisfy every in-scope condition involving it?
- * Returns 1 with *culprit and fix when that entry is unique. */
-static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, cond *conds, slong n, const int *in_scope)
+ * Returns 1 with *culprit and fix when that entry is unique.  The value asked
+ * for is solved with the entry as an exact unknown around its midpoint (its
+ * radius comes from the other entries only), and the candidate must make every
+ * in-scope condition involving it consistent with the data (see
+ * consistent_with_data). */
+static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, const ctx_t *mx, cond *conds, slong n,
+                    const int *in_scope)
 {
     slong first = -1;
     for (slong k = 0; k < n; k++)
@@ -406,9 +877,8 @@ static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, cond *conds, slong n, 
         if (all) cand[m++] = cand[a];
     }
     int found = 0;
-    arb_t x, r;
+    arb_t x;
     arb_init(x);
-    arb_init(r);
     for (slong a = 0; a < m; a++) {
         /* the value asked by the first failed condition that can be solved */
         int solved = 0;
@@ -416,12 +886,10 @@ static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, cond *conds, slong n, 
             if (in_scope[k] && conds[k].status == FAILS) solved = solve_for(x, cx, conds + k, cand[a]);
         if (!solved) continue;
         /* every in-scope condition involving the entry must then hold */
-        override ov = {cand[a], x};
         int ok = 1;
         for (slong k = 0; k < n && ok; k++) {
             if (!in_scope[k] || !cond_involves(cx, conds + k, cand[a])) continue;
-            cond_eval(r, cx, conds + k, &ov);
-            ok = verdict(cx->tol, r) == HOLDS;
+            ok = consistent_with_data(cx, mx, conds + k, cand[a], x);
         }
         if (!ok) continue;
         found++;
@@ -431,7 +899,6 @@ static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, cond *conds, slong n, 
         }
     }
     arb_clear(x);
-    arb_clear(r);
     flint_free(cand);
     return found == 1;
 }
@@ -455,9 +922,23 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
 
     rep->row_fail = rep->row_undecided = rep->row_total = 0;
     rep->sym_fail = rep->sym_undecided = rep->sym_total = 0;
+    /* the tableau at its midpoints: for the enclosures of conditions on
+     * rounded entries and for the typo diagnosis */
+    midpoints mid;
+    midpoints_init(&mid, cx);
+    const ctx_t *mx = &mid.cx;
+    arb_t lin;
+    arb_init(lin);
     for (slong k = 0; k < n; k++) {
         cond_eval(conds[k].r, cx, conds + k, NULL);
-        conds[k].status = decide(cx, conds[k].r);
+        if (!cond_exact(cx, conds + k)) {
+            /* an entry that occurs twice (b_i in b_i a_ii + b_i a_ii - b_i b_i)
+             * varies once: intersect with the second-order enclosure */
+            cond_enclose(lin, cx, mx, conds + k, NULL, NULL);
+            if (arb_is_finite(lin) && arb_is_finite(conds[k].r)) arb_intersection(conds[k].r, conds[k].r, lin, cx->prec);
+        }
+        cx->section = cond_is_rowsum(conds + k) ? VIGEN_CHECK_SECT_ROWSUM : VIGEN_CHECK_SECT_SYMPLECTIC;
+        conds[k].status = cond_decide(cx, conds + k);
         slong *fail = cond_is_rowsum(conds + k) ? &rep->row_fail : &rep->sym_fail;
         slong *und = cond_is_rowsum(conds + k) ? &rep->row_undecided : &rep->sym_undecided;
         slong *tot = cond_is_rowsum(conds + k) ? &rep->row_total : &rep->sym_total;
@@ -485,20 +966,21 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
     int diagnosed = 0;
     if (rep->row_fail + rep->sym_fail > 0) {
         for (slong k = 0; k < n; k++) scope[k] = 1;
-        diagnosed = diagnose(&culprit, fix, cx, conds, n, scope);
+        diagnosed = diagnose(&culprit, fix, cx, mx, conds, n, scope);
         if (!diagnosed && cx->has_bt) {
             for (slong k = 0; k < n; k++) scope[k] = conds[k].type != C_BT_EQ_B;
-            diagnosed = diagnose(&culprit, fix, cx, conds, n, scope);
+            diagnosed = diagnose(&culprit, fix, cx, mx, conds, n, scope);
         }
         if (!diagnosed && rep->row_fail > 0) {
             for (slong k = 0; k < n; k++) scope[k] = cond_is_rowsum(conds + k);
-            diagnosed = diagnose(&culprit, fix, cx, conds, n, scope);
+            diagnosed = diagnose(&culprit, fix, cx, mx, conds, n, scope);
         }
     }
-    /* symplecticity failures are problems when the file claims symplecticity
-     * and the claim fails (for general and for separable H) */
-    int list_symplectic = claim_symplectic == 1 && rep->symplectic != VIGEN_CHECK_YES &&
-                          rep->symplectic_separable != VIGEN_CHECK_YES;
+    /* every failed or undecided pair is a problem; bt != b is one when the
+     * file claims symplecticity and the claim fails (a splitting method
+     * written as a PRK pair has bt != b by design) */
+    int list_bt = claim_symplectic == 1 && rep->symplectic != VIGEN_CHECK_YES &&
+                  rep->symplectic_separable != VIGEN_CHECK_YES;
 
     if (diagnosed) {
         /* one problem per kind of failed condition, each naming the entry */
@@ -520,7 +1002,10 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
             vigen_strbuf_append(&words, seen_words[q]);
         }
         slong digits = digits_to_separate(entry_value(cx, culprit), fix, cx->prec);
-        char *v = ball_str(entry_value(cx, culprit), digits), *f = ball_str(fix, digits);
+        const char *text = entry_text(cx, culprit);
+        /* a rounded decimal is shown as the file gives it */
+        char *v = text && vigen_decimal_is_rounded(text) ? vigen_strdup(text) : ball_str(entry_value(cx, culprit), digits);
+        char *f = ball_str(fix, digits);
         for (slong k = 0; k < n; k++) {
             if (!scope[k] || conds[k].status != FAILS) continue;
             int kind = cond_is_rowsum(conds + k) ? VIGEN_PROBLEM_ROWSUM : VIGEN_PROBLEM_SYMPLECTIC;
@@ -546,30 +1031,33 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
     for (slong k = 0; k < n; k++) {
         cond *c = conds + k;
         if (c->status == HOLDS) continue;
-        if (diagnosed && scope[k] && c->status == FAILS) continue;
         int rowsum = cond_is_rowsum(c);
-        if (!rowsum && !list_symplectic) continue;
+        if (c->type == C_BT_EQ_B && !list_bt) continue;
         vigen_check_problem *p = problem_new(rep, rowsum ? VIGEN_PROBLEM_ROWSUM : VIGEN_PROBLEM_SYMPLECTIC);
         p->undecided = c->status == UNDECIDED;
         p->has_value = p->has_expected = 1;
         cond_parts(p->value, p->expected, cx, c, NULL);
+        if (c->type == C_SYMP) arb_set(p->value, c->r);   /* the enclosure decided on (expected 0) */
         slong digits = digits_to_separate(p->value, p->expected, cx->prec);
         char *v = ball_str(p->value, digits), *e = ball_str(p->expected, digits);
         char *d = ball_str(c->r, 6);
         const char *verdict = p->undecided ? "undecided at this precision: " : "";
+        /* "defect 0.0100" or "defect in [0.00500, 0.0150]": the reader sees whether it excludes 0 */
+        const char *in = d[0] == '[' ? "in " : "";
         switch (c->type) {
         case C_ROWSUM_A:
         case C_ROWSUM_AT:
             p->matrix = c->type == C_ROWSUM_A ? "A" : "At";
             p->row = c->i + 1;
-            p->message = vigen_strdup_printf("%srow %ld of %s sums to %s but %s[%ld] = %s (defect %s)", verdict,
-                                             (long)p->row, p->matrix, v, c->type == C_ROWSUM_A ? "c" : "ct",
-                                             (long)p->row, e, d);
+            p->message = vigen_strdup_printf("%srow %ld of %s sums to %s%s but %s[%ld] = %s (defect %s%s)", verdict,
+                                             (long)p->row, p->matrix, v[0] == '[' ? "a value in " : "", v,
+                                             c->type == C_ROWSUM_A ? "c" : "ct", (long)p->row, e, in, d);
             break;
         case C_SUM_B:
         case C_SUM_BT:
             p->matrix = c->type == C_SUM_B ? "b" : "bt";
-            p->message = vigen_strdup_printf("%ssum of %s is %s, not 1 (defect %s)", verdict, p->matrix, v, d);
+            p->message = vigen_strdup_printf("%ssum of %s is %s%s, not 1 (defect %s%s)", verdict, p->matrix,
+                                             v[0] == '[' ? "in " : "", v, in, d);
             break;
         case C_BT_EQ_B:
             p->matrix = "bt";
@@ -581,9 +1069,10 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
             p->matrix = cx->has_At ? "At" : "A";
             p->row = c->i + 1;
             p->col = c->j + 1;
-            p->message = vigen_strdup_printf("%spair (%ld, %ld): b_i %s_ij + %s_j a_ji - b_i %s_j = %s, not 0",
-                                             verdict, (long)p->row, (long)p->col, cx->has_At ? "at" : "a",
-                                             cx->has_bt ? "bt" : "b", cx->has_bt ? "bt" : "b", d);
+            p->message = vigen_strdup_printf("%spair (%ld, %ld): b_i %s_ij + %s_j a_ji - b_i %s_j %s %s%s", verdict,
+                                             (long)p->row, (long)p->col, cx->has_At ? "at" : "a",
+                                             cx->has_bt ? "bt" : "b", cx->has_bt ? "bt" : "b",
+                                             d[0] == '[' ? "is in" : "=", d, p->undecided ? "" : ", not 0");
             break;
         }
         free(v);
@@ -592,6 +1081,8 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
     }
 
     arb_clear(fix);
+    arb_clear(lin);
+    midpoints_clear(&mid);
     flint_free(scope);
     for (slong k = 0; k < n; k++) arb_clear(conds[k].r);
     flint_free(conds);
@@ -691,6 +1182,7 @@ static int check_orders(vigen_check_report *rep, ctx_t *cx, int P, vigen_error *
             }
 
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_reset(&rep->orders[f]);
+    cx->section = VIGEN_CHECK_SECT_ORDER;
 
     for (int n = 1; n <= P; n++) {
         vigen_forest_iter it;
@@ -731,8 +1223,10 @@ static int check_orders(vigen_check_report *rep, ctx_t *cx, int P, vigen_error *
             arb_div_ui(inv, inv, gamma, prec);
             for (int c = 0; c < 2; c++) {
                 arb_sub(r, val[c], inv, prec);
-                int st = decide(cx, r);
                 int flags = vigen_forest_tree_flags(&ts, c, ids, k);
+                /* a monochromatic tree involves one part only */
+                int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
+                int st = decide2(cx, r, exact, val[c], inv);
                 orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, &ts, c, ids, k, val[c], inv);
                 if (flags & VIGEN_TREE_SEPARABLE)
                     orders_record(&rep->orders[VIGEN_CHECK_SEPARABLE], n, st, &ts, c, ids, k, val[c], inv);
@@ -772,6 +1266,7 @@ typedef struct {
     const arb_mat_struct *A;
     arb_srcptr b, c;
     arb_ptr cp;                  /* cp[k*s + i] = c_i^k, k = 0..cap */
+    int exact;                   /* every entry of (c, A, b) of the part is exact */
 } part_t;
 
 static int worst_status(int a, int b)
@@ -781,20 +1276,52 @@ static int worst_status(int a, int b)
     return HOLDS;
 }
 
+/* m += |x| |y| |z| (z may be NULL) */
+static void mag_addmul3(mag_t m, const arb_t x, const arb_t y, const arb_t z)
+{
+    mag_t t, u;
+    mag_init(t);
+    mag_init(u);
+    mid_mag(t, x);
+    mid_mag(u, y);
+    mag_mul(t, t, u);
+    if (z) {
+        mid_mag(u, z);
+        mag_mul(t, t, u);
+    }
+    mag_add(m, m, t);
+    mag_clear(t);
+    mag_clear(u);
+}
+
+static void mag_add_arb(mag_t m, const arb_t x)
+{
+    mag_t t;
+    mag_init(t);
+    mid_mag(t, x);
+    mag_add(m, m, t);
+    mag_clear(t);
+}
+
 /* B(k): sum_i b_i c_i^(k-1) = 1/k */
 static int assumption_B(part_t *p, int k)
 {
     slong s = p->cx->s, prec = p->cx->prec;
     arb_t r, q;
+    mag_t m;
     arb_init(r);
     arb_init(q);
+    mag_init(m);
     arb_dot(r, NULL, 0, p->b, 1, p->cp + (k - 1) * s, 1, s, prec);
     arb_one(q);
     arb_div_ui(q, q, (ulong)k, prec);
     arb_sub(r, r, q, prec);
-    int st = decide(p->cx, r);
+    for (slong i = 0; i < s; i++) mag_addmul3(m, p->b + i, p->cp + (k - 1) * s + i, NULL);
+    mag_add_arb(m, q);
+    int st = decide(p->cx, r, p->exact, m);
     arb_clear(r);
     arb_clear(q);
+    mag_clear(m);
     return st;
 }
 
@@ -804,16 +1331,22 @@ static int assumption_C(part_t *p, int k)
     slong s = p->cx->s, prec = p->cx->prec;
     int st = HOLDS;
     arb_t r, q;
+    mag_t m;
     arb_init(r);
     arb_init(q);
+    mag_init(m);
     for (slong i = 0; i < s; i++) {
         arb_dot(r, NULL, 0, arb_mat_entry(p->A, i, 0), 1, p->cp + (k - 1) * s, 1, s, prec);
         arb_div_ui(q, p->cp + k * s + i, (ulong)k, prec);
         arb_sub(r, r, q, prec);
-        st = worst_status(st, decide(p->cx, r));
+        mag_zero(m);
+        for (slong j = 0; j < s; j++) mag_addmul3(m, arb_mat_entry(p->A, i, j), p->cp + (k - 1) * s + j, NULL);
+        mag_add_arb(m, q);
+        st = worst_status(st, decide(p->cx, r, p->exact, m));
     }
     arb_clear(r);
     arb_clear(q);
+    mag_clear(m);
     return st;
 }
 
@@ -823,25 +1356,36 @@ static int assumption_D(part_t *p, int k)
     slong s = p->cx->s, prec = p->cx->prec;
     int st = HOLDS;
     arb_t r, q, u;
+    mag_t m;
     arb_init(r);
     arb_init(q);
     arb_init(u);
+    mag_init(m);
     for (slong j = 0; j < s; j++) {
         arb_zero(r);
+        mag_zero(m);
         for (slong i = 0; i < s; i++) {
             arb_mul(u, p->b + i, p->cp + (k - 1) * s + i, prec);
             arb_addmul(r, u, arb_mat_entry(p->A, i, j), prec);
+            mag_addmul3(m, p->b + i, p->cp + (k - 1) * s + i, arb_mat_entry(p->A, i, j));
         }
+        /* b_j (1 + |c_j|^k) / k bounds the right side's terms */
         arb_sub_ui(q, p->cp + k * s + j, 1, prec);
         arb_neg(q, q);
         arb_mul(q, q, p->b + j, prec);
         arb_div_ui(q, q, (ulong)k, prec);
         arb_sub(r, r, q, prec);
-        st = worst_status(st, decide(p->cx, r));
+        arb_abs(u, p->cp + k * s + j);
+        arb_add_ui(u, u, 1, prec);
+        arb_mul(u, u, p->b + j, prec);
+        arb_div_ui(u, u, (ulong)k, prec);
+        mag_add_arb(m, u);
+        st = worst_status(st, decide(p->cx, r, p->exact, m));
     }
     arb_clear(r);
     arb_clear(q);
     arb_clear(u);
+    mag_clear(m);
     return st;
 }
 
@@ -866,9 +1410,11 @@ static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
     if (cap < rep->max_order) cap = rep->max_order;
     if (cap > 64) cap = 64;
     rep->simplifying_cap = cap;
+    cx->section = VIGEN_CHECK_SECT_SIMPLIFYING;
     for (int part = 0; part < 2; part++) {
         part_t p;
         p.cx = cx;
+        p.exact = cx->ex->part_c[part];
         p.A = part ? cx->At : cx->A;
         p.b = part ? cx->bt : cx->b;
         p.c = part ? cx->ct : cx->c;
@@ -893,22 +1439,35 @@ static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
 
 /* -------------------------------------------------------- claims, against */
 
+/* What a level says about "the order is exactly p": 2 certainly, 1 possibly, 0 not. */
+static int level_is(const vigen_check_level *L, int p)
+{
+    if (L->capped) return p >= L->value ? 1 : 0;       /* the order is >= value */
+    if (L->undecided) return p == L->value ? 1 : p > L->value ? 1 : 0;   /* >= value, value + 1 undecided */
+    return p == L->value ? 2 : 0;
+}
+
 static void check_claims(vigen_check_report *rep)
 {
     if (rep->claim_order >= 0) {
         const vigen_check_level *g = &rep->orders[VIGEN_CHECK_GENERAL].level;
         const vigen_check_level *sp = &rep->orders[VIGEN_CHECK_SEPARABLE].level;
         int claim = rep->claim_order, st;
-        /* the claim holds when it is the order (exactly, or at least when the
-         * check stopped at the claimed order) */
-        int is_g = g->value == claim && !g->undecided;
-        int is_sp = sp->value == claim && !sp->undecided;
+        /* order = p means the order is p: every condition up to p holds and
+         * one of order p + 1 fails (for general H, or for separable H: the
+         * separable order is at least the general one) */
+        int ig = level_is(g, claim), is = level_is(sp, claim);
         rep->claim_order_separable = 0;
-        if (is_g) st = VIGEN_CHECK_YES;
-        else if (is_sp && g->value < claim) { st = VIGEN_CHECK_YES; rep->claim_order_separable = 1; }
-        else if ((g->undecided && g->value < claim) || (sp->undecided && sp->value < claim && g->value < claim))
+        rep->claim_order_beyond = 0;
+        if (ig == 2) st = VIGEN_CHECK_YES;
+        else if (is == 2) { st = VIGEN_CHECK_YES; rep->claim_order_separable = 1; }
+        else if (ig || is) {
             st = VIGEN_CHECK_UNDECIDED;
-        else st = VIGEN_CHECK_NO;
+            /* possible only because nothing up to max_order fails and order
+             * claim + 1 is beyond what can be evaluated */
+            rep->claim_order_beyond = (g->capped || sp->capped) && claim + 1 > rep->max_order &&
+                                      !(g->undecided || sp->undecided);
+        } else st = VIGEN_CHECK_NO;
         rep->claim_order_status = st;
         if (st != VIGEN_CHECK_YES) {
             vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_CLAIM);
@@ -916,13 +1475,19 @@ static void check_claims(vigen_check_report *rep)
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup_printf("%d", g->value);
             p->expected_json = vigen_strdup_printf("%d", claim);
-            if (st == VIGEN_CHECK_UNDECIDED)
+            if (rep->claim_order_beyond)
+                p->message = vigen_strdup_printf(
+                    "claim order = %d: undecided: every condition up to order %d holds, and confirming that the "
+                    "order is exactly %d needs the conditions of order %d (at most %d supported%s)",
+                    claim, rep->max_order, claim, claim + 1, VIGEN_TREE_MAX_ORDER,
+                    rep->max_order < VIGEN_TREE_MAX_ORDER ? "; --max-order 12 looks further for a lower order" : "");
+            else if (st == VIGEN_CHECK_UNDECIDED)
                 p->message = vigen_strdup_printf("claim order = %d: undecided at this precision (order >= %d, "
                                                  "order %d undecided)", claim, g->value, g->value + 1);
             else if (g->capped)
-                p->message = vigen_strdup_printf("claim order = %d is false: every condition up to order %d holds",
-                                                 claim, g->value);
-            else if (sp->value != g->value)
+                p->message = vigen_strdup_printf("claim order = %d is false: every condition up to order %d holds, "
+                                                 "so the order is at least %d", claim, g->value, g->value);
+            else if (sp->value != g->value || sp->capped != g->capped)
                 p->message = vigen_strdup_printf("claim order = %d is false: the order is %d (%d%s for separable H)",
                                                  claim, g->value, sp->value, sp->capped ? " or more" : "");
             else
@@ -958,33 +1523,79 @@ static void check_claims(vigen_check_report *rep)
     }
 }
 
-static void compare_entry(vigen_check_report *rep, const char *mat, slong i, slong j, const arb_t x, const arb_t y,
-                          slong prec)
+/* Largest |entry| of each matrix or vector, the scale of the comparisons. */
+static void entries_scale(mag_t m, const arb_srcptr *vecs, slong nvec, slong len)
 {
-    if (arb_overlaps(x, y)) return;
-    rep->against_differences++;
+    mag_t t;
+    mag_init(t);
+    mag_zero(m);
+    for (slong v = 0; v < nvec; v++)
+        for (slong k = 0; k < len; k++) {
+            mid_mag(t, vecs[v] + k);
+            mag_max(m, m, t);
+        }
+    mag_clear(t);
+}
+
+static void mat_scale(mag_t m, const arb_mat_struct *X, const arb_mat_struct *Y, slong s)
+{
+    mag_t t;
+    mag_init(t);
+    mag_zero(m);
+    for (slong i = 0; i < s; i++)
+        for (slong j = 0; j < s; j++) {
+            mid_mag(t, arb_mat_entry(X, i, j));
+            mag_max(m, m, t);
+            mid_mag(t, arb_mat_entry(Y, i, j));
+            mag_max(m, m, t);
+        }
+    mag_clear(t);
+}
+
+static void compare_entry(vigen_check_report *rep, ctx_t *cx, const char *mat, slong i, slong j, const arb_t x,
+                          const arb_t y, int exact, const mag_t scale)
+{
+    arb_t d;
+    arb_init(d);
+    arb_sub(d, x, y, cx->prec);
+    int st = decide(cx, d, exact, scale);
+    if (st == HOLDS) {
+        arb_clear(d);
+        return;
+    }
+    if (st == FAILS) rep->against_differences++;
+    else rep->against_undecided++;
     vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_AGAINST);
+    p->undecided = st == UNDECIDED;
     p->matrix = mat;
     p->row = i + 1;
     p->col = j >= 0 ? j + 1 : 0;
     p->has_value = p->has_expected = 1;
     arb_set(p->value, x);
     arb_set(p->expected, y);
-    slong digits = digits_to_separate(x, y, prec);
+    slong digits = digits_to_separate(x, y, cx->prec);
     char *a = ball_str(x, digits), *b = ball_str(y, digits);
-    if (j >= 0)
-        p->message = vigen_strdup_printf("%s[%ld][%ld] = %s here but %s there", mat, (long)(i + 1), (long)(j + 1),
-                                         a, b);
-    else
-        p->message = vigen_strdup_printf("%s[%ld] = %s here but %s there", mat, (long)(i + 1), a, b);
+    char *name = j >= 0 ? vigen_strdup_printf("%s[%ld][%ld]", mat, (long)(i + 1), (long)(j + 1))
+                        : vigen_strdup_printf("%s[%ld]", mat, (long)(i + 1));
+    if (st == FAILS) {
+        char *ds = ball_str(d, 6);
+        p->message = vigen_strdup_printf("%s = %s here but %s there (difference %s%s)", name, a, b,
+                                         ds[0] == '[' ? "in " : "", ds);
+        free(ds);
+    }
+    else p->message = vigen_strdup_printf("%s = %s here and %s there: undecided at this precision", name, a, b);
+    free(name);
     free(a);
     free(b);
+    arb_clear(d);
 }
 
-static void check_against(vigen_check_report *rep, const ctx_t *x, const ctx_t *y)
+/* x: the checked tableau (its context makes the decisions), y: FILE2. */
+static void check_against(vigen_check_report *rep, ctx_t *x, const ctx_t *y)
 {
     rep->against_checked = 1;
     rep->against_differences = 0;
+    rep->against_undecided = 0;
     if (x->s != y->s) {
         rep->against_differences = 1;
         vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_AGAINST);
@@ -993,19 +1604,48 @@ static void check_against(vigen_check_report *rep, const ctx_t *x, const ctx_t *
         p->message = vigen_strdup_printf("the tableaux have %ld and %ld stages", (long)x->s, (long)y->s);
         return;
     }
-    slong s = x->s, prec = x->prec;
+    x->section = VIGEN_CHECK_SECT_AGAINST;
+    slong s = x->s;
     int p_part = x->has_At || y->has_At;
-    for (slong i = 0; i < s; i++) compare_entry(rep, "c", i, -1, x->c + i, y->c + i, prec);
+    mag_t sc;
+    mag_init(sc);
+    /* the scale of a comparison: the largest entry of that matrix or vector in
+     * either tableau (an entry that is 0 is compared at the scale of its
+     * neighbours) */
+#define VEC_SCALE(X, Y)                                                                                               \
+    do {                                                                                                              \
+        arb_srcptr v_[2] = {(X), (Y)};                                                                                \
+        entries_scale(sc, v_, 2, s);                                                                                  \
+    } while (0)
+#define MAT_SCALE(X, Y) mat_scale(sc, (X), (Y), s)
+    const exactness *ex = x->ex, *ey = y->ex;
+    VEC_SCALE(x->c, y->c);
+    for (slong i = 0; i < s; i++)
+        compare_entry(rep, x, "c", i, -1, x->c + i, y->c + i, ex->c[i] && ey->c[i], sc);
+    MAT_SCALE(x->A, y->A);
     for (slong i = 0; i < s; i++)
         for (slong j = 0; j < s; j++)
-            compare_entry(rep, "A", i, j, arb_mat_entry(x->A, i, j), arb_mat_entry(y->A, i, j), prec);
-    for (slong i = 0; i < s; i++) compare_entry(rep, "b", i, -1, x->b + i, y->b + i, prec);
-    if (!p_part) return;
-    for (slong i = 0; i < s; i++) compare_entry(rep, "ct", i, -1, x->ct + i, y->ct + i, prec);
+            compare_entry(rep, x, "A", i, j, arb_mat_entry(x->A, i, j), arb_mat_entry(y->A, i, j),
+                          ex->A[i * s + j] && ey->A[i * s + j], sc);
+    VEC_SCALE(x->b, y->b);
     for (slong i = 0; i < s; i++)
-        for (slong j = 0; j < s; j++)
-            compare_entry(rep, "At", i, j, arb_mat_entry(x->At, i, j), arb_mat_entry(y->At, i, j), prec);
-    for (slong i = 0; i < s; i++) compare_entry(rep, "bt", i, -1, x->bt + i, y->bt + i, prec);
+        compare_entry(rep, x, "b", i, -1, x->b + i, y->b + i, ex->b[i] && ey->b[i], sc);
+    if (p_part) {
+        VEC_SCALE(x->ct, y->ct);
+        for (slong i = 0; i < s; i++)
+            compare_entry(rep, x, "ct", i, -1, x->ct + i, y->ct + i, ex->ct[i] && ey->ct[i], sc);
+        MAT_SCALE(x->At, y->At);
+        for (slong i = 0; i < s; i++)
+            for (slong j = 0; j < s; j++)
+                compare_entry(rep, x, "At", i, j, arb_mat_entry(x->At, i, j), arb_mat_entry(y->At, i, j),
+                              ex->At[i * s + j] && ey->At[i * s + j], sc);
+        VEC_SCALE(x->bt, y->bt);
+        for (slong i = 0; i < s; i++)
+            compare_entry(rep, x, "bt", i, -1, x->bt + i, y->bt + i, ex->bt[i] && ey->bt[i], sc);
+    }
+#undef VEC_SCALE
+#undef MAT_SCALE
+    mag_clear(sc);
 }
 
 /* ------------------------------------------------------------- driver */
@@ -1019,6 +1659,7 @@ void vigen_check_report_init(vigen_check_report *rep)
         arb_init(rep->orders[f].undecided_value);
         arb_init(rep->orders[f].undecided_expected);
     }
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_init(rep->holds[k].radius);
     rep->claim_order = -1;
     rep->claim_symplectic = -1;
 }
@@ -1034,6 +1675,7 @@ void vigen_check_report_clear(vigen_check_report *rep)
         arb_clear(rep->orders[f].undecided_value);
         arb_clear(rep->orders[f].undecided_expected);
     }
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_clear(rep->holds[k].radius);
     free(rep->path);
     free(rep->name);
     memset(rep, 0, sizeof(*rep));
@@ -1041,26 +1683,99 @@ void vigen_check_report_clear(vigen_check_report *rep)
 
 static int has_texts(const vigen_tableau *t) { return t->c_text != NULL && t->A_text != NULL && t->b_text != NULL; }
 
-/* Digits of the longest rounded decimal entry (0 when every entry is exact). */
-static slong decimal_digits(const vigen_tableau *t)
+/* Decimal digits needed to see every literal of an exact expression: the
+ * digits of its longest number (all digits of the mantissa, leading zeros
+ * included, plus |exponent|: "1e-45" needs 46), plus, summed over the powers
+ * B^k with a whole-number literal exponent k, |k| log10 B (at least |k| 0.3;
+ * B the number before '^'; a parenthesised base counts |k| digits when |k| >= 10,
+ * nothing for small powers such as x^2). */
+static double literal_digits(const char *s)
 {
-    slong s = t->s, d = 0;
+    double numbers = 0, powers = 0;
+    double base = -1;            /* the number just before the current position, or -1 */
+    size_t i = 0, n = strlen(s);
+    while (i < n) {
+        char ch = s[i];
+        if ((ch >= '0' && ch <= '9') || (ch == '.' && s[i + 1] >= '0' && s[i + 1] <= '9')) {
+            size_t j = i;
+            double nd = 0;
+            while ((s[j] >= '0' && s[j] <= '9') || s[j] == '.') nd += s[j++] != '.';
+            double ex = 0;
+            if ((s[j] == 'e' || s[j] == 'E') &&
+                ((s[j + 1] >= '0' && s[j + 1] <= '9') ||
+                 ((s[j + 1] == '+' || s[j + 1] == '-') && s[j + 2] >= '0' && s[j + 2] <= '9'))) {
+                j++;
+                if (s[j] == '+' || s[j] == '-') j++;
+                while (s[j] >= '0' && s[j] <= '9') {
+                    if (ex < 1e9) ex = 10 * ex + (s[j] - '0');
+                    j++;
+                }
+            }
+            if (nd + ex > numbers) numbers = nd + ex;
+            char *buf = malloc(j - i + 1);
+            memcpy(buf, s + i, j - i);
+            buf[j - i] = '\0';
+            base = fabs(strtod(buf, NULL));
+            free(buf);
+            i = j;
+            continue;
+        }
+        if (ch == '^') {
+            double b = base;
+            size_t j = i + 1;
+            int paren = 0;
+            while (s[j] == ' ' || s[j] == '(' || s[j] == '+' || s[j] == '-') paren += s[j++] == '(';
+            if (s[j] >= '0' && s[j] <= '9') {
+                size_t k0 = j;
+                double k = 0;
+                while (s[j] >= '0' && s[j] <= '9') {
+                    if (k < 1e9) k = 10 * k + (s[j] - '0');
+                    j++;
+                }
+                while (s[j] == ' ') j++;
+                /* a whole number, not the start of 1/3, 2.5, 1e3 or 2^3 */
+                int whole = j > k0 && s[j] != '.' && s[j] != '/' && s[j] != 'e' && s[j] != 'E' && s[j] != '^' &&
+                            !(paren && s[j] != ')');
+                if (whole) {
+                    if (b < 0) powers += k >= 10 ? k : 0;
+                    else if (b != 0 && b != 1) powers += k * FLINT_MAX(fabs(log10(b)), 0.30103);
+                }
+            }
+            base = -1;
+            i++;
+            continue;
+        }
+        if (ch != ' ' && ch != '\t') base = -1;
+        i++;
+    }
+    return numbers + powers;
+}
+
+/* Digits needed by the entries: the longest rounded decimal, and the literals
+ * of every exact expression. */
+static double entries_digits(const vigen_tableau *t)
+{
+    slong s = t->s;
+    double d = 0;
     char **lists[6] = {t->c_text, t->b_text, t->ct_text, t->bt_text, t->A_text, t->At_text};
     slong lens[6] = {s, s, s, s, s * s, s * s};
     for (int l = 0; l < 6; l++) {
         if (lists[l] == NULL) continue;
-        for (slong k = 0; k < lens[l]; k++)
-            if (lists[l][k] && vigen_decimal_is_rounded(lists[l][k])) {
-                slong n = vigen_decimal_significant_digits(lists[l][k]);
-                if (n > d) d = n;
-            }
+        for (slong k = 0; k < lens[l]; k++) {
+            const char *x = lists[l][k];
+            if (x == NULL) continue;
+            double n = vigen_decimal_is_rounded(x) ? (double)vigen_decimal_significant_digits(x) : literal_digits(x);
+            if (n > d) d = n;
+        }
     }
     return d;
 }
 
 static slong adequate_prec(const vigen_tableau *t)
 {
-    slong p = (slong)ceil((double)decimal_digits(t) * 3.3219280948873623) + 64;
+    double d = entries_digits(t);
+    if (d > 1e7) d = 1e7;
+    slong p = (slong)ceil(d * 3.3219280948873623) + 64;
     if (!has_texts(t) && t->prec > p) p = t->prec;
     return p < 128 ? 128 : p;
 }
@@ -1088,6 +1803,30 @@ static void report_reset_round(vigen_check_report *rep)
     problems_clear(rep);
     rep->against_checked = 0;
     rep->against_differences = 0;
+    rep->against_undecided = 0;
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {
+        rep->holds[k].exact = rep->holds[k].data = rep->holds[k].wide = 0;
+        mag_zero(rep->holds[k].radius);
+    }
+}
+
+/* One round of every check at the precision of t (and against). */
+static int check_round(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,
+                       const exactness *ex_against, int P, vigen_error *err)
+{
+    report_reset_round(rep);
+    check_rows_and_symplecticity(rep, cx, t->claim_symplectic);
+    int rc = check_orders(rep, cx, P, err);
+    if (rc != VIGEN_OK) return rc;
+    check_simplifying(rep, cx);
+    check_claims(rep);
+    if (against) {
+        ctx_t cy;
+        ctx_init(&cy, against, ex_against, rep->holds);
+        cy.prec = cx->prec;
+        check_against(rep, cx, &cy);
+    }
+    return VIGEN_OK;
 }
 
 int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against,
@@ -1097,18 +1836,15 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     if (opt_in) opt = *opt_in;
     else vigen_check_options_init(&opt);
     if (opt.max_order <= 0) opt.max_order = DEFAULT_MAX_ORDER;
-    if (opt.max_prec <= 0) opt.max_prec = 4096;
-    if (opt.tol_bits <= 0) opt.tol_bits = 30;
+    if (opt.max_prec <= 0) opt.max_prec = DEFAULT_MAX_PREC;
     if (opt.max_order > VIGEN_TREE_MAX_ORDER)
         return vigen_error_set(err, VIGEN_E_USAGE, "--max-order %d: at most %d is supported", opt.max_order,
                                VIGEN_TREE_MAX_ORDER);
 
+    /* a claim order = p is confirmed by a failing condition of order p + 1 */
     int P = opt.max_order;
-    if (t->claim_order >= 0) {
-        int want = t->claim_order + 1 <= AUTO_MAX_ORDER ? t->claim_order + 1 : t->claim_order;
-        if (want > VIGEN_TREE_MAX_ORDER) want = VIGEN_TREE_MAX_ORDER;
-        if (want > P) P = want;
-    }
+    if (t->claim_order >= 0 && t->claim_order + 1 <= VIGEN_TREE_MAX_ORDER && t->claim_order + 1 > P)
+        P = t->claim_order + 1;
 
     free(rep->path);
     free(rep->name);
@@ -1119,78 +1855,82 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     rep->has_At = t->has_At;
     rep->has_bt = t->has_At && t->has_bt;
     rep->has_ct = t->has_At && t->has_ct;
-    rep->tol_bits = opt.tol_bits;
     rep->claim_order = t->claim_order;
     rep->claim_symplectic = t->claim_symplectic;
 
     slong prec = opt.prec > 0 ? opt.prec : adequate_prec(t);
     if (against && opt.prec <= 0 && adequate_prec(against) > prec) prec = adequate_prec(against);
+    /* the entries may ask for more than the cap: allow one confirmation above the start */
+    slong cap = opt.max_prec > 2 * prec ? opt.max_prec : 2 * prec;
     int refinable = has_texts(t) || (against && has_texts(against));
-    mag_t last_worst;
-    mag_init(last_worst);
-    mag_inf(last_worst);
+    exactness ex, ex_against;
+    exactness_init(&ex, t);
+    if (against) exactness_init(&ex_against, against);
+    rep->rounded_entries = ex.any_rounded;
+    rep->exact_entries = ex.any_exact;
     int rc = VIGEN_OK;
     rep->rounds = 0;
+    rep->prec_first = 0;
+    ulong last_hash = 0;
+    slong last_undecided = -1;
 
     for (;;) {
         rep->undecided_reason = NULL;
-        rc = evaluate(t, &prec, opt.max_prec, err);
+        rc = evaluate(t, &prec, cap, err);
         if (rc == VIGEN_OK && !has_texts(t)) prec = t->prec;
         if (rc == VIGEN_OK && against) {
             slong p2 = prec;
-            rc = evaluate(against, &p2, opt.max_prec, err);
+            rc = evaluate(against, &p2, cap, err);
             if (rc != VIGEN_OK) vigen_error_prefix(err, "--against: ");
         }
         if (rc != VIGEN_OK) break;
         rep->rounds++;
-        report_reset_round(rep);
+        if (rep->prec_first == 0) rep->prec_first = prec;
+        rep->prec = prec;
 
         ctx_t cx;
-        ctx_init(&cx, t, opt.tol_bits);
+        ctx_init(&cx, t, &ex, rep->holds);
         cx.prec = prec;
-        rep->prec = prec;
-        check_rows_and_symplecticity(rep, &cx, t->claim_symplectic);
-        rc = check_orders(rep, &cx, P, err);
-        if (rc != VIGEN_OK) { ctx_clear(&cx); break; }
-        check_simplifying(rep, &cx);
-        check_claims(rep);
-        if (against) {
-            ctx_t cy;
-            ctx_init(&cy, against, opt.tol_bits);
-            cy.prec = prec;
-            check_against(rep, &cx, &cy);
-            ctx_clear(&cy);
-        }
+        rc = check_round(rep, &cx, t, against, against ? &ex_against : NULL, P, err);
+        if (rc != VIGEN_OK) break;
 
-        slong undecided = cx.n_undecided;
-        int improved = mag_cmp(cx.worst, last_worst) < 0;
-        /* doubling the precision should shrink a precision-limited radius by
-         * far more than 2; anything less means the data limit the balls */
-        mag_t half;
-        mag_init(half);
-        mag_mul_2exp_si(half, last_worst, -(prec / 4));
-        improved = improved && (mag_is_inf(last_worst) || mag_cmp(cx.worst, half) < 0);
-        mag_clear(half);
-        mag_set(last_worst, cx.worst);
-        ctx_clear(&cx);
-        rep->undecided_left = undecided;
-        if (undecided == 0) break;
-        if (!refinable) { rep->undecided_reason = "the tableau has no entry texts to re-evaluate"; break; }
-        if (2 * prec > opt.max_prec) { rep->undecided_reason = "the precision cap was reached"; break; }
-        if (rep->rounds > 1 && !improved) {
-            rep->undecided_reason = "more precision does not help: decimal entries carry too few digits";
+        /* exact conditions that hold with a nonzero radius are confirmed when
+         * the previous round, at half the precision, gave the same verdicts */
+        int confirmed = cx.n_unconfirmed == 0 || (rep->rounds > 1 && cx.hash == last_hash);
+        rep->undecided_left = cx.n_undecided;
+        if (cx.n_undecided == 0 && confirmed) break;
+        const char *stop = NULL;
+        if (!refinable) stop = "the tableau has no entry texts to re-evaluate";
+        else if (2 * prec > cap) stop = "the precision cap was reached";
+        else if (cx.n_undecided_exact == 0 && cx.n_undecided > 0 && rep->rounds > 1 &&
+                 cx.n_undecided >= last_undecided && confirmed)
+            stop = "more precision does not help: the balls of the rounded entries are not finite";
+        if (stop) {
+            if (!confirmed) {
+                /* the holding exact conditions cannot be confirmed: undecided */
+                cx.strict = 1;
+                cx.n_undecided = cx.n_undecided_exact = cx.n_unconfirmed = 0;
+                cx.hash = 1469598103934665603ULL;
+                rc = check_round(rep, &cx, t, against, against ? &ex_against : NULL, P, err);
+                if (rc != VIGEN_OK) break;
+                rep->undecided_left = cx.n_undecided;
+            }
+            rep->undecided_reason = stop;
             break;
         }
+        last_hash = cx.hash;
+        last_undecided = cx.n_undecided;
         prec *= 2;
     }
-    mag_clear(last_worst);
+    exactness_clear(&ex);
+    if (against) exactness_clear(&ex_against);
     if (rc != VIGEN_OK) return rc;
 
     int code = 0;
     if (rep->consistent != VIGEN_CHECK_YES) code = 1;
     if (rep->claim_order >= 0 && rep->claim_order_status != VIGEN_CHECK_YES) code = 1;
     if (rep->claim_symplectic >= 0 && rep->claim_symplectic_status != VIGEN_CHECK_YES) code = 1;
-    if (rep->against_differences > 0) code = 1;
+    if (rep->against_differences > 0 || rep->against_undecided > 0) code = 1;
     rep->exit_code = code;
     return VIGEN_OK;
 }
@@ -1229,12 +1969,30 @@ static void print_bad_tree(FILE *out, const vigen_check_orders *o, const char *i
     print_ball(out, undecided ? o->undecided_value : o->fail_value, digits);
     fputs(", 1/gamma = ", out);
     print_ball(out, undecided ? o->undecided_expected : o->fail_expected, digits);
-    fputc('\n', out);
+    arb_t d;
+    arb_init(d);
+    arb_srcptr dv = undecided ? o->undecided_value : o->fail_value, de = undecided ? o->undecided_expected : o->fail_expected;
+    arb_sub(d, dv, de, FLINT_MAX(arb_bits(dv), arb_bits(de)) + 64);
+    char *ds = ball_str(d, 6);
+    fprintf(out, " (defect %s%s)\n", ds[0] == '[' ? "in " : "", ds);
+    free(ds);
+    arb_clear(d);
 }
 
 static const char *tri_word(int v, const char *yes, const char *no)
 {
     return v == VIGEN_CHECK_YES ? yes : v == VIGEN_CHECK_NO ? no : "undecided at this precision";
+}
+
+/* " within the precision of the data (radius <= X)" when some holding
+ * condition of the section was decided on rounded entries. */
+static void print_within(FILE *out, const vigen_check_holds *h)
+{
+    if (h->data == 0) return;
+    char *r = mag_str(h->radius);
+    fprintf(out, " within the precision of the data (radius <= %s%s)", r,
+            h->wide ? "; some balls are wider than their terms" : "");
+    free(r);
 }
 
 static void print_assumption(FILE *out, const char *name, const vigen_check_level *L)
@@ -1250,15 +2008,36 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
     fprintf(out, ": %ld stages, %s\n", (long)rep->s,
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
-    fprintf(out, "  checked at %ld bits (%ld evaluation%s); a condition holds when its ball contains 0 with radius "
-                 "<= 2^-%d, fails when the ball excludes 0\n",
-            (long)rep->prec, (long)rep->rounds, rep->rounds == 1 ? "" : "s", rep->tol_bits);
+    fprintf(out, "  entries: %s; ",
+            rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
+            : rep->rounded_entries ? "rounded decimals (half-ulp balls) or balls"
+                                   : "exact expressions");
+    if (rep->rounds > 1)
+        fprintf(out, "checked at %ld bits (%ld evaluations, from %ld bits)\n", (long)rep->prec, (long)rep->rounds,
+                (long)rep->prec_first);
+    else fprintf(out, "checked at %ld bits (1 evaluation)\n", (long)rep->prec);
+    if (!rep->exact_entries)
+        fputs("  a condition fails when its ball excludes 0 and holds, within the precision of the data, when it\n"
+              "  contains 0\n", out);
+    else if (!rep->rounded_entries)
+        fputs("  a condition fails when its ball excludes 0; it holds when its ball contains 0 with a radius below\n"
+              "  2^-(prec/2) of its terms, with the same verdicts at two precisions; otherwise it is undecided\n", out);
+    else
+        fputs("  a condition fails when its ball excludes 0 and holds when it contains 0: within the precision of\n"
+              "  the data when it involves a rounded entry; on exact entries only with a radius below 2^-(prec/2)\n"
+              "  of its terms and the same verdicts at two precisions; otherwise it is undecided\n", out);
 
-    fprintf(out, "row sums      %s (%ld conditions: c_i = sum_j a_ij%s, sum b = 1)\n",
-            tri_word(rep->consistent, "hold", "FAIL"), (long)rep->row_total, rep->has_ct ? ", ct_i = sum_j at_ij" : "");
-    fprintf(out, "symplectic    %s (%ld conditions: %sb_i %s_ij + b_j a_ji - b_i b_j = 0",
-            tri_word(rep->symplectic, "yes", "no"), (long)rep->sym_total, rep->has_bt ? "bt = b, " : "",
-            rep->has_At ? "at" : "a");
+    fprintf(out, "row sums      %s", tri_word(rep->consistent, "hold", "FAIL"));
+    if (rep->consistent == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_ROWSUM]);
+    fprintf(out, " (%ld conditions: c_i = sum_j a_ij%s, sum b = 1", (long)rep->row_total,
+            rep->has_ct ? ", ct_i = sum_j at_ij" : "");
+    if (rep->row_fail) fprintf(out, "; %ld fail", (long)rep->row_fail);
+    if (rep->row_undecided) fprintf(out, "; %ld undecided", (long)rep->row_undecided);
+    fputs(")\n", out);
+    fprintf(out, "symplectic    %s", tri_word(rep->symplectic, "yes", "no"));
+    if (rep->symplectic == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC]);
+    fprintf(out, " (%ld conditions: %sb_i %s_ij + b_j a_ji - b_i b_j = 0", (long)rep->sym_total,
+            rep->has_bt ? "bt = b, " : "", rep->has_At ? "at" : "a");
     if (rep->sym_fail) fprintf(out, "; %ld fail", (long)rep->sym_fail);
     if (rep->sym_undecided) fprintf(out, "; %ld undecided", (long)rep->sym_undecided);
     fputs(")\n", out);
@@ -1271,6 +2050,15 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     print_level_words(out, &g->level);
     fprintf(out, "   (orders 1..%d checked)\n", rep->max_order);
     print_bad_tree(out, g, "              ");
+    if (rep->holds[VIGEN_CHECK_SECT_ORDER].data > 0) {
+        char *r = mag_str(rep->holds[VIGEN_CHECK_SECT_ORDER].radius);
+        fprintf(out, "              (%ld conditions hold within the precision of the data: radius <= %s)\n",
+                (long)rep->holds[VIGEN_CHECK_SECT_ORDER].data, r);
+        if (rep->holds[VIGEN_CHECK_SECT_ORDER].wide)
+            fprintf(out, "              (%ld of them have balls wider than their terms: the data hardly determine "
+                         "them)\n", (long)rep->holds[VIGEN_CHECK_SECT_ORDER].wide);
+        free(r);
+    }
 
     fputs("  order  conditions   hold   fail  undecided |  separable     A alone    At alone\n", out);
     for (int n = 1; n <= g->evaluated_to; n++) {
@@ -1328,7 +2116,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fputs("claims       ", out);
         if (rep->claim_order >= 0)
             fprintf(out, " order = %d: %s%s;", rep->claim_order,
-                    tri_word(rep->claim_order_status, "holds", "FALSE"),
+                    rep->claim_order_beyond ? "undecided (beyond the orders that can be evaluated)"
+                                            : tri_word(rep->claim_order_status, "holds", "FALSE"),
                     rep->claim_order_separable ? " (for separable H)" : "");
         if (rep->claim_symplectic >= 0)
             fprintf(out, " symplectic = %s: %s%s;", rep->claim_symplectic ? "true" : "false",
@@ -1336,29 +2125,51 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                     rep->claim_symplectic_separable ? " (for separable H)" : "");
         fputc('\n', out);
     }
-    if (rep->against_checked)
-        fprintf(out, "against       %ld entr%s differ%s beyond the certified precision\n",
+    if (rep->against_checked) {
+        fprintf(out, "against       %ld entr%s differ%s beyond the certified precision",
                 (long)rep->against_differences, rep->against_differences == 1 ? "y" : "ies",
                 rep->against_differences == 1 ? "s" : "");
+        if (rep->against_undecided) fprintf(out, ", %ld undecided", (long)rep->against_undecided);
+        if (rep->holds[VIGEN_CHECK_SECT_AGAINST].data > 0) {
+            char *r = mag_str(rep->holds[VIGEN_CHECK_SECT_AGAINST].radius);
+            fprintf(out, " (%ld agree within the precision of the data, radius <= %s)",
+                    (long)rep->holds[VIGEN_CHECK_SECT_AGAINST].data, r);
+            free(r);
+        }
+        fputc('\n', out);
+    }
 
     if (rep->undecided_left)
         fprintf(out, "undecided     %ld conditions at %ld bits: %s\n", (long)rep->undecided_left, (long)rep->prec,
                 rep->undecided_reason ? rep->undecided_reason : "");
     if (rep->nproblems) {
         fputs("problems\n", out);
-        slong shown = 0;
+        /* symplecticity pairs: the first 20; everything else: up to 40 lines */
+        slong pairs = 0, pairs_shown = 0, other_shown = 0, other_hidden = 0;
         for (slong k = 0; k < rep->nproblems; k++) {
-            if (shown == 40) {
-                fprintf(out, "  ... and %ld more (see --json)\n", (long)(rep->nproblems - shown));
-                break;
-            }
-            /* a diagnosis is filed once per kind of condition, with one message */
-            if (k > 0 && rep->problems[k].diagnosed && rep->problems[k - 1].diagnosed &&
-                strcmp(rep->problems[k].message, rep->problems[k - 1].message) == 0)
-                continue;
-            fprintf(out, "  %s\n", rep->problems[k].message);
-            shown++;
+            const vigen_check_problem *p = rep->problems + k;
+            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
         }
+        for (slong k = 0; k < rep->nproblems; k++) {
+            const vigen_check_problem *p = rep->problems + k;
+            /* a diagnosis is filed once per kind of condition, with one message */
+            if (k > 0 && p->diagnosed && rep->problems[k - 1].diagnosed &&
+                strcmp(p->message, rep->problems[k - 1].message) == 0)
+                continue;
+            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) {
+                if (pairs_shown < 20) {
+                    fprintf(out, "  %s\n", p->message);
+                    if (++pairs_shown == 20 && pairs > 20)
+                        fprintf(out, "  ... and %ld more pairs (all of them with --json)\n", (long)(pairs - 20));
+                }
+                continue;
+            }
+            if (other_shown < 40) {
+                fprintf(out, "  %s\n", p->message);
+                other_shown++;
+            } else other_hidden++;
+        }
+        if (other_hidden) fprintf(out, "  ... and %ld more problems (all of them with --json)\n", (long)other_hidden);
     } else fputs("problems      none\n", out);
     fprintf(out, "trees: %s\n", vigen_tree_notation_help());
     fprintf(out, "result        %s (exit %d)\n",
@@ -1385,7 +2196,7 @@ static void json_ball(FILE *out, const arb_t x, slong prec)
     slong digits = (slong)(prec * 0.30103);
     if (digits > 60) digits = 60;
     if (digits < 10) digits = 10;
-    char *s = ball_str(x, digits);
+    char *s = ball_json_str(x, digits);
     json_string(out, s);
     free(s);
 }
@@ -1428,9 +2239,29 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     if (rep->path) json_string(out, rep->path); else fputs("null", out);
     fputs(", \"name\": ", out);
     if (rep->name) json_string(out, rep->name); else fputs("null", out);
-    fprintf(out, ", \"stages\": %ld, \"partitioned\": %s, \"precision_bits\": %ld, \"tolerance_bits\": %d, "
-                 "\"max_order\": %d,\n",
-            (long)rep->s, rep->has_At ? "true" : "false", (long)rep->prec, rep->tol_bits, rep->max_order);
+    fprintf(out, ", \"stages\": %ld, \"partitioned\": %s, \"precision_bits\": %ld, \"first_precision_bits\": %ld, "
+                 "\"evaluations\": %ld, \"max_order\": %d,\n",
+            (long)rep->s, rep->has_At ? "true" : "false", (long)rep->prec, (long)rep->prec_first, (long)rep->rounds,
+            rep->max_order);
+    fprintf(out, " \"rounded_entries\": %s, \"exact_entries\": %s,\n", rep->rounded_entries ? "true" : "false",
+            rep->exact_entries ? "true" : "false");
+    fputs(" \"rule\": \"a condition fails when its ball excludes 0 and holds when it contains 0: on rounded entries "
+          "within the precision of the data; on exact entries with a radius below 2^-(prec/2) of its terms and the "
+          "same verdicts at two precisions; otherwise it is undecided\",\n", out);
+    static const char *const sect_keys[] = {"rowsum", "symplectic", "order", "simplifying", "against"};
+    fputs(" \"holding\": {", out);
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {
+        const vigen_check_holds *h = rep->holds + k;
+        fprintf(out, "%s\"%s\": {\"exact\": %ld, \"within_data_precision\": %ld, \"wider_than_terms\": %ld, "
+                     "\"radius\": ", k ? ", " : "", sect_keys[k], (long)h->exact, (long)h->data, (long)h->wide);
+        if (h->data) {
+            char *r = mag_str(h->radius);
+            json_string(out, r);
+            free(r);
+        } else fputs("null", out);
+        fputc('}', out);
+    }
+    fputs("},\n", out);
     fputs(" \"consistent\": ", out);
     json_tri(out, rep->consistent);
     fputs(", \"symplectic\": ", out);
@@ -1474,7 +2305,8 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     if (rep->claim_order >= 0) {
         fprintf(out, "\"order\": {\"claimed\": %d, \"holds\": ", rep->claim_order);
         json_tri(out, rep->claim_order_status);
-        fprintf(out, ", \"separable_only\": %s}", rep->claim_order_separable ? "true" : "false");
+        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s}",
+                rep->claim_order_separable ? "true" : "false", rep->claim_order_beyond ? "true" : "false");
         first = 0;
     }
     if (rep->claim_symplectic >= 0) {
@@ -1504,6 +2336,9 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     fputs(rep->nproblems ? "\n ],\n" : "],\n", out);
     fputs(" \"notation\": ", out);
     json_string(out, vigen_tree_notation_help());
+    if (rep->against_checked)
+        fprintf(out, ",\n \"against\": {\"differences\": %ld, \"undecided\": %ld}", (long)rep->against_differences,
+                (long)rep->against_undecided);
     fprintf(out, ",\n \"undecided_conditions\": %ld, \"undecided_reason\": ", (long)rep->undecided_left);
     if (rep->undecided_reason) json_string(out, rep->undecided_reason); else fputs("null", out);
     fprintf(out, ",\n \"exit\": %d}\n", rep->exit_code);

@@ -1,28 +1,53 @@
 /* check.h — `vigen check`: certify what a PRK tableau is (MATH.md section 1).
  *
- * Everything is decided in ball arithmetic, with three outcomes per condition:
- *   holds      the ball of (left side - right side) contains 0 and its radius
- *              is at most 2^-tol_bits (default 2^-30);
+ * Everything is decided in ball arithmetic.  Each condition is a ball r = left
+ * side - right side, with three outcomes (issue 3: a condition holds only when
+ * its ball contains 0 and fails only when the ball excludes 0):
  *   fails      the ball excludes 0 (certain);
- *   undecided  anything else (a wide ball containing 0, or a non-finite ball).
- * When something is undecided and the entries are exact expressions, the
- * tableau is re-evaluated at twice the precision (up to max_prec) and every
- * check is redone; decimal entries stand for half-ulp balls, so a condition
- * that needs more digits than the file gives stays undecided and is reported
- * as such.
+ *   holds      the ball contains 0, and
+ *                - when some entry the condition involves is a rounded decimal
+ *                  (a half-ulp ball) or a ball given by a caller: nothing more;
+ *                  the condition holds "within the precision of the data" and
+ *                  the report shows the largest radius of such balls (row
+ *                  sums and symplecticity pairs are intersected with an
+ *                  enclosure to second order around the midpoints, in which
+ *                  an entry that occurs twice varies once);
+ *                - when every entry it involves is an exact expression: the
+ *                  radius is at most 2^-(prec/2) times the size of the terms
+ *                  (the ball is as tight as the working precision makes it, not
+ *                  wide from cancellation), and the same verdicts came out at
+ *                  two successive precisions p and 2p (or the ball is exactly
+ *                  0);
+ *   undecided  anything else (an exact condition whose ball is still wide or
+ *              unconfirmed at the precision cap, or a non-finite ball).
+ * The starting precision is adequate to the entries: enough bits for the
+ * digits of every rounded decimal and of every exact literal (a number's
+ * digits, and |k| log10 B for a power B^k), plus 64, at least 128.  When an
+ * exact condition is undecided or unconfirmed the tableau is re-evaluated at
+ * twice the precision, up to max(max_prec, twice the start).  An exact
+ * difference smaller than about 2^-(final precision) of the terms is below
+ * what any finite precision can see; the literal digits keep the visible ones
+ * (such as 1/10^45) inside the starting precision.
  *
  * Checks: row sums (c_i = sum_j a_ij, ct_i = sum_j at_ij when ct is given,
  * sum b = 1, sum bt = 1), symplecticity (bt = b, b_i at_ij + b_j a_ji - b_i b_j
  * = 0; for separable H the pair conditions b_i at_ij + bt_j a_ji - b_i bt_j = 0
  * suffice, so splitting methods written with bt != b are reported as
- * "symplectic for separable H" and a claim symplectic = true holds for
- * them, as a claimed order holds when it is the order for separable H), order conditions of every bicoloured tree up to max_order (general H,
+ * "symplectic for separable H" and a claim symplectic = true holds for them),
+ * order conditions of every bicoloured tree up to max_order (general H,
  * separable H, each part alone as an RK method), simplifying assumptions B, C,
  * D and stage order of each part, claims of the file, and --against.  A
  * tableau without At is one RK method used for both parts (At = A, bt = b,
- * ct = c).  Failed row-sum and symplecticity conditions that all involve one
- * entry are traced back to it: the entry is named (1-based) with the value
- * that satisfies them.
+ * ct = c).  Every failed or undecided row sum and symplecticity pair is a
+ * problem of the report.  Failed row-sum and symplecticity conditions that all
+ * involve one entry are traced back to it: the entry is named (1-based) with
+ * the value that satisfies them, solved for with the entry as an exact unknown.
+ *
+ * A claim order = p means the order is p: it holds when every condition up to
+ * order p holds and some condition of order p + 1 fails (for general H, or for
+ * separable H), so orders up to p + 1 are evaluated (p + 1 <= 12); when p + 1
+ * exceeds VIGEN_TREE_MAX_ORDER and no condition up to max_order fails, the
+ * claim is undecided.
  */
 #ifndef VIGEN_CHECK_H
 #define VIGEN_CHECK_H
@@ -45,8 +70,8 @@ typedef struct {
     int max_order;               /* P: orders 1..P are checked; default 8, at most VIGEN_TREE_MAX_ORDER */
     int json;                    /* print one JSON object instead of the text report */
     slong prec;                  /* starting precision in bits; 0 = adequate to the entries (>= 128) */
-    slong max_prec;              /* cap for the refinement; default 4096 */
-    int tol_bits;                /* holding means radius <= 2^-tol_bits; default 30 */
+    slong max_prec;              /* cap for the refinement; default 4096 (raised to twice the
+                                    starting precision when the entries need more) */
     slong spec_digits;           /* digits asked of the loader for spec files; default 34 */
     vigen_check_loader_fn load;  /* spec hook, see above; NULL = tableau files only */
 } vigen_check_options;
@@ -87,6 +112,25 @@ typedef struct {
     arb_t undecided_value, undecided_expected;
 } vigen_check_orders;
 
+/* Sections of the report, for the statistics of holding conditions. */
+enum {
+    VIGEN_CHECK_SECT_ROWSUM = 0,
+    VIGEN_CHECK_SECT_SYMPLECTIC = 1,
+    VIGEN_CHECK_SECT_ORDER = 2,
+    VIGEN_CHECK_SECT_SIMPLIFYING = 3,
+    VIGEN_CHECK_SECT_AGAINST = 4,
+    VIGEN_CHECK_SECTIONS = 5
+};
+
+/* How the conditions of one section that hold were decided. */
+typedef struct {
+    slong exact;                 /* on exact entries (confirmed at two precisions, or exactly 0) */
+    slong data;                  /* within the precision of the data (rounded decimals, balls) */
+    mag_t radius;                /* the largest radius among the latter */
+    slong wide;                  /* of the latter, balls wider than the size of their terms:
+                                    they contain 0, but the data hardly determine them */
+} vigen_check_holds;
+
 enum { VIGEN_PROBLEM_ROWSUM, VIGEN_PROBLEM_SYMPLECTIC, VIGEN_PROBLEM_CLAIM, VIGEN_PROBLEM_AGAINST };
 
 typedef struct {
@@ -105,12 +149,15 @@ typedef struct {
 typedef struct {
     char *path, *name;
     slong s, prec;               /* precision of the final round, bits */
-    slong rounds;                /* evaluations done (1 + refinements) */
+    slong prec_first;            /* precision of the first round */
+    slong rounds;                /* evaluations done (1 + refinements and confirmations) */
     slong undecided_left;        /* undecided balls in the final round */
     const char *undecided_reason;/* why refining stopped with undecided balls (static string) */
     int max_order;
     int has_At, has_bt, has_ct;
-    int tol_bits;
+    int rounded_entries;         /* some entry is a rounded decimal (or the tableau is balls only) */
+    int exact_entries;           /* some entry is an exact expression */
+    vigen_check_holds holds[VIGEN_CHECK_SECTIONS];
 
     int consistent;              /* row sums and sum b = 1 (tri-state) */
     int symplectic;              /* tri-state: bt = b and b_i at_ij + b_j a_ji = b_i b_j */
@@ -128,17 +175,20 @@ typedef struct {
     int claim_order;             /* -1 when the file states none */
     int claim_order_status;      /* tri-state */
     int claim_order_separable;   /* the claim matches the separable order only */
+    int claim_order_beyond;      /* undecided because order claim + 1 exceeds VIGEN_TREE_MAX_ORDER */
     int claim_symplectic;        /* -1, 0, 1 */
     int claim_symplectic_status;
     int claim_symplectic_separable;  /* the claim holds for separable H only */
 
     int against_checked;
     slong against_differences;
+    slong against_undecided;
 
     slong nproblems, alloc_problems;
     vigen_check_problem *problems;
 
-    int exit_code;               /* 0 consistent and every claim holds, 1 otherwise */
+    int exit_code;               /* 0 consistent, every claim holds and (--against) no entry
+                                    differs or is undecided; 1 otherwise */
 } vigen_check_report;
 
 void vigen_check_report_init(vigen_check_report *rep);

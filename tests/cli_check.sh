@@ -62,11 +62,75 @@ json "[(p['matrix'], p['row'], p['col']) for p in d['problems'] if p['kind'] == 
 run 1 "$data/rk4_claimed_symplectic.lua" --json
 json "d['claims']['symplectic']['holds'] is False and d['claims']['order']['holds'] is True"
 
-# undecided: 6 digits cannot certify anything to 2^-30
-run 1 "$data/gauss2_6digits.lua" --json
-json "d['consistent'] is None and d['order_status'] == 'undecided'"
-run 1 "$data/gauss2_6digits.lua"
-grep_out "undecided at this precision"
+# rounded decimals: 6 digits of Gauss-2 are consistent, symplectic and of
+# order 4 within the precision of the data (the balls carry the half-ulp radii)
+run 0 "$data/gauss2_6digits.lua" --json
+json "d['consistent'] is True and d['symplectic'] is True and d['order'] == 4 and d['order_status'] == 'exact'"
+json "d['holding']['rowsum']['within_data_precision'] == 3 and d['holding']['rowsum']['radius'] is not None"
+run 0 "$data/gauss2_6digits.lua"
+grep_out "hold within the precision of the data (radius <= "
+
+# vigen check accepts what vigen generate certifies, at any number of digits:
+# Gauss-3 (order 6, symplectic) written with 9 digits
+"$vigen" generate "$src/tableaux/specs/gauss_legendre_s3.lua" --digits 9 -q -o "$work/g3_9.lua" ||
+  fail "vigen generate gauss_legendre_s3 --digits 9"
+run 0 "$work/g3_9.lua" --json
+json "d['order'] == 6 and d['order_status'] == 'exact' and d['symplectic'] is True and d['consistent'] is True"
+# nodes 1e-15 apart (entries of size 1e14, large cancellations): symplectic by
+# construction (Leok & Zhang, Theorem 3), as a spec and as a generated file
+run 0 "$data/near_nodes_spec.lua" --json
+json "d['symplectic'] is True and d['consistent'] is True"
+"$vigen" generate "$data/near_nodes_spec.lua" -q -o "$work/near.lua" || fail "vigen generate near_nodes_spec"
+run 0 "$work/near.lua" --json
+json "d['symplectic'] is True and d['consistent'] is True"
+
+# exact entries are decided at a precision that sees them: Gauss-2 with
+# a11 = 1/4 + 1/10^45 fails (row 1 and the pair (1, 1), by 1e-45), from the
+# default start and from --prec 128; --against sees the difference too
+for prec in "" "--prec 128"; do
+  run 1 "$data/gauss2_1e-45.lua" --json $prec
+  json "d['consistent'] is False and d['symplectic'] is False and d['precision_bits'] > 150"
+  json "any(p['kind'] == 'rowsum' and p['matrix'] == 'A' and p['row'] == 1 for p in d['problems'])"
+  json "any(p['kind'] == 'symplectic' and (p['row'], p['col']) == (1, 1) for p in d['problems'])"
+  json "d['claims']['order']['holds'] is False and d['claims']['symplectic']['holds'] is False"
+  run 1 "$pub/gauss_2.lua" --against "$data/gauss2_1e-45.lua" --json $prec
+  json "[(p['matrix'], p['row'], p['col']) for p in d['problems'] if p['kind'] == 'against'] == [('A', 1, 1), ('At', 1, 1)]"
+done
+run 1 "$data/gauss2_1e-45.lua"
+grep_out "(defect 1.00000e-45)"
+
+# every failing symplecticity pair is named, claimed or not: RK4 (At = A, pairs
+# i <= j) fails all ten
+run 0 "$data/rk4.lua" --json
+json "sorted((p['row'], p['col']) for p in d['problems'] if p['kind'] == 'symplectic' and p['matrix'] == 'A') == [(i, j) for i in range(1, 5) for j in range(i, 5)]"
+json "all('value' in p and p['expected'] == '0' for p in d['problems'] if p['kind'] == 'symplectic')"
+run 0 "$data/rk4.lua"
+grep_out "pair (2, 3): b_i a_ij + b_j a_ji - b_i b_j = 0.0555556, not 0"
+
+# typo in a short decimal: b[1] = 0.51 named, 1/2 asked for; the defects
+# printed exclude 0 visibly
+run 1 "$data/gauss2_b051.lua" --json
+json "any(p['kind'] == 'rowsum' and p['matrix'] == 'b' and p['row'] == 1 and p.get('diagnosed') for p in d['problems'])"
+run 1 "$data/gauss2_b051.lua"
+grep_out "b\[1\] = 0.51; sum b = 1 and symplecticity both ask for 0.5"
+grep_out "sum of b is in \[1.004, 1.016\], not 1 (defect in \[0.00499, 0.0151\])"
+if grep -q "+/-" "$work/stdout"; then fail "a message prints a ball as +/-"; cat "$work/stdout"; fi
+
+# a claim order = p needs order p + 1 to fail: Gauss-8 (order 16) claimed of
+# order 10 is false (orders up to 11 hold); claimed of order 16 it is
+# undecided, order 17 being beyond the 12 supported
+sed 's/^  s = 8,$/  s = 8,\n  order = 10,/' "$src/tableaux/generated/gauss_legendre_s8.lua" >"$work/g8_10.lua"
+run 1 "$work/g8_10.lua" --json
+json "d['claims']['order']['holds'] is False and d['max_order'] == 11 and d['order'] == 11 and d['order_status'] == 'at_least'"
+sed 's/^  s = 8,$/  s = 8,\n  order = 16,/' "$src/tableaux/generated/gauss_legendre_s8.lua" >"$work/g8_16.lua"
+run 1 "$work/g8_16.lua" --json
+json "d['claims']['order']['holds'] is None and d['claims']['order']['beyond_max_order'] is True"
+json "any(p['kind'] == 'claim' and 'order 17' in p['message'] for p in d['problems'])"
+
+# --help states the rule
+"$vigen" check --help >"$work/stdout" 2>&1
+grep_out "within the precision of the"
+grep_out "two successive precisions"
 
 # --max-order 10 works
 run 0 "$pub/gauss_3.lua" --max-order 10 --json

@@ -15,7 +15,11 @@
  *    (kicks 7/24, 3/4, -1/24; drifts 2/3, -2/3, 1) has order 3 for
  *    H = T(p) + V(q);
  *  - Gauss methods computed here independently as collocation methods
- *    (Legendre roots from arb, Lagrange polynomials integrated exactly).
+ *    (Legendre roots from arb, Lagrange polynomials integrated exactly);
+ *  - the symplecticity defect of a pair is b_i a~_ij + b~_j a_ji - b_i b~_j by
+ *    definition (GNI Thm VI.4.6), computed here from the exact entries.
+ * Deliberately broken copies change an entry by a known exact amount (1/10^45,
+ * e^-110, 1/5 for 1/6, 0.51 for 1/2): the defects they cause follow.
  */
 #define _GNU_SOURCE
 #include <stdio.h>
@@ -71,6 +75,25 @@ static int check(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *again
     return rc;
 }
 
+/* check() with a starting precision and a cap (0: defaults). */
+static int check_prec(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against, int P, slong prec,
+                      slong max_prec)
+{
+    vigen_check_options opt;
+    vigen_check_options_init(&opt);
+    opt.max_order = P;
+    opt.path = t->name;
+    if (prec) opt.prec = prec;
+    if (max_prec) opt.max_prec = max_prec;
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_check_report_init(rep);
+    int rc = vigen_check_tableau(rep, t, against, &opt, &err);
+    if (rc != VIGEN_OK) fprintf(stderr, "check failed: %s\n", err.message ? err.message : "?");
+    vigen_error_clear(&err);
+    return rc;
+}
+
 static const vigen_check_level *order_of(const vigen_check_report *rep, int family)
 {
     return &rep->orders[family].level;
@@ -98,6 +121,65 @@ static const vigen_check_problem *find_problem(const vigen_check_report *rep, in
         if (p->kind == kind && p->matrix && strcmp(p->matrix, matrix) == 0 && p->row == row && p->col == col) return p;
     }
     return NULL;
+}
+
+/* The problem that lists one failed condition (not a diagnosis). */
+static const vigen_check_problem *find_listed(const vigen_check_report *rep, int kind, const char *matrix, slong row,
+                                              slong col)
+{
+    for (slong k = 0; k < rep->nproblems; k++) {
+        const vigen_check_problem *p = rep->problems + k;
+        if (p->kind == kind && !p->diagnosed && p->matrix && strcmp(p->matrix, matrix) == 0 && p->row == row &&
+            p->col == col)
+            return p;
+    }
+    return NULL;
+}
+
+static const vigen_check_problem *find_diagnosis(const vigen_check_report *rep, int kind)
+{
+    for (slong k = 0; k < rep->nproblems; k++)
+        if (rep->problems[k].kind == kind && rep->problems[k].diagnosed) return rep->problems + k;
+    return NULL;
+}
+
+/* The defect printed in a message of a failed condition ("defect 0.01",
+ * "defect in [0.005, 0.015]", "... = -0.0277778, not 0", "... is in [lo, hi],
+ * not 0"): 1 when the printed numbers exclude 0, 0 when they do not, -1 when
+ * nothing can be read. */
+static int printed_defect_excludes_zero(const char *msg)
+{
+    const char *p = strstr(msg, "defect ");
+    if (p) p += 7;
+    else {
+        const char *q = strstr(msg, " is in ");
+        const char *r = NULL;
+        for (const char *x = strstr(msg, " = "); x; x = strstr(x + 1, " = ")) r = x;
+        if (q) p = q + 7;
+        else if (r) p = r + 3;
+        else return -1;
+    }
+    if (strncmp(p, "in ", 3) == 0) p += 3;
+    double lo, hi;
+    if (*p == '[') {
+        if (sscanf(p, "[%lf, %lf]", &lo, &hi) != 2) return -1;
+    } else {
+        if (sscanf(p, "%lf", &lo) != 1) return -1;
+        hi = lo;
+    }
+    return lo > 0 || hi < 0;
+}
+
+/* x = the value of the exact expression text. */
+static void eval_text(arb_t x, const char *text, slong prec)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    if (vigen_expr_eval_string(x, text, prec, &err) != VIGEN_OK) {
+        fprintf(stderr, "%s: %s\n", text, err.message ? err.message : "?");
+        arb_indeterminate(x);
+    }
+    vigen_error_clear(&err);
 }
 
 /* ----------------------------------------------------- published tableaux */
@@ -307,9 +389,38 @@ static void test_lobatto3(void)
         CHECK(strstr(p->message, "At[2][1]") != NULL);
         arb_clear(sixth);
     }
-    p = find_problem(&rep, VIGEN_PROBLEM_SYMPLECTIC, "At", 2, 1);   /* the diagnosis names it for both */
-    CHECK(p != NULL && p->diagnosed);
-    CHECK(rep.nproblems == 2);
+    p = find_diagnosis(&rep, VIGEN_PROBLEM_SYMPLECTIC);   /* the diagnosis names it for both */
+    CHECK(p != NULL && p->row == 2 && p->col == 1 && strcmp(p->matrix, "At") == 0);
+    /* and every failed condition is listed: row 2 of At sums to 1/5 + 1/3 =
+     * 8/15, not ct_2 = 1/2; the only pair involving at_21 is (2, 1), with
+     * b_2 at_21 + b_1 a_12 - b_2 b_1 = (2/3)(1/5) + 0 - (2/3)(1/6) = 1/45 */
+    p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "At", 2, 0);
+    CHECK(p != NULL && !p->undecided);
+    if (p) {
+        arb_t d, want;
+        arb_init(d);
+        arb_init(want);
+        arb_sub(d, p->value, p->expected, 256);
+        arb_set_ui(want, 1);
+        arb_div_ui(want, want, 30, 256);   /* 8/15 - 1/2 */
+        CHECK_CLOSE(d, want, 35, 256);
+        CHECK(printed_defect_excludes_zero(p->message) == 1);
+        arb_clear(d);
+        arb_clear(want);
+    }
+    p = find_listed(&rep, VIGEN_PROBLEM_SYMPLECTIC, "At", 2, 1);
+    CHECK(p != NULL && !p->undecided);
+    if (p) {
+        arb_t want;
+        arb_init(want);
+        arb_set_ui(want, 1);
+        arb_div_ui(want, want, 45, 256);
+        CHECK_CLOSE(p->value, want, 35, 256);
+        CHECK(printed_defect_excludes_zero(p->message) == 1);
+        arb_clear(want);
+    }
+    CHECK(rep.row_fail == 1 && rep.sym_fail == 1);
+    CHECK(rep.nproblems == 4);   /* two diagnoses (row sum, symplecticity), two listed failures */
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&u);
 }
@@ -343,6 +454,81 @@ static void test_rk4(void)
         symp += rep.problems[k].kind == VIGEN_PROBLEM_SYMPLECTIC;
     }
     CHECK(claims == 1 && symp > 0);
+    vigen_check_report_clear(&rep);
+
+    /* without any claim, every failing pair is still named (issue 3: "naming
+     * each failing pair"): with At = A the pairs are i <= j, and for RK4 all
+     * ten defects b_i a_ij + b_j a_ji - b_i b_j are nonzero (-1/36, 1/9,
+     * -1/18, -1/36, -1/9, 1/18, -1/18, -1/9, 1/9, -1/36) */
+    t.claim_symplectic = -1;
+    t.claim_order = -1;
+    CHECK(check(&rep, &t, NULL, 4) == VIGEN_OK);
+    CHECK(rep.exit_code == 0 && rep.sym_fail == 10);
+    arb_t aij, aji, bi, bj, want;
+    arb_init(aij);
+    arb_init(aji);
+    arb_init(bi);
+    arb_init(bj);
+    arb_init(want);
+    int pairs = 0;
+    for (slong i = 0; i < 4; i++)
+        for (slong j = i; j < 4; j++) {
+            eval_text(aij, rk4_A[i * 4 + j], 256);
+            eval_text(aji, rk4_A[j * 4 + i], 256);
+            eval_text(bi, rk4_b[i], 256);
+            eval_text(bj, rk4_b[j], 256);
+            arb_mul(want, bi, aij, 256);
+            arb_addmul(want, bj, aji, 256);
+            arb_submul(want, bi, bj, 256);
+            CHECK(!arb_contains_zero(want));
+            const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_SYMPLECTIC, "A", i + 1, j + 1);
+            CHECK_MSG(p != NULL, "pair (%ld, %ld) not listed", (long)(i + 1), (long)(j + 1));
+            if (p) {
+                pairs++;
+                CHECK_CLOSE(p->value, want, 35, 256);
+                CHECK(p->has_expected && arb_is_zero(p->expected));
+                CHECK(printed_defect_excludes_zero(p->message) == 1);
+            }
+        }
+    CHECK(pairs == 10);
+    char *text = render(&rep, 0);
+    CHECK(strstr(text, "pair (1, 1)") != NULL && strstr(text, "pair (4, 4)") != NULL);
+    free(text);
+    char *json = render(&rep, 1);
+    CHECK(strstr(json, "\"kind\": \"symplectic\", \"matrix\": \"A\", \"row\": 3, \"col\": 4") != NULL);
+    free(json);
+    vigen_check_report_clear(&rep);
+    arb_clear(aij);
+    arb_clear(aji);
+    arb_clear(bi);
+    arb_clear(bj);
+    arb_clear(want);
+    vigen_tableau_clear(&t);
+
+    /* 7 stages with A = 0 and b_i = 1/7: every pair has the defect
+     * -b_i b_j = -1/49, 28 pairs; the text names 20 and says how many more,
+     * the JSON names all 28 */
+    const char *c7[7], *A7[49], *b7[7];
+    for (int k = 0; k < 7; k++) c7[k] = "0", b7[k] = "1/7";
+    for (int k = 0; k < 49; k++) A7[k] = "0";
+    make(&t, "seven zero stages", 7, c7, A7, b7, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
+    CHECK(rep.sym_fail == 28);
+    slong listed = 0;
+    for (slong k = 0; k < rep.nproblems; k++) listed += rep.problems[k].kind == VIGEN_PROBLEM_SYMPLECTIC;
+    CHECK(listed == 28);
+    text = render(&rep, 0);
+    slong lines = 0;
+    for (const char *q = strstr(text, "  pair ("); q; q = strstr(q + 1, "  pair (")) lines++;
+    CHECK_MSG(lines == 20, "%ld pair lines", (long)lines);
+    CHECK(strstr(text, "and 8 more pairs") != NULL);
+    free(text);
+    json = render(&rep, 1);
+    slong in_json = 0;
+    for (const char *q = strstr(json, "\"kind\": \"symplectic\""); q; q = strstr(q + 1, "\"kind\": \"symplectic\""))
+        in_json++;
+    CHECK(in_json == 28);
+    free(json);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
 }
@@ -492,6 +678,49 @@ static void test_other_typos(void)
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
 
+    /* b[1] of Gauss-2 typed as the short decimal 0.51 (the ball [0.505,
+     * 0.515]): sum b = 1 and symplecticity fail; solved with b[1] as an exact
+     * unknown they ask for 1/2 (b[2] = 1/2 is exact), whereas b[2] cannot
+     * explain the pairs (b_2 = 1 - b_1 leaves the pair (1, 2) at about -0.003
+     * .. -0.008 over the whole ball) */
+    const char *b051[] = {"0.51", "1/2"};
+    make(&t, "gauss2, b = 0.51", 2, gauss2_c, gauss2_A, b051, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
+    CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO);
+    p = find_diagnosis(&rep, VIGEN_PROBLEM_ROWSUM);
+    CHECK(p != NULL && strcmp(p->matrix, "b") == 0 && p->row == 1);
+    if (p) {
+        CHECK_CLOSE(p->expected, half, 35, 256);
+        CHECK(strstr(p->message, "b[1] = 0.51;") != NULL);
+    }
+    /* the messages of failed conditions print defects that visibly exclude 0 */
+    for (slong k = 0; k < rep.nproblems; k++) {
+        const vigen_check_problem *q = rep.problems + k;
+        if (q->kind == VIGEN_PROBLEM_CLAIM || q->diagnosed) continue;
+        CHECK_MSG(printed_defect_excludes_zero(q->message) == 1, "%s", q->message);
+        CHECK_MSG(strstr(q->message, "+/-") == NULL, "%s", q->message);
+    }
+    /* the pair (1, 1), 2 b_1 a_11 - b_1^2 = b_1 (1/2 - b_1), ranges over
+     * [-0.007725, -0.002525] for b_1 in [0.505, 0.515]: it fails (b_1 occurs
+     * three times, but is one number) */
+    p = find_listed(&rep, VIGEN_PROBLEM_SYMPLECTIC, "A", 1, 1);
+    CHECK(p != NULL);
+    if (p) {
+        arb_t lo, hi;
+        arb_init(lo);
+        arb_init(hi);
+        arb_set_str(lo, "-0.007725", 128);
+        arb_set_str(hi, "-0.002525", 128);
+        CHECK(!arb_contains_zero(p->value) && arb_contains(p->value, lo) && arb_contains(p->value, hi));
+        arb_clear(lo);
+        arb_clear(hi);
+    }
+    /* sum b = 0.51 + 1/2 lies in [1.005, 1.015]: its defect in [0.005, 0.015] */
+    p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "b", 0, 0);
+    CHECK(p != NULL && strstr(p->message, "defect in [0.00499, 0.0151]") != NULL);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
     /* c[1] of Gauss-2 is 1/2 - sqrt(3)/5: only the row sum, only c[1] */
     const char *c[] = {"1/2 - sqrt(3)/5", "1/2 + sqrt(3)/6"};
     make(&t, "gauss2, c typo", 2, c, gauss2_A, gauss2_b, NULL, NULL, NULL);
@@ -521,24 +750,78 @@ static void test_other_typos(void)
     arb_clear(x);
 }
 
-static void test_undecided_and_refinement(void)
+/* Rounded decimal data: a condition holds within the precision of the data
+ * when its ball, which carries the half-ulp radii of the entries, contains 0. */
+static void test_rounded_data(void)
 {
     vigen_check_report rep;
     vigen_tableau t;
-    /* Gauss-2 to 6 digits: every condition that holds has a ball of radius
-     * ~1e-6 > 2^-30 around 0: undecided, and more precision cannot help */
+    /* Gauss-2 to 6 digits: the conditions of order <= 4 hold within the
+     * precision of the data, those of order 5 fail (Gauss-2 has order 4) */
     const char *c[] = {"0.211325", "0.788675"};
-    const char *A[] = {"0.25", "-0.0386751", "0.538675", "0.25"};
-    const char *b[] = {"0.5", "0.5"};
+    const char *A[] = {"0.250000", "-0.0386751", "0.538675", "0.250000"};
+    const char *b[] = {"0.500000", "0.500000"};
     make(&t, "gauss2, 6 digits", 2, c, A, b, NULL, NULL, NULL);
+    t.claim_order = 4;
+    t.claim_symplectic = 1;
     CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
-    CHECK(rep.consistent == VIGEN_CHECK_UNDECIDED);
-    CHECK(rep.orders[0].level.undecided);
-    CHECK(rep.exit_code == 1);
-    CHECK(rep.rounds <= 2);
+    CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_YES);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 4, 0, 0);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_YES && rep.claim_symplectic_status == VIGEN_CHECK_YES);
+    CHECK(rep.exit_code == 0 && rep.rounds == 1 && rep.rounded_entries && !rep.exact_entries);
+    /* decided within the data; the largest radius is at least the half-ulp
+     * 5e-7 of c_1, which the row sum c_1 = a_11 + a_12 carries */
+    CHECK(rep.holds[VIGEN_CHECK_SECT_ROWSUM].data == 3 && rep.holds[VIGEN_CHECK_SECT_ROWSUM].exact == 0);
+    CHECK(mag_cmp_2exp_si(rep.holds[VIGEN_CHECK_SECT_ROWSUM].radius, -21) > 0);   /* 2^-21 = 4.8e-7 */
+    CHECK(mag_cmp_2exp_si(rep.holds[VIGEN_CHECK_SECT_ROWSUM].radius, -16) < 0);
+    char *text = render(&rep, 0);
+    CHECK(strstr(text, "within the precision of the data") != NULL);
+    free(text);
+    char *json = render(&rep, 1);
+    CHECK(strstr(json, "\"within_data_precision\": 3") != NULL);
+    free(json);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
 
+    /* Gauss-3 rounded to 9 digits, as `vigen generate --digits 9` writes it:
+     * consistent, symplectic and of order 6 within the precision of the data
+     * (the order-7 defects, such as b . c^6 - 1/7, are far above 1e-9) */
+    char *c9[3], *A9[9], *b9[3];
+    arb_t x;
+    arb_init(x);
+    for (int k = 0; k < 3; k++) {
+        eval_text(x, gauss3_c[k], 256);
+        c9[k] = vigen_decimal_format(x, 9);
+        eval_text(x, gauss3_b[k], 256);
+        b9[k] = vigen_decimal_format(x, 9);
+    }
+    for (int k = 0; k < 9; k++) {
+        eval_text(x, gauss3_A[k], 256);
+        A9[k] = vigen_decimal_format(x, 9);
+    }
+    make(&t, "gauss3, 9 digits", 3, (const char *const *)c9, (const char *const *)A9, (const char *const *)b9,
+         (const char *const *)A9, (const char *const *)c9, NULL);
+    t.claim_order = 6;
+    t.claim_symplectic = 1;
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_YES);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 6, 0, 0);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_SEPARABLE), 6, 0, 0);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_YES && rep.exit_code == 0);
+    CHECK(rep.holds[VIGEN_CHECK_SECT_ORDER].data > 0);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    for (int k = 0; k < 3; k++) { free(c9[k]); free(b9[k]); }
+    for (int k = 0; k < 9; k++) free(A9[k]);
+    arb_clear(x);
+}
+
+/* Exact entries: a condition holds only when its ball is tight and the same
+ * verdicts come out at two precisions. */
+static void test_exact_refinement(void)
+{
+    vigen_check_report rep;
+    vigen_tableau t, ref;
     /* an exact entry that 128 bits cannot resolve: c = exp(100) + 1/2 - exp(100)
      * is decided after raising the precision */
     const char *c1[] = {"exp(100) + 1/2 - exp(100)"};
@@ -548,8 +831,96 @@ static void test_undecided_and_refinement(void)
     CHECK(rep.consistent == VIGEN_CHECK_YES);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 2, 0, 0);
     CHECK_LEVEL(&rep.C[0], 1, 0, 0);
+    CHECK(rep.holds[VIGEN_CHECK_SECT_ROWSUM].exact == 2 && rep.holds[VIGEN_CHECK_SECT_ROWSUM].data == 0);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
+
+    /* Gauss-2 with a_11 = 1/4 + 1/10^45: the row sum of row 1 and the pair
+     * (1, 1) (2 b_1 a_11 - b_1^2 = 1/10^45) are off by exactly 1/10^45; found
+     * from the default start, and from --prec 128 (where every ball contains
+     * 0 with a radius near 2^-128) by confirming at higher precision */
+    const char *A45[] = {"1/4 + 1/10^45", "1/4 - sqrt(3)/6", "1/4 + sqrt(3)/6", "1/4"};
+    arb_t eps, d;
+    arb_init(eps);
+    arb_init(d);
+    eval_text(eps, "1/10^45", 512);
+    make(&ref, "gauss2", 2, gauss2_c, gauss2_A, gauss2_b, NULL, NULL, NULL);
+    for (int start = 0; start < 2; start++) {
+        make(&t, "gauss2, a11 + 1e-45", 2, gauss2_c, A45, gauss2_b, NULL, NULL, NULL);
+        t.claim_order = 4;
+        t.claim_symplectic = 1;
+        CHECK(check_prec(&rep, &t, NULL, 6, start ? 128 : 0, 0) == VIGEN_OK);
+        CHECK_MSG(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO, "start %d", start);
+        CHECK(rep.exit_code == 1);
+        const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "A", 1, 0);
+        CHECK(p != NULL);
+        if (p) {
+            arb_sub(d, p->value, p->expected, 1024);
+            CHECK_CLOSE(d, eps, 30, 1024);
+        }
+        p = find_listed(&rep, VIGEN_PROBLEM_SYMPLECTIC, "A", 1, 1);
+        CHECK(p != NULL);
+        if (p) CHECK_CLOSE(p->value, eps, 30, 1024);
+        CHECK(rep.claim_order_status == VIGEN_CHECK_NO && rep.claim_symplectic_status == VIGEN_CHECK_NO);
+        CHECK(rep.prec > 150);   /* 10^-45 is about 2^-149.5 */
+        if (start) CHECK(rep.rounds >= 2);
+        vigen_check_report_clear(&rep);
+
+        /* --against has the same blind spot: the exact Gauss-2 differs in A[1][1] */
+        CHECK(check_prec(&rep, &ref, &t, 6, start ? 128 : 0, 0) == VIGEN_OK);
+        CHECK(rep.against_differences == 1 && rep.exit_code == 1);
+        CHECK(find_listed(&rep, VIGEN_PROBLEM_AGAINST, "A", 1, 1) != NULL);
+        vigen_check_report_clear(&rep);
+        vigen_tableau_clear(&t);
+    }
+    /* the exact Gauss-2 agrees with itself, exactly */
+    vigen_tableau ref2;
+    make(&ref2, "gauss2", 2, gauss2_c, gauss2_A, gauss2_b, NULL, NULL, NULL);
+    CHECK(check(&rep, &ref, &ref2, 6) == VIGEN_OK);
+    CHECK(rep.against_differences == 0 && rep.against_undecided == 0 && rep.exit_code == 0);
+    CHECK(rep.holds[VIGEN_CHECK_SECT_AGAINST].exact == 8);   /* c, A, b */
+    CHECK(rep.rounds == 2);   /* the holding exact conditions were confirmed at a second precision */
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&ref2);
+
+    /* a_11 = 1/4 + e^-110 (about 1.7e-48 = 2^-158.7): no literal shows the
+     * size, so 128 bits see every ball contain 0; doubling the precision to
+     * confirm finds the defect */
+    const char *Ae[] = {"1/4 + exp(-110)", "1/4 - sqrt(3)/6", "1/4 + sqrt(3)/6", "1/4"};
+    make(&t, "gauss2, a11 + exp(-110)", 2, gauss2_c, Ae, gauss2_b, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
+    CHECK(rep.prec_first == 128 && rep.rounds >= 3);
+    CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO);
+    {
+        const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "A", 1, 0);
+        CHECK(p != NULL);
+        if (p) {
+            eval_text(eps, "exp(-110)", 1024);
+            arb_sub(d, p->value, p->expected, 1024);
+            CHECK_CLOSE(d, eps, 30, 1024);
+        }
+    }
+    vigen_check_report_clear(&rep);
+    CHECK(check(&rep, &ref, &t, 6) == VIGEN_OK);
+    CHECK(rep.against_differences == 1);
+    vigen_check_report_clear(&rep);
+
+    /* with the refinement capped at 256 bits the round at 256 bits cannot be
+     * confirmed: the failure is certain, what held at 128 bits only is
+     * reported undecided (never "holds") */
+    CHECK(check_prec(&rep, &t, NULL, 4, 128, 128) == VIGEN_OK);
+    CHECK(rep.prec == 256 && rep.consistent == VIGEN_CHECK_NO);
+    CHECK(find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "A", 1, 0) != NULL);
+    CHECK(rep.undecided_left > 0 && rep.undecided_reason && strstr(rep.undecided_reason, "cap") != NULL);
+    /* row 2 (a_21 + a_22 = 1/2 + sqrt(3)/6 = c_2, true but with a radius) is
+     * undecided; sum b = 1/2 + 1/2 is exact (radius 0) and holds */
+    CHECK(rep.row_fail == 1 && rep.row_undecided == 1 && rep.holds[VIGEN_CHECK_SECT_ROWSUM].exact == 1);
+    CHECK(rep.exit_code == 1);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    vigen_tableau_clear(&ref);
+    arb_clear(eps);
+    arb_clear(d);
 }
 
 static void test_claims(void)
@@ -565,6 +936,48 @@ static void test_claims(void)
     CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);   /* max_order raised to 5 for the claim */
     CHECK(rep.max_order == 5);
     CHECK(rep.claim_order_status == VIGEN_CHECK_YES && rep.exit_code == 0);
+    vigen_check_report_clear(&rep);
+    t.claim_order = 5;   /* Gauss-2 has order 4 */
+    CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_NO && rep.exit_code == 1);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
+    /* order = p means the order is p, so order p + 1 must be seen to fail.
+     * Gauss-6 has order 12 (Hairer-Wanner II, IV.5): a claim of order 10 is
+     * false, which takes the conditions of order 11 */
+    gauss_balls(&t, 6, 192);
+    t.claim_order = 10;
+    double t0 = now();
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    printf("gauss6, claim order = 10 (orders <= 11): %.3f s\n", now() - t0);
+    CHECK(rep.max_order == 11);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 11, 1, 0);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_NO && !rep.claim_order_beyond && rep.exit_code == 1);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
+    /* Gauss-4 has order 8.  A claim of order 16 cannot be confirmed (order 17
+     * is beyond the 12 supported) while nothing up to --max-order fails: it is
+     * undecided, with the reason; with --max-order 10 the order 8 is found and
+     * the claim is false */
+    gauss_balls(&t, 4, 192);
+    t.claim_order = 16;
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK(rep.max_order == 8);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_UNDECIDED && rep.claim_order_beyond && rep.exit_code == 1);
+    const vigen_check_problem *p = NULL;
+    for (slong k = 0; k < rep.nproblems; k++)
+        if (rep.problems[k].kind == VIGEN_PROBLEM_CLAIM) p = rep.problems + k;
+    CHECK(p != NULL && p->undecided && strstr(p->message, "order 17") != NULL);
+    vigen_check_report_clear(&rep);
+    CHECK(check(&rep, &t, NULL, 10) == VIGEN_OK);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 8, 0, 0);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_NO && !rep.claim_order_beyond);
+    vigen_check_report_clear(&rep);
+    t.claim_order = 8;   /* true: order 9 fails */
+    CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
+    CHECK(rep.max_order == 9 && rep.claim_order_status == VIGEN_CHECK_YES && rep.exit_code == 0);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
 }
@@ -622,7 +1035,8 @@ int main(void)
     test_ruth3();
     test_perturbed_gauss3();
     test_other_typos();
-    test_undecided_and_refinement();
+    test_rounded_data();
+    test_exact_refinement();
     test_claims();
     test_collocation_and_speed();
     TEST_MAIN_END();

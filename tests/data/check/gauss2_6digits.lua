@@ -1,6 +1,8 @@
--- Gauss-2 rounded to 6 digits (test fixture for vigen check): the conditions
--- that hold can only be certified to about 1e-6, which is not enough to call
--- them holding (radius <= 2^-30): they are undecided, whatever the precision.
+-- Gauss-2 rounded to 6 digits (test fixture for vigen check): every entry
+-- stands for the ball of half a unit in its last digit.  The conditions of
+-- order <= 4 hold within the precision of the data (their balls contain 0);
+-- those of order 5 fail by far more than the data's radii (Gauss-2 has order
+-- exactly 4).
 return {
   name = "gauss2_6digits",
   s = 2,

@@ -1,0 +1,17 @@
+-- Gauss-2 (Hairer & Wanner II, Table IV.5.1) with exact entries, A[1][1]
+-- changed from 1/4 to 1/4 + 1/10^45 (test fixture for vigen check): row 1 of A
+-- no longer sums to c_1 and the pair (1, 1) of symplecticity fails, each by
+-- exactly 10^-45; the claims no longer hold.  Exact entries must be decided at
+-- a precision that sees 10^-45, whatever --prec starts from.
+return {
+  name = "gauss2_1e-45",
+  s = 2,
+  order = 4,
+  symplectic = true,
+  c = { "1/2 - sqrt(3)/6", "1/2 + sqrt(3)/6" },
+  A = {
+    { "1/4 + 1/10^45", "1/4 - sqrt(3)/6" },
+    { "1/4 + sqrt(3)/6", "1/4" },
+  },
+  b = { "1/2", "1/2" },
+}
