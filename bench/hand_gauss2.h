@@ -1,7 +1,8 @@
 /* hand_gauss2.h — a careful hand-written 2-stage Gauss stepper (fixed-point
- * iteration, the same round-off-aware stopping rule and starting values
- * extrapolated from the previous step as the emitted steppers, compensated
- * update), calling the problem's gradients directly.  Instantiate with
+ * iteration with Gauss-Seidel sweeps over the partitions, the same
+ * round-off-aware stopping rule and starting values extrapolated from the
+ * previous step as the emitted steppers, compensated update), calling the
+ * problem's gradients directly.  Instantiate with
  *   #define HG2_NAME name  #define HG2_DQ dq_fn  #define HG2_DP dp_fn
  *   #include "hand_gauss2.h"
  * where dq_fn, dp_fn have the vigen_grad_fn signature (static inline is best). */
@@ -58,42 +59,51 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
         memcpy(F2, F1, n * sizeof(double));
         memcpy(G2, G1, n * sizeof(double));
     }
+    /* starting stage values, then Gauss-Seidel sweeps: G(Q, P), P, F(Q, P), Q */
+    for (size_t k = 0; k < n; k++) {
+        Q1[k] = q[k] + h * (a11 * F1[k] + a12 * F2[k]);
+        Q2[k] = q[k] + h * (a21 * F1[k] + a22 * F2[k]);
+        P1[k] = p[k] - h * (a11 * G1[k] + a12 * G2[k]);
+        P2[k] = p[k] - h * (a21 * G1[k] + a22 * G2[k]);
+    }
     double prev1 = -1, prev2 = -1;
-    int strikes = 0, it = 0, first = 1;
+    int strikes = 0, it = 0;
     for (;;) {
         double dq = 0, sq = 0, dp = 0, sp = 0;
+        HG2_DQ(*t + c1 * h, Q1, P1, G1, ctx);
+        HG2_DQ(*t + c2 * h, Q2, P2, G2, ctx);
+        for (size_t k = 0; k < n; k++) {
+            double u1 = p[k] - h * (a11 * G1[k] + a12 * G2[k]);
+            double u2 = p[k] - h * (a21 * G1[k] + a22 * G2[k]);
+            double e1 = fabs(u1 - P1[k]), e2 = fabs(u2 - P2[k]);
+            dp = e1 > dp ? e1 : dp; dp = e2 > dp ? e2 : dp;
+            e1 = fabs(u1); e2 = fabs(u2);
+            sp = e1 > sp ? e1 : sp; sp = e2 > sp ? e2 : sp;
+            P1[k] = u1; P2[k] = u2;
+        }
+        HG2_DP(*t + c1 * h, Q1, P1, F1, ctx);
+        HG2_DP(*t + c2 * h, Q2, P2, F2, ctx);
         for (size_t k = 0; k < n; k++) {
             double v1 = q[k] + h * (a11 * F1[k] + a12 * F2[k]);
             double v2 = q[k] + h * (a21 * F1[k] + a22 * F2[k]);
-            double u1 = p[k] - h * (a11 * G1[k] + a12 * G2[k]);
-            double u2 = p[k] - h * (a21 * G1[k] + a22 * G2[k]);
-            double d1 = fabs(v1 - Q1[k]), d2 = fabs(v2 - Q2[k]), e1 = fabs(u1 - P1[k]), e2 = fabs(u2 - P2[k]);
+            double d1 = fabs(v1 - Q1[k]), d2 = fabs(v2 - Q2[k]);
             dq = d1 > dq ? d1 : dq; dq = d2 > dq ? d2 : dq;
-            dp = e1 > dp ? e1 : dp; dp = e2 > dp ? e2 : dp;
-            d1 = fabs(v1); d2 = fabs(v2); e1 = fabs(u1); e2 = fabs(u2);
+            d1 = fabs(v1); d2 = fabs(v2);
             sq = d1 > sq ? d1 : sq; sq = d2 > sq ? d2 : sq;
-            sp = e1 > sp ? e1 : sp; sp = e2 > sp ? e2 : sp;
-            Q1[k] = v1; Q2[k] = v2; P1[k] = u1; P2[k] = u2;
+            Q1[k] = v1; Q2[k] = v2;
         }
-        if (!first) {
-            double rq = dq == 0 ? 0 : dq / sq, rp = dp == 0 ? 0 : dp / sp, delta = rq > rp ? rq : rp;
-            if (!(delta < 1e300)) return 1;
-            if (delta == 0) break;
-            if (prev2 >= 0 && delta >= prev2) {
-                if (delta <= 2.3e-10 || prev1 <= 2.3e-10) break;
-                if (++strikes >= 3) return 1;
-            }
-            if (it >= 50) return 1;
-            prev2 = prev1;
-            prev1 = delta;
-        }
-        first = 0;
-        HG2_DP(*t + c1 * h, Q1, P1, F1, ctx);
-        HG2_DQ(*t + c1 * h, Q1, P1, G1, ctx);
-        HG2_DP(*t + c2 * h, Q2, P2, F2, ctx);
-        HG2_DQ(*t + c2 * h, Q2, P2, G2, ctx);
         w->evals += 4;
         it++;
+        double rq = dq == 0 ? 0 : dq / sq, rp = dp == 0 ? 0 : dp / sp, delta = rq > rp ? rq : rp;
+        if (!(delta < 1e300)) return 1;
+        if (delta == 0) break;
+        if (prev2 >= 0 && delta >= prev2) {
+            if (delta <= 2.3e-10 || prev1 <= 2.3e-10) break;
+            if (++strikes >= 3) return 1;
+        }
+        if (it >= 50) return 1;
+        prev2 = prev1;
+        prev1 = delta;
     }
     w->iters += (unsigned long)it;
     for (size_t k = 0; k < n; k++) {     /* compensated (TwoSum) update */

@@ -5,6 +5,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__linux__)
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
 #include <arb.h>
 #include <arb_mat.h>
 #include "emit.h"
@@ -658,6 +662,99 @@ static int put_explicit(vigen_strbuf *sb, emit_ctx *E, const plan *P, const char
     return rc;
 }
 
+/* ------------------------------------------------------- template lookup */
+
+#if defined(__linux__)
+/* Whether path names a file that can be read. */
+static int readable_file(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (f == NULL) return 0;
+    fclose(f);
+    return 1;
+}
+
+/* The directory of the running executable (heap string), or NULL. */
+static char *exe_dir(void)
+{
+    size_t cap = 256;
+    for (;;) {
+        char *buf = malloc(cap);
+        if (buf == NULL) return NULL;
+        ssize_t n = readlink("/proc/self/exe", buf, cap);
+        if (n < 0) { free(buf); return NULL; }
+        if ((size_t)n < cap) {
+            buf[n] = '\0';
+            char *slash = strrchr(buf, '/');
+            if (slash == NULL) { free(buf); return NULL; }
+            if (slash == buf) slash[1] = '\0';
+            else *slash = '\0';
+            return buf;
+        }
+        free(buf);
+        cap *= 2;
+    }
+}
+
+static int same_dir(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* Whether directory dir (an absolute path) is top or lies below it. */
+static int within_dir(const char *dir, const char *top)
+{
+    char *d = vigen_strdup(dir);
+    int found = 0;
+    for (;;) {
+        if (same_dir(d, top)) { found = 1; break; }
+        char *slash = strrchr(d, '/');
+        if (slash == NULL || slash == d) break;
+        *slash = '\0';
+    }
+    free(d);
+    return found;
+}
+#endif
+
+/* The templates directory (heap string): $VIGEN_TEMPLATE_DIR when set; else,
+ * for an installed vigen (an executable outside its build directory
+ * VIGEN_BINARY_DIR, so that the tests built there never read an installed
+ * copy), the templates installed with it: first relative to the
+ * executable (VIGEN_TEMPLATE_INSTALL_RELDIR, e.g. ../share/vigen/templates,
+ * so that a relocated install prefix works), then VIGEN_TEMPLATE_INSTALL_DIR
+ * (absolute, from the configured prefix); else vigen_template_dir(), which
+ * falls back to the source tree's templates/. */
+static char *emit_template_dir(void)
+{
+    const char *env = getenv("VIGEN_TEMPLATE_DIR");
+    if (env && *env) return vigen_strdup(env);
+#if defined(__linux__) && defined(VIGEN_TEMPLATE_INSTALL_RELDIR)
+    char *exe = exe_dir();
+    int in_build_tree = 0;
+#if defined(VIGEN_BINARY_DIR)
+    in_build_tree = exe != NULL && within_dir(exe, VIGEN_BINARY_DIR);
+#endif
+    if (exe != NULL && !in_build_tree) {
+        char *dir = vigen_strdup_printf("%s/%s", exe, VIGEN_TEMPLATE_INSTALL_RELDIR);
+        char *probe = vigen_strdup_printf("%s/stepper.c.in", dir);
+        int found = readable_file(probe);
+        free(probe);
+        if (found) { free(exe); return dir; }
+        free(dir);
+    }
+#if defined(VIGEN_TEMPLATE_INSTALL_DIR)
+    if (!in_build_tree && readable_file(VIGEN_TEMPLATE_INSTALL_DIR "/stepper.c.in")) {
+        free(exe);
+        return vigen_strdup(VIGEN_TEMPLATE_INSTALL_DIR);
+    }
+#endif
+    free(exe);
+#endif
+    return vigen_strdup(vigen_template_dir());
+}
+
 /* ------------------------------------------------------------- rendering */
 
 static int evaluate(emit_ctx *E, vigen_error *err)
@@ -887,7 +984,7 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     if (rc == VIGEN_OK) {
         /* the workspace block size depends on nx, known only from the data: let
          * the template compute it from narrays_base + nx */
-        char *dir = vigen_strdup(vigen_template_dir());
+        char *dir = emit_template_dir();
         char *hp = vigen_strdup_printf("%s/stepper.h.in", dir);
         char *cp = vigen_strdup_printf("%s/stepper.c.in", dir);
         rc = vigen_template_render_file(h_text, hp, data.data, err);

@@ -1,0 +1,87 @@
+# VigenStepper.cmake — vigen_add_stepper: compile a tableau into a stepper
+# library at build time.  Included by vigenConfig.cmake (find_package(vigen)).
+#
+#   vigen_add_stepper(TARGET <target> TABLEAU <file.lua> NAME <name>
+#                     [REAL double|long-double|float128]
+#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT])
+#
+# adds a build rule that runs
+#   vigen emit <file.lua> --name <name> --real <REAL> -o <dir> -q
+# writing <dir>/<name>.c and <dir>/<name>.h (default <dir>:
+# ${CMAKE_CURRENT_BINARY_DIR}/vigen/<target>), re-run when the tableau file,
+# the vigen executable or its templates change, and a static library
+# <target> compiled from <name>.c, with <dir> on its public include path and
+# linked to vigen::runtime.  A program then does
+#   target_link_libraries(app PRIVATE <target>)
+# and `#include "<name>.h"`.  TABLEAU is relative to the current source
+# directory.  NAME must be a C identifier (it prefixes every emitted symbol);
+# REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
+# decimal entries as written when they have too few digits for REAL).
+# Compile the program without -ffast-math (the emitted code refuses it).
+
+function(vigen_add_stepper)
+  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT" "TARGET;TABLEAU;NAME;REAL;OUTPUT_DIR" "")
+  if(VAS_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "vigen_add_stepper: unknown arguments: ${VAS_UNPARSED_ARGUMENTS}")
+  endif()
+  foreach(req TARGET TABLEAU NAME)
+    if(NOT VAS_${req})
+      message(FATAL_ERROR "vigen_add_stepper: ${req} is required")
+    endif()
+  endforeach()
+  if(NOT TARGET vigen::vigen OR NOT TARGET vigen::runtime)
+    message(FATAL_ERROR "vigen_add_stepper: targets vigen::vigen and vigen::runtime not found; "
+                        "use find_package(vigen REQUIRED) first")
+  endif()
+
+  # The emitter would sanitise any other name (and then write other files):
+  # accept only names it keeps as they are (see vigen_emit_identifier in
+  # generator/emit.c for the same rule and keyword list).
+  set(keywords auto break case char const continue default do double else enum extern float for
+      goto if inline int long register restrict return short signed sizeof static struct switch
+      typedef union unsigned void volatile while bool true false asm typeof main)
+  list(FIND keywords "${VAS_NAME}" keyword_index)
+  if(NOT VAS_NAME MATCHES "^[A-Za-z][A-Za-z0-9_]*$" OR NOT keyword_index EQUAL -1)
+    message(FATAL_ERROR "vigen_add_stepper: NAME '${VAS_NAME}' is not usable as a C identifier "
+                        "prefix (letters, digits and '_', starting with a letter, not a keyword)")
+  endif()
+
+  if(NOT VAS_REAL)
+    set(VAS_REAL double)
+  endif()
+  if(NOT VAS_REAL MATCHES "^(double|long-double|float128)$")
+    message(FATAL_ERROR "vigen_add_stepper: REAL must be double, long-double or float128, not '${VAS_REAL}'")
+  endif()
+
+  get_filename_component(tableau "${VAS_TABLEAU}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+  if(VAS_OUTPUT_DIR)
+    get_filename_component(outdir "${VAS_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+  else()
+    set(outdir "${CMAKE_CURRENT_BINARY_DIR}/vigen/${VAS_TARGET}")
+  endif()
+
+  set(extra)
+  if(VAS_ALLOW_INEXACT)
+    list(APPEND extra --allow-inexact)
+  endif()
+  set(deps "${tableau}" vigen::vigen)
+  if(vigen_TEMPLATE_DIR)
+    list(APPEND deps "${vigen_TEMPLATE_DIR}/stepper.c.in" "${vigen_TEMPLATE_DIR}/stepper.h.in")
+  endif()
+  get_filename_component(tableau_base "${tableau}" NAME)
+
+  add_custom_command(
+    OUTPUT "${outdir}/${VAS_NAME}.c" "${outdir}/${VAS_NAME}.h"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${outdir}"
+    COMMAND "$<TARGET_FILE:vigen::vigen>" emit "${tableau}" --name "${VAS_NAME}" --real "${VAS_REAL}"
+            -o "${outdir}" -q ${extra}
+    DEPENDS ${deps}
+    COMMENT "vigen emit ${tableau_base} --name ${VAS_NAME} --real ${VAS_REAL}"
+    VERBATIM)
+
+  add_library(${VAS_TARGET} STATIC "${outdir}/${VAS_NAME}.c" "${outdir}/${VAS_NAME}.h")
+  target_include_directories(${VAS_TARGET} PUBLIC "${outdir}")
+  target_link_libraries(${VAS_TARGET} PUBLIC vigen::runtime)
+  set_target_properties(${VAS_TARGET} PROPERTIES C_STANDARD 11 C_STANDARD_REQUIRED ON
+    POSITION_INDEPENDENT_CODE ON)
+endfunction()
