@@ -59,7 +59,9 @@ extern "C" {
 /* ---- status codes (values are stable; new codes are appended) ---------- */
 enum {
     VIGEN_SUCCESS = 0,
-    VIGEN_EINVAL,        /* invalid argument: NULL pointer, dim 0, h not finite */
+    VIGEN_EINVAL,        /* invalid argument: NULL pointer, dim 0, h not finite (an
+                          * emitted NAME_step checks pointers only when compiled
+                          * with -DVIGEN_CHECK_ARGS) */
     VIGEN_ENOMEM,        /* allocation failed */
     VIGEN_ENOCONV,       /* stage iteration stopped decreasing above the tolerance (diverges) */
     VIGEN_EMAXITER,      /* stage iteration reached max_iter without converging */

@@ -26,6 +26,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "gauss2.h"
@@ -43,6 +44,13 @@
 #define gauss2_dHdp(w, t, q, p, out) GAUSS2_DIRECT_DHDP((t), (q), (p), (out), (w)->sys.ctx)
 #else
 #define gauss2_dHdp(w, t, q, p, out) (w)->sys.dHdp((t), (q), (p), (out), (w)->sys.ctx)
+#endif
+#if defined(__GNUC__)
+#define GAUSS2_INLINE static inline __attribute__((always_inline))
+#define GAUSS2_NOINLINE static __attribute__((noinline))
+#else
+#define GAUSS2_INLINE static inline
+#define GAUSS2_NOINLINE static
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
@@ -65,6 +73,7 @@ struct gauss2_workspace {
     int history;                    /* Fo, Go and hprev are valid */
     double t_next, q_next0, p_next0;   /* what the last step returned */
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
+    int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain */
 };
 
 static inline double gauss2_abs(double x) { return fabs(x); }
@@ -82,14 +91,24 @@ void gauss2_reset(gauss2_workspace *w)
 }
 
 /* A call that does not continue the last step's output starts a new
- * trajectory: compensation, history and cached gradients are dropped. */
-static void gauss2_check_continuation(gauss2_workspace *w, double t, const double *q, const double *p)
+ * trajectory: compensation, history and cached gradients are dropped
+ * (the statistics are kept). */
+static void gauss2_new_trajectory(gauss2_workspace *w)
 {
-    if (t != w->t_next || q[0] != w->q_next0 || p[0] != w->p_next0) {
-        vigen_stats keep = w->stats;
-        gauss2_reset(w);
-        w->stats = keep;
-    }
+    vigen_stats keep = w->stats;
+    gauss2_reset(w);
+    w->stats = keep;
+}
+
+/* Does (t, q[0], p[0]) differ from what the last step returned?  One branch
+ * for the three comparisons. */
+_Static_assert(sizeof(double) == sizeof(uint64_t), "gauss2.c assumes a 64-bit IEEE double");
+static inline uint64_t gauss2_bits(double x) { uint64_t u; memcpy(&u, &x, sizeof u); return u; }
+static inline int gauss2_moved(const gauss2_workspace *w, double t, const double *q, const double *p)
+{
+    /* bit patterns: no branch per comparison (-0 vs +0 or a NaN counts as moved) */
+    return ((gauss2_bits(t) ^ gauss2_bits(w->t_next)) | (gauss2_bits(q[0]) ^ gauss2_bits(w->q_next0))
+            | (gauss2_bits(p[0]) ^ gauss2_bits(w->p_next0))) != 0;
 }
 
 gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
@@ -105,6 +124,7 @@ gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     if (w->opt.max_iter <= 0) w->opt.max_iter = 50;
     if (w->opt.solver != VIGEN_SOLVER_FIXED_POINT && w->opt.solver != VIGEN_SOLVER_NEWTON) { free(w); return NULL; }
     w->tol = w->opt.tol > 0 ? w->opt.tol : vigen_default_tol();
+    w->path = 0;
     w->n = n;
     w->mem = calloc(GAUSS2_NARRAYS * n, sizeof(double));
     if (w->mem == NULL) { free(w); return NULL; }
@@ -201,8 +221,6 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
         }
         gauss2_dHdp(w, t0 + 0x1.b0cb174df99c7p-3 * h, Q1, P1, w->F[0]);
         gauss2_dHdp(w, t0 + 0x1.93cd3a2c8198ep-1 * h, Q2, P2, w->F[1]);
-        w->stats.dHdq_evals += 2;
-        w->stats.dHdp_evals += 2;
         sweeps++;
         for (size_t k = 0; k < n; k++) {
             const double qk = q[k];
@@ -223,6 +241,9 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
             if (st >= 0) break;
         }
     }
+    /* every sweep evaluates both gradients at every stage */
+    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdp_evals += 2 * sweeps;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -302,7 +323,7 @@ static int gauss2_newton(gauss2_workspace *w, double t0, const double *q, const 
 }
 
 /* The implicit step: starting values, stage solve, compensated update. */
-static int gauss2_implicit(gauss2_workspace *w, double *t, double *q, double *p, double h)
+GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, double *p, double h)
 {
     const size_t n = w->n;
     const double t0 = *t;
@@ -339,7 +360,10 @@ static int gauss2_implicit(gauss2_workspace *w, double *t, double *q, double *p,
     st = w->nw ? gauss2_newton(w, t0, q, p, h) : gauss2_fixed_point(w, t0, q, p, h);
     w->stats.iterations += w->stats.last_iterations;
     if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
-    if (st != VIGEN_SUCCESS) return st;
+    if (st != VIGEN_SUCCESS) {
+        w->stats.failed_steps++;
+        return st;
+    }
     if (w->opt.kahan) {
         for (size_t k = 0; k < n; k++) {
             q[k] = vigen_twosum_update(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), &w->cq[k]);
@@ -359,25 +383,43 @@ static int gauss2_implicit(gauss2_workspace *w, double *t, double *q, double *p,
     }
     w->hprev = h;
     w->history = 1;
+    w->stats.steps++;
+    w->t_next = *t;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
+/* The chosen path: explicit (compensated or not) or implicit. */
+static inline int gauss2_dispatch(gauss2_workspace *w, double *t, double *q, double *p, double h)
+{
+    return gauss2_implicit(w, t, q, p, h);
+}
+
+/* The unusual cases, out of line: h zero or not finite, or a call that
+ * does not continue the last step. */
+GAUSS2_NOINLINE int gauss2_step_slow(gauss2_workspace *w, double *t, double *q, double *p, double h)
+{
+    if (!(h - h == 0)) return VIGEN_EINVAL;
+    if (h == 0) return VIGEN_SUCCESS;
+    gauss2_new_trajectory(w);
+    return gauss2_dispatch(w, t, q, p, h);
+}
+
+/* Arguments: h must be finite (VIGEN_EINVAL otherwise; h = 0 does nothing).
+ * The pointers are checked for NULL only when VIGEN_CHECK_ARGS or
+ * GAUSS2_CHECK_ARGS is defined where this file is compiled (the workspace
+ * from gauss2_alloc is never NULL once checked there). */
 int gauss2_step(gauss2_workspace *w, double *t, double *q, double *p, double h)
 {
-    int st;
-    if (w == NULL || t == NULL || q == NULL || p == NULL || !(h - h == 0)) return VIGEN_EINVAL;
-    if (h == 0) return VIGEN_SUCCESS;
-    gauss2_check_continuation(w, *t, q, p);
-    st = gauss2_implicit(w, t, q, p, h);
-    if (st == VIGEN_SUCCESS) {
-        w->stats.steps++;
-        w->t_next = *t;
-        w->q_next0 = q[0];
-        w->p_next0 = p[0];
-    } else {
-        w->stats.failed_steps++;
-    }
-    return st;
+#if defined(VIGEN_CHECK_ARGS) || defined(GAUSS2_CHECK_ARGS)
+    if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
+#endif
+    /* One branch for the unusual cases.  For an IEEE double h, finite and
+     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out). */
+    if (((gauss2_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff)) | gauss2_moved(w, *t, q, p))
+        return gauss2_step_slow(w, t, q, p, h);
+    return gauss2_dispatch(w, t, q, p, h);
 }
 
 static void *gauss2_alloc_v(const vigen_hamiltonian *sys, const vigen_solver_options *opt) { return gauss2_alloc(sys, opt); }

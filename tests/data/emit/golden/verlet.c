@@ -26,6 +26,7 @@
  */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include "verlet.h"
@@ -43,6 +44,13 @@
 #define verlet_dHdp(w, t, q, p, out) VERLET_DIRECT_DHDP((t), (q), (p), (out), (w)->sys.ctx)
 #else
 #define verlet_dHdp(w, t, q, p, out) (w)->sys.dHdp((t), (q), (p), (out), (w)->sys.ctx)
+#endif
+#if defined(__GNUC__)
+#define VERLET_INLINE static inline __attribute__((always_inline))
+#define VERLET_NOINLINE static __attribute__((noinline))
+#else
+#define VERLET_INLINE static inline
+#define VERLET_NOINLINE static
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
@@ -67,6 +75,7 @@ struct verlet_workspace {
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
     double *x[4];              /* explicit path: stage values and gradients */
     int fsal;                       /* cached first-same-as-last gradients valid */
+    int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain */
 };
 
 static inline double verlet_abs(double x) { return fabs(x); }
@@ -85,14 +94,24 @@ void verlet_reset(verlet_workspace *w)
 }
 
 /* A call that does not continue the last step's output starts a new
- * trajectory: compensation, history and cached gradients are dropped. */
-static void verlet_check_continuation(verlet_workspace *w, double t, const double *q, const double *p)
+ * trajectory: compensation, history and cached gradients are dropped
+ * (the statistics are kept). */
+static void verlet_new_trajectory(verlet_workspace *w)
 {
-    if (t != w->t_next || q[0] != w->q_next0 || p[0] != w->p_next0) {
-        vigen_stats keep = w->stats;
-        verlet_reset(w);
-        w->stats = keep;
-    }
+    vigen_stats keep = w->stats;
+    verlet_reset(w);
+    w->stats = keep;
+}
+
+/* Does (t, q[0], p[0]) differ from what the last step returned?  One branch
+ * for the three comparisons. */
+_Static_assert(sizeof(double) == sizeof(uint64_t), "verlet.c assumes a 64-bit IEEE double");
+static inline uint64_t verlet_bits(double x) { uint64_t u; memcpy(&u, &x, sizeof u); return u; }
+static inline int verlet_moved(const verlet_workspace *w, double t, const double *q, const double *p)
+{
+    /* bit patterns: no branch per comparison (-0 vs +0 or a NaN counts as moved) */
+    return ((verlet_bits(t) ^ verlet_bits(w->t_next)) | (verlet_bits(q[0]) ^ verlet_bits(w->q_next0))
+            | (verlet_bits(p[0]) ^ verlet_bits(w->p_next0))) != 0;
 }
 
 verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
@@ -108,6 +127,7 @@ verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     if (w->opt.max_iter <= 0) w->opt.max_iter = 50;
     if (w->opt.solver != VIGEN_SOLVER_FIXED_POINT && w->opt.solver != VIGEN_SOLVER_NEWTON) { free(w); return NULL; }
     w->tol = w->opt.tol > 0 ? w->opt.tol : vigen_default_tol();
+    w->path = !sys->separable ? 0 : w->opt.kahan ? 1 : 2;
     w->n = n;
     w->mem = calloc(VERLET_NARRAYS * n, sizeof(double));
     if (w->mem == NULL) { free(w); return NULL; }
@@ -203,8 +223,6 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
         }
         verlet_dHdp(w, t0 + 0 * h, Q1, P1, w->F[0]);
         verlet_dHdp(w, t0 + 0x1p+0 * h, Q2, P2, w->F[1]);
-        w->stats.dHdq_evals += 2;
-        w->stats.dHdp_evals += 2;
         sweeps++;
         for (size_t k = 0; k < n; k++) {
             const double qk = q[k];
@@ -225,6 +243,9 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
             if (st >= 0) break;
         }
     }
+    /* every sweep evaluates both gradients at every stage */
+    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdp_evals += 2 * sweeps;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -302,7 +323,7 @@ static int verlet_newton(verlet_workspace *w, double t0, const double *q, const 
 }
 
 /* The implicit step: starting values, stage solve, compensated update. */
-static int verlet_implicit(verlet_workspace *w, double *t, double *q, double *p, double h)
+VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
     const size_t n = w->n;
     const double t0 = *t;
@@ -339,7 +360,10 @@ static int verlet_implicit(verlet_workspace *w, double *t, double *q, double *p,
     st = w->nw ? verlet_newton(w, t0, q, p, h) : verlet_fixed_point(w, t0, q, p, h);
     w->stats.iterations += w->stats.last_iterations;
     if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
-    if (st != VIGEN_SUCCESS) return st;
+    if (st != VIGEN_SUCCESS) {
+        w->stats.failed_steps++;
+        return st;
+    }
     if (w->opt.kahan) {
         for (size_t k = 0; k < n; k++) {
             q[k] = vigen_twosum_update(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), &w->cq[k]);
@@ -359,25 +383,33 @@ static int verlet_implicit(verlet_workspace *w, double *t, double *q, double *p,
     }
     w->hprev = h;
     w->history = 1;
+    w->stats.steps++;
+    w->t_next = *t;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
 /* The explicit path (separable H): 1 dH/dp and 1 dH/dq
- * evaluations per step, first-same-as-last gradients reused. */
-static int verlet_explicit(verlet_workspace *w, double *t, double *q, double *p, double h)
+ * evaluations per step, first-same-as-last gradients reused.  Inlined twice,
+ * with kahan = 1 and 0 (verlet_explicit_kahan and _plain), so that neither
+ * copy tests the option. */
+VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict q, double *restrict p, double h, const int kahan)
 {
     const size_t n = w->n;
     const double t0 = *t;
     double t1;
-    double *const X0 = w->x[0];
-    double *const X1 = w->x[1];
-    double *const X2 = w->x[2];
-    double *const X3 = w->x[3];
+    double *restrict const cq = w->cq;
+    double *restrict const cp = w->cp;
+    double *restrict const X0 = w->x[0];
+    double *restrict const X1 = w->x[1];
+    double *restrict const X2 = w->x[2];
+    double *restrict const X3 = w->x[3];
     const double *const q0 = q;
     const double *const p0 = p;
-    if (w->opt.kahan) t1 = vigen_twosum_update(t0, h, &w->ct);
+    if (kahan) t1 = vigen_twosum_update(t0, h, &w->ct);
     else t1 = t0 + h;
-    (void)q0; (void)p0; (void)t1;
+    (void)q0; (void)p0; (void)t1; (void)cq; (void)cp;
     if (w->fsal) {
         w->stats.fsal_reuses++;
     } else {
@@ -387,42 +419,71 @@ static int verlet_explicit(verlet_workspace *w, double *t, double *q, double *p,
     for (size_t k = 0; k < n; k++) X1[k] = p0[k] - (0x1p-1 * h) * X0[k];
     verlet_dHdp(w, t0, q, X1, X2);
     w->stats.dHdp_evals++;
-    if (w->opt.kahan) {
-        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_update(q[k], (0x1p+0 * h) * X2[k], &w->cq[k]);
+    if (kahan) {
+        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_update(q[k], (0x1p+0 * h) * X2[k], &cq[k]);
     } else {
         for (size_t k = 0; k < n; k++) q[k] += (0x1p+0 * h) * X2[k];
     }
     verlet_dHdq(w, t1, q, p, X3);
     w->stats.dHdq_evals++;
-    if (w->opt.kahan) {
-        for (size_t k = 0; k < n; k++) p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (X0[k] + X3[k])), &w->cp[k]);
+    if (kahan) {
+        for (size_t k = 0; k < n; k++) p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (X0[k] + X3[k])), &cp[k]);
     } else {
         for (size_t k = 0; k < n; k++) p[k] -= (0x1p-1 * h) * (X0[k] + X3[k]);
     }
-    { double *tmp = w->x[0]; w->x[0] = w->x[3]; w->x[3] = tmp; }
+    w->x[0] = X3;
+    w->x[3] = X0;
     w->fsal = 1;
     *t = t1;
-    w->stats.last_iterations = 0;
+    w->stats.steps++;
+    w->t_next = t1;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
+/* The two copies, out of line: verlet_step jumps to one of them. */
+VERLET_NOINLINE int verlet_explicit_kahan(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    return verlet_explicit(w, t, q, p, h, 1);
+}
+VERLET_NOINLINE int verlet_explicit_plain(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    return verlet_explicit(w, t, q, p, h, 0);
+}
+
+/* The chosen path: explicit (compensated or not) or implicit. */
+static inline int verlet_dispatch(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    if (w->path == 1) return verlet_explicit_kahan(w, t, q, p, h);
+    if (w->path == 2) return verlet_explicit_plain(w, t, q, p, h);
+    return verlet_implicit(w, t, q, p, h);
+}
+
+/* The unusual cases, out of line: h zero or not finite, or a call that
+ * does not continue the last step. */
+VERLET_NOINLINE int verlet_step_slow(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    if (!(h - h == 0)) return VIGEN_EINVAL;
+    if (h == 0) return VIGEN_SUCCESS;
+    verlet_new_trajectory(w);
+    return verlet_dispatch(w, t, q, p, h);
+}
+
+/* Arguments: h must be finite (VIGEN_EINVAL otherwise; h = 0 does nothing).
+ * The pointers are checked for NULL only when VIGEN_CHECK_ARGS or
+ * VERLET_CHECK_ARGS is defined where this file is compiled (the workspace
+ * from verlet_alloc is never NULL once checked there). */
 int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    int st;
-    if (w == NULL || t == NULL || q == NULL || p == NULL || !(h - h == 0)) return VIGEN_EINVAL;
-    if (h == 0) return VIGEN_SUCCESS;
-    verlet_check_continuation(w, *t, q, p);
-    if (w->sys.separable) st = verlet_explicit(w, t, q, p, h);
-    else st = verlet_implicit(w, t, q, p, h);
-    if (st == VIGEN_SUCCESS) {
-        w->stats.steps++;
-        w->t_next = *t;
-        w->q_next0 = q[0];
-        w->p_next0 = p[0];
-    } else {
-        w->stats.failed_steps++;
-    }
-    return st;
+#if defined(VIGEN_CHECK_ARGS) || defined(VERLET_CHECK_ARGS)
+    if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
+#endif
+    /* One branch for the unusual cases.  For an IEEE double h, finite and
+     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out). */
+    if (((verlet_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff)) | verlet_moved(w, *t, q, p))
+        return verlet_step_slow(w, t, q, p, h);
+    return verlet_dispatch(w, t, q, p, h);
 }
 
 static void *verlet_alloc_v(const vigen_hamiltonian *sys, const vigen_solver_options *opt) { return verlet_alloc(sys, opt); }

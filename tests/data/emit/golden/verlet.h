@@ -9,6 +9,9 @@
  *   verlet_alloc(sys, opt)  workspace for the problem sys; opt NULL = defaults;
  *                           NULL on invalid arguments or out of memory
  *   verlet_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status
+ *                           (VIGEN_EINVAL for h not finite; NULL pointers are
+ *                           checked only if verlet.c is compiled with
+ *                           -DVIGEN_CHECK_ARGS)
  *   verlet_reset(w)        forget the previous step (start a new trajectory)
  *   verlet_stats(w)        iteration and gradient-evaluation counts
  *   verlet_free(w)
