@@ -327,6 +327,9 @@ int vigen_basis_integral(arb_t res, vigen_basis *B, slong i, const arb_t x, slon
         return VIGEN_OK;
     }
     default: {
+        /* sin, cos, exp of linear arguments (cos(pi*t), exp(t/2), ...): the
+         * exact antiderivative, much faster than quadrature at high precision */
+        if (f->kind == FN_EXPR && vigen_expr_integral_closed_form(res, f->expr, x, prec)) return VIGEN_OK;
         integrand_ctx ctx;
         ctx.basis = B;
         ctx.fn = f;

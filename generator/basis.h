@@ -5,6 +5,8 @@
  *   lagrange, monomials, legendre, chebyshev_t, and expression strings that
  *             are polynomials in t: exact antiderivative of an arb_poly;
  *   trig      closed forms: int_0^x cos(k pi t) dt = sin(k pi x)/(k pi), ...;
+ *   expressions built from polynomials and sin/cos/exp of linear arguments
+ *             (sums, constant factors): their exact antiderivatives;
  *   other expressions and Lua functions: acb_calc_integrate (certified
  *             Gauss–Legendre with error bounds from complex-ball evaluation).
  */

@@ -457,6 +457,108 @@ int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec)
 }
 
 /* ------------------------------------------------------------------------ */
+/* Closed-form integrals                                                      */
+
+/* res = int_0^x n(t) dt when n is built from polynomials in t, sin, cos and
+ * exp of linear arguments a t + b (a != 0), sums, and constant factors or
+ * divisors: then the antiderivative is exact and cheap, where rigorous
+ * quadrature at thousands of digits is slow.  Returns 0 (res undefined) for
+ * anything else. */
+static int closed_integral(arb_t res, const node *n, const arb_t x, slong prec)
+{
+    arb_ctx c = { NULL, NULL, NULL, prec };
+    if (!n->has_t) {
+        if (eval_arb_node(res, n, &c) != VIGEN_OK || !arb_is_finite(res)) return 0;
+        arb_mul(res, res, x, prec);
+        return 1;
+    }
+    arb_poly_t p;
+    arb_poly_init(p);
+    int ok = 0;
+    if (poly_node(p, n, prec)) {
+        arb_poly_integral(p, p, prec);
+        arb_poly_evaluate(res, p, x, prec);
+        arb_poly_clear(p);
+        return 1;
+    }
+    arb_t u, v;
+    arb_init(u);
+    arb_init(v);
+    switch (n->kind) {
+    case N_NEG:
+        ok = closed_integral(res, n->a, x, prec);
+        if (ok) arb_neg(res, res);
+        break;
+    case N_ADD: case N_SUB:
+        ok = closed_integral(u, n->a, x, prec) && closed_integral(v, n->b, x, prec);
+        if (ok) {
+            if (n->kind == N_ADD) arb_add(res, u, v, prec);
+            else arb_sub(res, u, v, prec);
+        }
+        break;
+    case N_MUL: {
+        const node *k = n->a->has_t ? n->b : n->a, *f = n->a->has_t ? n->a : n->b;
+        if (k->has_t) break;                       /* a product of two functions of t */
+        ok = eval_arb_node(u, k, &c) == VIGEN_OK && arb_is_finite(u) && closed_integral(v, f, x, prec);
+        if (ok) arb_mul(res, u, v, prec);
+        break;
+    }
+    case N_DIV:
+        if (n->b->has_t) break;
+        ok = eval_arb_node(u, n->b, &c) == VIGEN_OK && arb_is_finite(u) && !arb_contains_zero(u) &&
+             closed_integral(v, n->a, x, prec);
+        if (ok) arb_div(res, v, u, prec);
+        break;
+    case N_SIN: case N_COS: case N_EXP:
+        /* f(a t + b): int_0^x = (F(a x + b) - F(b)) / a with F' = f */
+        if (!poly_node(p, n->a, prec) || arb_poly_degree(p) != 1) break;
+        {
+            arb_srcptr b = arb_poly_get_coeff_ptr(p, 0) ? arb_poly_get_coeff_ptr(p, 0) : NULL;
+            arb_srcptr a = arb_poly_get_coeff_ptr(p, 1);
+            arb_t zero, fx, fb;
+            arb_init(zero);
+            arb_init(fx);
+            arb_init(fb);
+            if (b == NULL) b = zero;
+            if (!arb_contains_zero(a)) {
+                arb_mul(u, a, x, prec);
+                arb_add(u, u, b, prec);                    /* a x + b */
+                if (n->kind == N_EXP) {
+                    arb_exp(fx, u, prec);
+                    arb_exp(fb, b, prec);
+                    arb_sub(v, fx, fb, prec);              /* exp(ax+b) - exp(b) */
+                } else if (n->kind == N_SIN) {
+                    arb_cos(fx, u, prec);
+                    arb_cos(fb, b, prec);
+                    arb_sub(v, fb, fx, prec);              /* -cos(ax+b) + cos(b) */
+                } else {
+                    arb_sin(fx, u, prec);
+                    arb_sin(fb, b, prec);
+                    arb_sub(v, fx, fb, prec);              /* sin(ax+b) - sin(b) */
+                }
+                arb_div(res, v, a, prec);
+                ok = arb_is_finite(res);
+            }
+            arb_clear(zero);
+            arb_clear(fx);
+            arb_clear(fb);
+        }
+        break;
+    default:
+        break;
+    }
+    arb_clear(u);
+    arb_clear(v);
+    arb_poly_clear(p);
+    return ok;
+}
+
+int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t x, slong prec)
+{
+    return closed_integral(res, e->root, x, prec);
+}
+
+/* ------------------------------------------------------------------------ */
 /* Lexer                                                                      */
 
 enum { T_END, T_NUM, T_IDENT, T_OP, T_BAD };

@@ -58,6 +58,12 @@ int vigen_expr_eval_acb(acb_t res, const vigen_expr *e, const acb_t t, int analy
  * writes it to res (coefficients as balls at prec) and returns 1; else 0. */
 int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec);
 
+/* If e is built from polynomials in t and sin, cos, exp of linear arguments
+ * a t + b (a != 0), with sums and constant factors or divisors, writes
+ * int_0^x e(t) dt, computed from the exact antiderivative, to res and returns
+ * 1; else returns 0 (use rigorous quadrature). */
+int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t x, slong prec);
+
 /* Convenience: parse and evaluate a constant expression. */
 int vigen_expr_eval_string(arb_t res, const char *text, slong prec, vigen_error *err);
 

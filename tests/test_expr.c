@@ -656,8 +656,53 @@ static void test_integrals(void)
     arb_clear(ref); arb_clear(u);
 }
 
+/* The closed-form antiderivative against rigorous quadrature (an independent
+ * route), for expressions in its class, and its refusal outside it. */
+static void test_closed_form_integrals(void)
+{
+    static const char *const in_class[] = {
+        "cos(pi*t)", "sin(2*pi*t)", "exp(t/2)", "1 + cos(pi*t)/2", "3*sin(2*pi*t + 1/5) - exp(-t)/7 + t^2",
+        "-(cos(3*pi*t - 1) * 2)", "sin(pi*(t - 1/2))", "exp(2*t + log(3))",
+    };
+    static const char *const outside[] = {"t*cos(pi*t)", "cos(t^2)", "sin(pi*t)^2", "1/(1 + t)", "cos(0*t + 1) * t * exp(t)"};
+    slong prec = 256;
+    arb_t x, closed;
+    acb_t a, b, quad;
+    mag_t tol;
+    arb_init(x); arb_init(closed);
+    acb_init(a); acb_init(b); acb_init(quad); mag_init(tol);
+    arb_set_ui(x, 3);
+    arb_div_ui(x, x, 7, prec);                  /* integrate over [0, 3/7] */
+    acb_set_arb(b, x);
+    mag_set_ui_2exp_si(tol, 1, -prec);
+    for (size_t k = 0; k < sizeof in_class / sizeof in_class[0]; k++) {
+        vigen_expr *e = NULL;
+        vigen_error err;
+        vigen_error_init(&err);
+        CHECK(vigen_expr_parse(&e, in_class[k], 1, &err) == VIGEN_OK);
+        if (e == NULL) continue;
+        CHECK_MSG(vigen_expr_integral_closed_form(closed, e, x, prec), "%s: no closed form", in_class[k]);
+        acb_calc_integrate(quad, integrand, e, a, b, prec, tol, NULL, prec);
+        CHECK_MSG(arb_overlaps(closed, acb_realref(quad)), "%s: closed form and quadrature disagree", in_class[k]);
+        CHECK_CLOSE(closed, acb_realref(quad), 60, prec);
+        vigen_expr_free(e);
+    }
+    for (size_t k = 0; k < sizeof outside / sizeof outside[0]; k++) {
+        vigen_expr *e = NULL;
+        vigen_error err;
+        vigen_error_init(&err);
+        CHECK(vigen_expr_parse(&e, outside[k], 1, &err) == VIGEN_OK);
+        if (e == NULL) continue;
+        CHECK_MSG(!vigen_expr_integral_closed_form(closed, e, x, prec), "%s: claims a closed form", outside[k]);
+        vigen_expr_free(e);
+    }
+    arb_clear(x); arb_clear(closed);
+    acb_clear(a); acb_clear(b); acb_clear(quad); mag_clear(tol);
+}
+
 int main(void)
 {
+    test_closed_form_integrals();
     test_identities();
     test_numbers();
     test_powers();
