@@ -3,9 +3,10 @@
  *     (GNI, Table II.1.1 / Butcher), with At = A;
  *   - Lobatto s = 3: Lobatto IIIA (A) and IIIB (At) from GNI Table II.2.1;
  *   - Radau IIA s = 2 (A) from Hairer & Wanner II, Table IV.5.5;
- *   - the trig(s) family (integrated by closed-form antiderivatives) against
- *     the same functions written as expression strings (integrated by
- *     acb_calc_integrate) and as Lua functions: three independent routes;
+ *   - the trig(s) family (its own closed forms, arb_sin_cos_pi) against the
+ *     same functions written as expression strings (the generic exact
+ *     antiderivative of sin/cos of linear arguments in expr.c) and as Lua
+ *     functions (acb_calc_integrate through Lua): three independent routes;
  *   - identities every generated method satisfies: ct_i = sum_j at_ij,
  *     symplecticity, sum b = 1, and the B(p) quadrature order of b.
  * The Leok & Zhang closed forms are checked in test_leok_zhang.c. */
@@ -192,8 +193,8 @@ static void test_radau(void)
     vigen_tableau_clear(&t);
 }
 
-/* trig(3) integrated in closed form vs the same basis as expressions
- * (acb_calc_integrate) vs Lua functions (acb_calc_integrate through Lua). */
+/* trig(3) by the family's closed forms vs the same basis as expressions (the
+ * generic antiderivative in expr.c) vs Lua functions (acb_calc_integrate). */
 static void test_three_routes(void)
 {
     const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";
