@@ -109,9 +109,11 @@ typedef struct {
 /* ---- stage iteration stopping rule -------------------------------------- */
 /* The round-off-aware rule shared by every emitted solver: iterate until the
  * relative increment is exactly zero or stops decreasing.  "Stops decreasing"
- * compares with the increment two iterations back: for separable H the q and
- * p stages of a Jacobi sweep depend only on each other, so increments come in
- * pairs and only every second one must shrink.  A stall counts as convergence
+ * compares with the increment two iterations back, a lenient test that
+ * tolerates one non-monotone step (with the Jacobi sweeps used earlier, the q
+ * and p increments of separable H came in equal pairs; the Gauss-Seidel sweeps
+ * used now need no such allowance but do not suffer from it).  A stall counts
+ * as convergence
  * when one of the last two increments is below tol; otherwise three stalls
  * mean divergence (VIGEN_ENOCONV).  max_iter increments without either outcome
  * give VIGEN_EMAXITER (or success if the last is below tol).  A NaN or
