@@ -115,7 +115,9 @@ static void fill_metadata(vigen_tableau *t, const vigen_spec *spec)
     t->name = vigen_strdup(spec->name);
     t->description = vigen_strdup(spec->description);
     t->source = vigen_strdup(spec->source);
-    t->basis = vigen_strdup(spec->basis_text);
+    /* the spec's `basis = "lagrange"` is recorded as the word, not a quoted string */
+    t->basis = vigen_strdup(spec->basis_text && strcmp(spec->basis_text, "\"lagrange\"") == 0 ? "lagrange"
+                                                                                             : spec->basis_text);
     t->nodes = vigen_strdup(spec->nodes_text);
     t->generator = vigen_strdup("vigen " VIGEN_VERSION);
     t->has_At = 1;
