@@ -2,6 +2,8 @@
  * tableau (explicit paths, shared stages, first same as last) and the data
  * table the stepper templates are rendered with.  No C is written here: the
  * C comes from templates/stepper.[ch].in. */
+#include <errno.h>
+#include <sys/stat.h> /* mkdir */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -1082,9 +1084,14 @@ int vigen_emit_main(int argc, char **argv)
     vigen_tableau_clear(&t);
     if (rc == VIGEN_OK) {
         if (strcmp(ident, name) != 0) vigen_warn("--name '%s' is not a C identifier; using '%s'", name, ident);
-        char *hp = vigen_strdup_printf("%s/%s.h", dir, ident);
-        char *cp = vigen_strdup_printf("%s/%s.c", dir, ident);
-        rc = vigen_write_file_atomic(hp, h, &err);
+        /* -o DIR is created when missing (one level, like mkdir DIR) */
+        if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+            rc = vigen_error_set(&err, VIGEN_E_IO, "cannot create the output directory %s: %s", dir, strerror(errno));
+        size_t dl = strlen(dir);
+        const char *sep = (dl > 0 && dir[dl - 1] == '/') ? "" : "/";
+        char *hp = vigen_strdup_printf("%s%s%s.h", dir, sep, ident);
+        char *cp = vigen_strdup_printf("%s%s%s.c", dir, sep, ident);
+        if (rc == VIGEN_OK) rc = vigen_write_file_atomic(hp, h, &err);
         if (rc == VIGEN_OK) rc = vigen_write_file_atomic(cp, c, &err);
         if (rc == VIGEN_OK && !quiet) fprintf(stderr, "vigen emit: wrote %s and %s\n", hp, cp);
         free(hp);

@@ -259,6 +259,20 @@ static void warn_about(const vigen_tableau *t, const vigen_spec *spec)
             vigen_warn("%s: node c_%ld = %s lies outside [0, 1]", spec->path, (long)(i + 1), v);
             free(v);
         }
+    /* c_i = sum_j a_ij holds exactly when the constants are in the span; warn
+     * about each row that certainly differs (vigen check would flag it) */
+    for (slong i = 0; i < s; i++) {
+        arb_zero(sum);
+        for (slong j = 0; j < s; j++) arb_add(sum, sum, arb_mat_entry(t->A, i, j), t->prec);
+        if (!arb_overlaps(sum, t->c + i)) {
+            char *v = ball_text(sum), *c = ball_text(t->c + i);
+            vigen_warn("%s: row %ld of A sums to %s, not to its node c_%ld = %s: the constant function is not in "
+                       "the span of the basis (vigen check will report the row sums)", spec->path, (long)(i + 1), v,
+                       (long)(i + 1), c);
+            free(v);
+            free(c);
+        }
+    }
     arb_zero(sum);
     for (slong i = 0; i < s; i++) arb_add(sum, sum, t->b + i, t->prec);
     if (!arb_contains(sum, one)) {

@@ -576,8 +576,13 @@ int vigen_write_file_atomic(const char *path, const char *text, vigen_error *err
     int exists = 0;
     if (lstat(path, &st) == 0 && S_ISLNK(st.st_mode)) {
         target = realpath(path, NULL);
-        if (target == NULL)
-            return vigen_error_set(err, VIGEN_E_IO, "cannot write %s: it is a symbolic link to a missing file", path);
+        if (target == NULL) {
+            /* /dev/stdout -> /proc/self/fd/1 -> "pipe:[...]": no path, but a
+             * device or pipe that can be written in place */
+            if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) target = vigen_strdup(path);
+            else return vigen_error_set(err, VIGEN_E_IO, "cannot write %s: it is a symbolic link to a missing file",
+                                        path);
+        }
     } else target = vigen_strdup(path);
     if (stat(target, &st) == 0) {
         exists = 1;

@@ -60,6 +60,7 @@ expect bad_expression      2 "cosh" "column"
 # warnings: the tableau is written, the warning names the problem
 expect no_constants        0 "sum of b" "not consistent"
 expect node_outside        0 "outside \[0, 1\]"
+expect row_sum_defect      0 "row 1 of A sums to" "not in the span"
 
 # usage errors
 "$vigen" generate >/dev/null 2>&1; [ $? = 2 ] || { echo "FAIL: no spec should be a usage error"; failures=$((failures + 1)); }

@@ -42,6 +42,13 @@ wait
 [ -p pipe.lua ] || fail "the FIFO was replaced"
 grep -q gauss_legendre_s1 from_pipe.txt || fail "nothing came through the FIFO"
 
+# /dev/stdout into a pipe (a link to a pipe with no path)
+"$vigen" generate "$spec" -q -o /dev/stdout | grep -q 'name = "gauss_legendre_s1"' || fail "-o /dev/stdout into a pipe"
+
+# emit creates its output directory
+"$vigen" emit "$src/tests/data/emit/verlet.lua" --name verlet -q -o newdir/ && [ -f newdir/verlet.c ] && [ -f newdir/verlet.h ] ||
+  fail "emit -o into a missing directory"
+
 leftovers=$(ls | grep -c '\.tmp\.' || true)
 [ "$leftovers" = 0 ] || fail "temporary files left: $(ls)"
 
