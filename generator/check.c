@@ -29,8 +29,8 @@ const char *vigen_check_usage =
     "    data (the report shows the largest such radius);\n"
     "  - on exact expressions (\"1/4 - sqrt(3)/6\") a condition holds only when its ball\n"
     "    is tighter than 2^-(prec/2) of the size of its terms, with the same verdicts at\n"
-    "    two successive precisions; the precision is doubled until that is so (up to\n"
-    "    4096 bits, or twice the start);\n"
+    "    two successive precisions, the second of at least 1024 bits; the precision is\n"
+    "    doubled until that is so (up to 4096 bits, or twice the start);\n"
     "  - anything else is reported undecided.\n"
     "The starting precision covers the digits of every decimal and exact literal\n"
     "(10^-45 included) plus 64 bits, at least 128.\n"
@@ -1873,6 +1873,14 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     rep->prec_first = 0;
     ulong last_hash = 0;
     slong last_undecided = -1;
+    /* Exact conditions that hold are confirmed only at a round of at least
+     * 1024 bits (and 4 times the start), reachable below the cap: a difference
+     * such as exp(-200) ~ 2^-288 that no literal reveals hides below a 128- or
+     * 256-bit radius, not below a 1024-bit one. */
+    slong reachable = prec;
+    while (2 * reachable <= cap) reachable *= 2;
+    slong min_confirm = 4 * prec > 1024 ? 4 * prec : 1024;
+    if (min_confirm > reachable) min_confirm = reachable;
 
     for (;;) {
         rep->undecided_reason = NULL;
@@ -1895,8 +1903,9 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
         if (rc != VIGEN_OK) break;
 
         /* exact conditions that hold with a nonzero radius are confirmed when
-         * the previous round, at half the precision, gave the same verdicts */
-        int confirmed = cx.n_unconfirmed == 0 || (rep->rounds > 1 && cx.hash == last_hash);
+         * the previous round, at half the precision, gave the same verdicts,
+         * at min_confirm bits or more */
+        int confirmed = cx.n_unconfirmed == 0 || (rep->rounds > 1 && cx.hash == last_hash && prec >= min_confirm);
         rep->undecided_left = cx.n_undecided;
         if (cx.n_undecided == 0 && confirmed) break;
         const char *stop = NULL;

@@ -136,6 +136,10 @@ grep_out "two successive precisions"
 run 0 "$pub/gauss_3.lua" --max-order 10 --json
 json "d['max_order'] == 10 and d['order'] == 6"
 
+# an exact defect below any 256-bit radius (exp(-200) ~ 2^-288) is not taken for a hold
+run 1 "$data/exp200.lua"
+grep_out "claim symplectic = true is false"
+
 # unreadable input and usage errors: status 2
 run 2 "$data/syntax_error.lua"
 run 2 "$work/does_not_exist.lua"

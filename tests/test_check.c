@@ -879,7 +879,8 @@ static void test_exact_refinement(void)
     CHECK(check(&rep, &ref, &ref2, 6) == VIGEN_OK);
     CHECK(rep.against_differences == 0 && rep.against_undecided == 0 && rep.exit_code == 0);
     CHECK(rep.holds[VIGEN_CHECK_SECT_AGAINST].exact == 8);   /* c, A, b */
-    CHECK(rep.rounds == 2);   /* the holding exact conditions were confirmed at a second precision */
+    /* the holding exact conditions were confirmed at a second precision, of 1024 bits or more */
+    CHECK(rep.rounds >= 2 && rep.prec >= 1024);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&ref2);
 
