@@ -946,7 +946,8 @@ static void test_claims(void)
 
     /* order = p means the order is p, so order p + 1 must be seen to fail.
      * Gauss-6 has order 12 (Hairer-Wanner II, IV.5): a claim of order 10 is
-     * false, which takes the conditions of order 11 */
+     * refuted only by conditions of order 11 holding, which for balls with a
+     * radius (not exact data) is not certain: the claim is undecided, exit 1 */
     gauss_balls(&t, 6, 192);
     t.claim_order = 10;
     double t0 = now();
@@ -954,7 +955,7 @@ static void test_claims(void)
     printf("gauss6, claim order = 10 (orders <= 11): %.3f s\n", now() - t0);
     CHECK(rep.max_order == 11);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 11, 1, 0);
-    CHECK(rep.claim_order_status == VIGEN_CHECK_NO && !rep.claim_order_beyond && rep.exit_code == 1);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_UNDECIDED && !rep.claim_order_beyond && rep.exit_code == 1);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
 
