@@ -93,16 +93,6 @@ static int ball_gc(lua_State *L)
     return 0;
 }
 
-static const char *push_float_text(lua_State *L, double x)
-{
-    luaL_Buffer b;
-    size_t n = vigen_float_format(NULL, 0, x);
-    char *p = luaL_buffinitsize(L, &b, n + 1);
-    vigen_float_format(p, n + 1, x);
-    luaL_pushresultsize(&b, n);
-    return lua_tostring(L, -1);
-}
-
 /* Raises unless the value at idx is a ball or a Lua integer.  fname: the
  * function being called, or NULL for an arithmetic operator. */
 static void check_operand(lua_State *L, int idx, const char *fname, const char *op)
@@ -118,7 +108,7 @@ static void check_operand(lua_State *L, int idx, const char *fname, const char *
         return;
     }
     if (t == LUA_TNUMBER) {
-        const char *f = push_float_text(L, lua_tonumber(L, idx));
+        const char *f = vigen_push_float_text(L, lua_tonumber(L, idx));
         if (fname) luaL_error(L, "basis function: %s got a Lua float (%s); %s", fname, f, float_hint);
         luaL_error(L, "basis function: a Lua float (%s) met a ball; %s", f, float_hint);
     }
@@ -268,7 +258,7 @@ static int l_exact(lua_State *L)
         return 1;
     }
     if (t == LUA_TNUMBER) {
-        const char *f = push_float_text(L, lua_tonumber(L, 1));
+        const char *f = vigen_push_float_text(L, lua_tonumber(L, 1));
         return luaL_error(L, "exact() takes a string such as exact(\"1/3\"), not the Lua float %s", f);
     }
     if (t != LUA_TSTRING)

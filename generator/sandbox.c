@@ -104,7 +104,7 @@ size_t vigen_float_format(char *buf, size_t size, double x)
 }
 
 /* Pushes the text of a float (in Lua memory, so nothing leaks if a later call raises). */
-static const char *push_float_text(lua_State *L, double x)
+const char *vigen_push_float_text(lua_State *L, double x)
 {
     luaL_Buffer b;
     size_t n = vigen_float_format(NULL, 0, x);
@@ -403,7 +403,7 @@ static int family_new(lua_State *L)
     if (lua_type(L, 1) != LUA_TNUMBER)
         return luaL_error(L, "%s(s): s must be a Lua integer >= 1 (%s), not a %s", name, what, luaL_typename(L, 1));
     if (!lua_isinteger(L, 1)) {
-        const char *f = push_float_text(L, lua_tonumber(L, 1));
+        const char *f = vigen_push_float_text(L, lua_tonumber(L, 1));
         return luaL_error(L, "%s(s): s must be a Lua integer >= 1 (%s), not the float %s", name, what, f);
     }
     lua_Integer s = lua_tointeger(L, 1);

@@ -69,5 +69,8 @@ extern const char *const vigen_basis_family_names[];
  * float ("0.3333333333333333", "0.5", "3.0", "1e+300"), snprintf-style: returns
  * the length needed, writes at most size bytes (NUL included). */
 size_t vigen_float_format(char *buf, size_t size, double x);
+/* Pushes that text as a Lua string (Lua memory: nothing leaks if a later call
+ * raises) and returns it. */
+const char *vigen_push_float_text(lua_State *L, double x);
 
 #endif
