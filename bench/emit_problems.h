@@ -4,7 +4,8 @@
  *     period 2 pi; the exact solution from Kepler's equation), and
  *   an FPUT-beta chain of FPUT_N particles with fixed ends,
  *     H = sum p_i^2/2 + sum_{i=0..n} V(q_{i+1} - q_i),  V(r) = r^2/2 + beta r^4/4,
- *     q_0 = q_{n+1} = 0.
+ *     q_0 = q_{n+1} = 0,
+ *   and the Toda lattice, the same chain with V(r) = exp(-r) + r - 1.
  * Also the analytic Jacobians of the first-order systems y = (q, p),
  * y' = (dH/dp, -dH/dq), for GSL's implicit steppers, and the gradient-time
  * instrumentation (timed_dq / timed_dp). */
@@ -121,6 +122,34 @@ static inline void fput_jac(const double *y, double *J)
         if (i > 0) J[row + i - 1] = kl;
         if (i + 1 < FPUT_N) J[row + i + 1] = kr;
     }
+}
+
+/* -------------------------------------------------------------------- Toda */
+/* The Toda lattice with the same fixed ends, V(r) = exp(-r) + r - 1: one
+ * exponential per bond, a gradient some ten times dearer than FPUT's for the
+ * same vector work in the stepper (the gradient-share comparison). */
+static inline void toda_dq(double t, const double *q, const double *p, double *o, void *c)
+{
+    (void)t; (void)p; (void)c;
+    double left = 1 - exp(-q[0]);                            /* V'(q_1 - wall) */
+    for (int i = 0; i < FPUT_N; i++) {
+        double r = (i + 1 < FPUT_N ? q[i + 1] : 0) - q[i];
+        double f = 1 - exp(-r);                               /* V'(q_{i+1} - q_i) */
+        o[i] = left - f;
+        left = f;
+    }
+}
+static inline double toda_H(double t, const double *q, const double *p, void *c)
+{
+    (void)t; (void)c;
+    double e = 0, prev = 0;
+    for (int i = 0; i <= FPUT_N; i++) {
+        double x = i < FPUT_N ? q[i] : 0, r = x - prev;
+        e += exp(-r) + r - 1;
+        if (i < FPUT_N) e += p[i] * p[i] / 2;
+        prev = x;
+    }
+    return e;
 }
 
 /* --------------------------------------------------- gradient-time probes */
