@@ -1606,6 +1606,7 @@ static void check_against(vigen_check_report *rep, ctx_t *x, const ctx_t *y)
     rep->against_undecided = 0;
     if (x->s != y->s) {
         rep->against_differences = 1;
+        rep->against_stages = y->s;
         vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_AGAINST);
         p->value_json = vigen_strdup_printf("%ld", (long)x->s);
         p->expected_json = vigen_strdup_printf("%ld", (long)y->s);
@@ -2023,7 +2024,7 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
 {
     fputs(rep->path ? rep->path : "tableau", out);
     if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
-    fprintf(out, ": %ld stages, %s\n", (long)rep->s,
+    fprintf(out, ": %ld stage%s, %s\n", (long)rep->s, rep->s == 1 ? "" : "s",
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
     fprintf(out, "  entries: %s; ",
             rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
@@ -2053,8 +2054,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     fputs(")\n", out);
     fprintf(out, "symplectic    %s", tri_word(rep->symplectic, "yes", "no"));
     if (rep->symplectic == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC]);
-    fprintf(out, " (%ld conditions: %sb_i %s_ij + b_j a_ji - b_i b_j = 0", (long)rep->sym_total,
-            rep->has_bt ? "bt = b, " : "", rep->has_At ? "at" : "a");
+    fprintf(out, " (%ld condition%s: %sb_i %s_ij + b_j a_ji - b_i b_j = 0", (long)rep->sym_total,
+            rep->sym_total == 1 ? "" : "s", rep->has_bt ? "bt = b, " : "", rep->has_At ? "at" : "a");
     if (rep->sym_fail) fprintf(out, "; %ld fail", (long)rep->sym_fail);
     if (rep->sym_undecided) fprintf(out, "; %ld undecided", (long)rep->sym_undecided);
     fputs(")\n", out);
@@ -2142,7 +2143,10 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                     rep->claim_symplectic_separable ? " (for separable H)" : "");
         fputc('\n', out);
     }
-    if (rep->against_checked) {
+    if (rep->against_checked && rep->against_stages > 0) {
+        fprintf(out, "against       the tableaux cannot be compared: %ld stage%s here, %ld there\n", (long)rep->s,
+                rep->s == 1 ? "" : "s", (long)rep->against_stages);
+    } else if (rep->against_checked) {
         fprintf(out, "against       %ld entr%s differ%s beyond the certified precision",
                 (long)rep->against_differences, rep->against_differences == 1 ? "y" : "ies",
                 rep->against_differences == 1 ? "s" : "");

@@ -183,6 +183,7 @@ typedef struct {
     int against_checked;
     slong against_differences;
     slong against_undecided;
+    slong against_stages;        /* FILE2's stage count when it differs from s, else 0 */
 
     slong nproblems, alloc_problems;
     vigen_check_problem *problems;

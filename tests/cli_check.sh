@@ -55,6 +55,10 @@ json "d['consistent'] is False and d['symplectic'] is False and 'order_separable
 run 1 "$data/gauss3_40_perturbed.lua"
 grep_out "A\[2\]\[3\] = "
 grep_out "both ask for"
+# tableaux of different sizes cannot be compared entry by entry
+run 1 "$pub/gauss_1.lua" --against "$pub/gauss_2.lua"
+grep_out "cannot be compared: 1 stage here, 2 there"
+grep_out "symplectic    yes (1 condition:"
 run 1 "$data/gauss3_40_perturbed.lua" --against "$data/gauss3_40.lua" --json
 json "[(p['matrix'], p['row'], p['col']) for p in d['problems'] if p['kind'] == 'against'] == [('A', 2, 3)]"
 
