@@ -572,6 +572,20 @@ static slong digits_to_separate(const arb_t x, const arb_t y, slong prec)
     return n > 45 ? 45 : n;
 }
 
+/* Significant digits of a decimal literal ("-0.01250e-3" has 4), 0 when it
+ * is not one. */
+static slong decimal_sig_digits(const char *text)
+{
+    slong n = 0, lead = 1;
+    for (const char *c = text; *c && *c != 'e' && *c != 'E'; c++) {
+        if (*c < '0' || *c > '9') continue;
+        if (lead && *c == '0') continue;
+        lead = 0;
+        n++;
+    }
+    return n;
+}
+
 /* d significant digits of x, rounded down (up = 0) or up (up = 1). */
 static char *arf_text(const arf_t x, slong d, int up)
 {
@@ -1006,6 +1020,12 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
         }
         slong digits = digits_to_separate(entry_value(cx, culprit), fix, cx->prec);
         const char *text = entry_text(cx, culprit);
+        if (text && vigen_decimal_is_rounded(text)) {
+            /* the repair as many digits long as the entry, where the data certify them */
+            slong want = decimal_sig_digits(text), can = (slong)(arb_rel_accuracy_bits(fix) * 0.30103);
+            if (want > can) want = can;
+            if (want > digits) digits = want;
+        }
         /* a rounded decimal is shown as the file gives it */
         char *v = text && vigen_decimal_is_rounded(text) ? vigen_strdup(text) : ball_str(entry_value(cx, culprit), digits);
         char *f = ball_str(fix, digits);
