@@ -41,6 +41,7 @@ typedef struct {
     char *description, *source, *basis, *nodes, *generator;
     int claim_order;             /* -1 when absent */
     int claim_symplectic;        /* -1 absent, 0 false, 1 true */
+    int generated_now;           /* 1: made by the generator in this run (from a spec), not read */
 } vigen_tableau;
 
 /* Allocates an s-stage tableau with all balls zero and no texts. */

@@ -70,6 +70,9 @@ grep -q "symplecticity" "$work/g.txt" && grep -q "contains 0" "$work/g.txt" || f
 "$vigen" show "$src/tableaux/specs/leok_zhang_ex2_c12.lua" --format json >"$work/m.json" || fail "show of a spec"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); assert d['A'][0][0].startswith('0.5000') and d['At'][0][0].startswith('0.5000')" "$work/m.json" ||
   fail "midpoint rule from Example 2 (ii)"
+"$vigen" show "$src/tableaux/specs/leok_zhang_ex2_c12.lua" --digits 20 >"$work/m.txt" || fail "text show of a spec"
+grep -q "^generated from the spec by vigen .*: 20 certified digits" "$work/m.txt" || fail "a spec's show says it was generated now: $(head -3 "$work/m.txt")"
+grep -q "^the file states: 50 certified digits" "$work/g.txt" || fail "a generated file's show quotes its metadata"
 
 # exact expressions whose value is 0 (sin(pi), sqrt(2)^2 - 2): certified 0e-N, not a failure
 "$vigen" show "$src/tests/data/show/zero_exprs.lua" --format json --digits 20 >"$work/z.json" || fail "show of exact zeros"
