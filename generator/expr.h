@@ -64,6 +64,10 @@ int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec);
  * 1; else returns 0 (use rigorous quadrature). */
 int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t x, slong prec);
 
+/* The expression in LaTeX (math mode), e.g. "1/4 - sqrt(3)/6" gives
+ * "\frac{1}{4} - \frac{\sqrt{3}}{6}"; numbers as written.  A fresh string. */
+char *vigen_expr_latex(const vigen_expr *e);
+
 /* Convenience: parse and evaluate a constant expression. */
 int vigen_expr_eval_string(arb_t res, const char *text, slong prec, vigen_error *err);
 

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "decimal.h"
+#include "expr.h"
 #include "show.h"
 
 int vigen_show_parse_format(vigen_show_format *fmt, const char *name)
@@ -143,23 +144,46 @@ static void latex_number(vigen_strbuf *sb, const char *text)
     vigen_strbuf_printf(sb, "\\times 10^{%ld}", strtol(e + 1, NULL, 10));
 }
 
-static void latex_array(vigen_strbuf *sb, char **c, char **A, char **b, slong s)
+/* One entry in LaTeX: an exact expression from a hand-written file as the
+ * expression (1/4 - sqrt(3)/6 as \frac{1}{4} - \frac{\sqrt{3}}{6}); anything
+ * else (generated or rounded data) as its certified decimal. */
+static void latex_entry(vigen_strbuf *sb, const char *text, const char *decimal)
 {
-    vigen_strbuf_append(sb, "\\begin{array}{r|");
-    for (slong j = 0; j < s; j++) vigen_strbuf_append(sb, "r");
+    if (text != NULL && !vigen_decimal_is_rounded(text)) {
+        vigen_expr *e = NULL;
+        vigen_error err;
+        vigen_error_init(&err);
+        if (vigen_expr_parse(&e, text, 0, &err) == VIGEN_OK) {
+            char *l = vigen_expr_latex(e);
+            vigen_strbuf_append(sb, l);
+            free(l);
+            vigen_expr_free(e);
+            return;
+        }
+        vigen_error_clear(&err);
+    }
+    latex_number(sb, decimal);
+}
+
+/* texts: the file's texts of c, A, b (each may be NULL), for exact entries */
+static void latex_array(vigen_strbuf *sb, char **c, char **A, char **b, char *const *tc, char *const *tA,
+                        char *const *tb, slong s)
+{
+    vigen_strbuf_append(sb, "\\begin{array}{c|");
+    for (slong j = 0; j < s; j++) vigen_strbuf_append(sb, "c");
     vigen_strbuf_append(sb, "}\n");
     for (slong i = 0; i < s; i++) {
-        latex_number(sb, c[i]);
+        latex_entry(sb, tc ? tc[i] : NULL, c[i]);
         for (slong j = 0; j < s; j++) {
             vigen_strbuf_append(sb, " & ");
-            latex_number(sb, A[i * s + j]);
+            latex_entry(sb, tA ? tA[i * s + j] : NULL, A[i * s + j]);
         }
         vigen_strbuf_append(sb, " \\\\\n");
     }
     vigen_strbuf_append(sb, "\\hline\n");
     for (slong j = 0; j < s; j++) {
         vigen_strbuf_append(sb, " & ");
-        latex_number(sb, b[j]);
+        latex_entry(sb, tb ? tb[j] : NULL, b[j]);
     }
     vigen_strbuf_append(sb, "\n\\end{array}\n");
 }
@@ -258,10 +282,11 @@ int vigen_show_render(char **out, vigen_tableau *t, vigen_show_format fmt, slong
         vigen_strbuf_append(&sb, "% ");
         for (const char *p = t->name; *p; p++) vigen_strbuf_appendn(&sb, (*p == '\n' || *p == '\r') ? " " : p, 1);
         vigen_strbuf_append(&sb, " (vigen)\n\\[\n");
-        latex_array(&sb, c, A, b, s);
+        latex_array(&sb, c, A, b, t->c_text, t->A_text, t->b_text, s);
         if (t->has_At) {
             vigen_strbuf_append(&sb, "\\qquad\n");
-            latex_array(&sb, ct, At, bp, s);
+            latex_array(&sb, ct, At, bp, t->has_ct ? t->ct_text : NULL, t->At_text,
+                        t->has_bt ? t->bt_text : t->b_text, s);
         }
         vigen_strbuf_append(&sb, "\\]\n");
     } else {

@@ -56,7 +56,12 @@ PY
 # LaTeX: two arrays separated by \qquad
 "$vigen" show "$gen" --format latex >"$work/g.tex" || fail "show --format latex exit status"
 [ "$(grep -c 'begin{array}' "$work/g.tex")" = 2 ] && grep -q 'qquad' "$work/g.tex" && grep -q 'hline' "$work/g.tex" ||
-  fail "LaTeX output"; 
+  fail "LaTeX output"
+# the exact entries of a hand-written tableau as formulas (GNI Table II.1.1), decimals of generated ones
+"$vigen" show "$pub" --format latex >"$work/p.tex" || fail "show --format latex of an exact tableau"
+grep -qF '\frac{1}{2} - \frac{\sqrt{3}}{6} & \frac{1}{4} & \frac{1}{4} - \frac{\sqrt{3}}{6} \\' "$work/p.tex" ||
+  fail "LaTeX of exact entries: $(cat "$work/p.tex")"
+grep -q 'frac' "$work/g.tex" && fail "LaTeX of a generated tableau should show decimals"
 
 # Lua: reads back as the same tableau (byte-identical to the generated file)
 "$vigen" show "$gen" --format lua >"$work/g.lua" || fail "show --format lua exit status"

@@ -700,8 +700,41 @@ static void test_closed_form_integrals(void)
     acb_clear(a); acb_clear(b); acb_clear(quad); mag_clear(tol);
 }
 
+/* LaTeX of entries as a paper would typeset them. */
+static void test_latex(void)
+{
+    static const char *const cases[][2] = {
+        { "1/4 - sqrt(3)/6", "\\frac{1}{4} - \\frac{\\sqrt{3}}{6}" },
+        { "1/2 + sqrt(15)/10", "\\frac{1}{2} + \\frac{\\sqrt{15}}{10}" },
+        { "2*pi", "2 \\pi" },
+        { "-(1 + 2)", "-\\left(1 + 2\\right)" },
+        { "1 - (2 - 3)", "1 - \\left(2 - 3\\right)" },
+        { "(1 - 2) - 3", "1 - 2 - 3" },
+        { "1 - -2", "1 - \\left(-2\\right)" },
+        { "2*(3 + t)", "2 \\cdot \\left(3 + t\\right)" },
+        { "2^-1", "2^{-1}" },
+        { "(1/2)^3", "\\left(\\frac{1}{2}\\right)^{3}" },
+        { "2.5e-3", "2.5\\times 10^{-3}" },
+        { "cos(pi/7)", "\\cos\\left(\\frac{\\pi}{7}\\right)" },
+        { "exp(t)*sin(2*t)", "\\exp\\left(t\\right) \\cdot \\sin\\left(2 t\\right)" },
+        { "1/(2 - 2^(1/3))", "\\frac{1}{2 - 2^{\\frac{1}{3}}}" },
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        vigen_expr *e = NULL;
+        vigen_error err;
+        vigen_error_init(&err);
+        CHECK(vigen_expr_parse(&e, cases[k][0], 1, &err) == VIGEN_OK);
+        char *l = e ? vigen_expr_latex(e) : NULL;
+        CHECK_MSG(l && strcmp(l, cases[k][1]) == 0, "LaTeX of %s: %s, expected %s", cases[k][0], l ? l : "(none)", cases[k][1]);
+        free(l);
+        vigen_expr_free(e);
+        vigen_error_clear(&err);
+    }
+}
+
 int main(void)
 {
+    test_latex();
     test_closed_form_integrals();
     test_identities();
     test_numbers();
