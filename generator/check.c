@@ -12,6 +12,7 @@
 #include <string.h>
 #include "check.h"
 #include "decimal.h"
+#include "expr.h"
 
 const char *vigen_check_usage =
     "usage: vigen check FILE [--against FILE2] [--max-order P] [--json] [--prec BITS]\n"
@@ -76,6 +77,7 @@ typedef struct {
     int part[2];                 /* every entry of (A, b) resp. (At, bt) is exact */
     int part_c[2];               /* ... and of c resp. ct */
     int any_exact, any_rounded;
+    fmpz_t den;                  /* every entry rational: a common denominator; else 0 */
 } exactness;
 
 static int text_exact(char **texts, slong k) { return texts != NULL && texts[k] != NULL && !vigen_decimal_is_rounded(texts[k]); }
@@ -93,6 +95,7 @@ static void exactness_init(exactness *x, const vigen_tableau *t)
     int texts = t->c_text != NULL && t->A_text != NULL && t->b_text != NULL;
     x->any_exact = 0;
     x->any_rounded = !texts;
+    fmpz_init(x->den);
     if (!texts) {
         x->part[0] = x->part[1] = x->part_c[0] = x->part_c[1] = 0;
         return;
@@ -133,10 +136,32 @@ static void exactness_init(exactness *x, const vigen_tableau *t)
             if (vigen_decimal_is_rounded(lists[l][k])) x->any_rounded = 1;
             else x->any_exact = 1;
         }
+    /* A tableau of rational entries with common denominator D makes every
+     * condition value a rational whose denominator divides D^k g (k factors
+     * of entries per term, g the denominator of the constant): a ball inside
+     * (-1/(D^k g), 1/(D^k g)) then proves the value 0 (see verdict()). */
+    int rational = x->part_c[0] && x->part_c[1];
+    fmpz_one(x->den);
+    fmpq_t q;
+    fmpq_init(q);
+    for (int l = 0; l < 6 && rational; l++)
+        for (slong k = 0; lists[l] && k < lens[l] && rational; k++) {
+            vigen_expr *e = NULL;
+            vigen_error err;
+            vigen_error_init(&err);
+            rational = lists[l][k] != NULL && vigen_expr_parse(&e, lists[l][k], 0, &err) == VIGEN_OK &&
+                       vigen_expr_to_fmpq(q, e);
+            if (rational) fmpz_lcm(x->den, x->den, fmpq_denref(q));
+            vigen_expr_free(e);
+            vigen_error_clear(&err);
+        }
+    fmpq_clear(q);
+    if (!rational) fmpz_zero(x->den);
 }
 
 static void exactness_clear(exactness *x)
 {
+    fmpz_clear(x->den);
     flint_free(x->A);
     flint_free(x->At);
     flint_free(x->b);
@@ -156,6 +181,9 @@ typedef struct {
     int section;                 /* VIGEN_CHECK_SECT_* of the decisions being made */
     vigen_check_holds *holds;    /* statistics per section (the report's) */
     slong n_undecided, n_undecided_exact, n_unconfirmed;
+    slong n_proved;              /* holds proved by the denominator bound */
+    slong rat_k;                 /* the condition being decided: a sum of products of rat_k */
+    ulong rat_g;                 /* entries, minus a constant with denominator rat_g (0: no bound) */
     ulong hash;                  /* of the sequence of verdicts */
 } ctx_t;
 
@@ -178,7 +206,40 @@ static void ctx_init(ctx_t *cx, const vigen_tableau *t, const exactness *ex, vig
     cx->section = VIGEN_CHECK_SECT_ROWSUM;
     cx->holds = holds;
     cx->n_undecided = cx->n_undecided_exact = cx->n_unconfirmed = 0;
+    cx->n_proved = 0;
+    cx->rat_k = 0;
+    cx->rat_g = 0;
     cx->hash = 1469598103934665603ULL;
+}
+
+/* Sets the shape of the next conditions for the denominator bound: sums of
+ * products of k entries, minus constants with denominator dividing g. */
+static void ctx_shape(ctx_t *cx, slong k, ulong g)
+{
+    cx->rat_k = k;
+    cx->rat_g = g;
+}
+
+/* 1 if r is certainly 0: every entry is rational with common denominator D,
+ * so r = N / (D^k g) for an integer N, and |r| D^k g < 1 forces N = 0. */
+static int proved_zero(const ctx_t *cx, const arb_t r)
+{
+    if (cx->ex == NULL || fmpz_is_zero(cx->ex->den) || cx->rat_k <= 0 || cx->rat_g == 0) return 0;
+    fmpz_t m;
+    arb_t u;
+    arf_t ub;
+    fmpz_init(m);
+    arb_init(u);
+    arf_init(ub);
+    fmpz_pow_ui(m, cx->ex->den, (ulong)cx->rat_k);
+    fmpz_mul_ui(m, m, cx->rat_g);
+    arb_mul_fmpz(u, r, m, cx->prec);
+    arb_get_abs_ubound_arf(ub, u, cx->prec);
+    int zero = arf_cmp_si(ub, 1) < 0;
+    fmpz_clear(m);
+    arb_clear(u);
+    arf_clear(ub);
+    return zero;
 }
 
 /* |midpoint of x|, rounded up: the size of a term for the scales below (the
@@ -188,15 +249,20 @@ static void mid_mag(mag_t m, const arb_t x) { arf_get_mag(m, arb_midref(x)); }
 /* The verdict on a ball r = left side - right side (see check.h).  exact: every
  * entry the condition involves is exact; scale: an upper bound of the size of
  * its terms (exact conditions hold only with radius <= 2^-(prec/2) scale). */
-static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale, int *unconfirmed)
+static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale, int *unconfirmed, int *proved)
 {
     *unconfirmed = 0;
+    *proved = 0;
     if (!arb_is_finite(r)) return UNDECIDED;
     if (!arb_contains_zero(r)) return FAILS;
     if (mag_is_zero(arb_radref(r))) return HOLDS;
     /* rounded data: a ball wider than the terms it compares says nothing (a
      * 1-digit tableau would "satisfy" every order condition): undecided */
     if (!exact) return mag_cmp(arb_radref(r), scale) > 0 ? UNDECIDED : HOLDS;
+    if (proved_zero(cx, r)) {
+        *proved = 1;
+        return HOLDS;
+    }
     mag_t thr;
     mag_init(thr);
     mag_mul_2exp_si(thr, scale, -(cx->prec / 2));
@@ -210,10 +276,11 @@ static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale,
 /* The verdict, with the bookkeeping of the refinement loop and the report. */
 static int decide(ctx_t *cx, const arb_t r, int exact, const mag_t scale)
 {
-    int unconfirmed;
-    int v = verdict(cx, r, exact, scale, &unconfirmed);
+    int unconfirmed, proved;
+    int v = verdict(cx, r, exact, scale, &unconfirmed, &proved);
     cx->hash = (cx->hash ^ (ulong)(v + 1)) * 1099511628211ULL;
     cx->n_unconfirmed += unconfirmed;
+    cx->n_proved += proved;
     vigen_check_holds *h = cx->holds + cx->section;
     if (v == HOLDS) {
         if (exact) h->exact++;
@@ -505,6 +572,7 @@ static int cond_decide(ctx_t *cx, const cond *c)
     mag_t m;
     mag_init(m);
     cond_scale(m, cx, c);
+    ctx_shape(cx, cond_is_rowsum(c) || c->type == C_BT_EQ_B ? 1 : 2, 1);
     int v = decide(cx, c->r, cond_exact(cx, c), m);
     mag_clear(m);
     return v;
@@ -1249,6 +1317,7 @@ static int check_orders(vigen_check_report *rep, ctx_t *cx, int P, vigen_error *
                 int flags = vigen_forest_tree_flags(&ts, c, ids, k);
                 /* a monochromatic tree involves one part only */
                 int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
+                ctx_shape(cx, n, gamma);   /* b Phi has n factors; 1/gamma */
                 int st = decide2(cx, r, exact, val[c], inv);
                 orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, &ts, c, ids, k, val[c], inv);
                 if (flags & VIGEN_TREE_SEPARABLE)
@@ -1341,6 +1410,7 @@ static int assumption_B(part_t *p, int k)
     arb_sub(r, r, q, prec);
     for (slong i = 0; i < s; i++) mag_addmul3(m, p->b + i, p->cp + (k - 1) * s + i, NULL);
     mag_add_arb(m, q);
+    ctx_shape(p->cx, k, (ulong)k);
     int st = decide(p->cx, r, p->exact, m);
     arb_clear(r);
     arb_clear(q);
@@ -1365,6 +1435,7 @@ static int assumption_C(part_t *p, int k)
         mag_zero(m);
         for (slong j = 0; j < s; j++) mag_addmul3(m, arb_mat_entry(p->A, i, j), p->cp + (k - 1) * s + j, NULL);
         mag_add_arb(m, q);
+        ctx_shape(p->cx, k, (ulong)k);
         st = worst_status(st, decide(p->cx, r, p->exact, m));
     }
     arb_clear(r);
@@ -1403,6 +1474,7 @@ static int assumption_D(part_t *p, int k)
         arb_mul(u, u, p->b + j, prec);
         arb_div_ui(u, u, (ulong)k, prec);
         mag_add_arb(m, u);
+        ctx_shape(p->cx, k + 1, (ulong)k);
         st = worst_status(st, decide(p->cx, r, p->exact, m));
     }
     arb_clear(r);
@@ -1586,6 +1658,7 @@ static void compare_entry(vigen_check_report *rep, ctx_t *cx, const char *mat, s
     arb_t d;
     arb_init(d);
     arb_sub(d, x, y, cx->prec);
+    ctx_shape(cx, 0, 0);   /* FILE2's denominators are not in cx: no proof by denominators */
     int st = decide(cx, d, exact, scale);
     if (st == HOLDS) {
         arb_clear(d);
@@ -1707,6 +1780,7 @@ void vigen_check_report_clear(vigen_check_report *rep)
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_clear(rep->holds[k].radius);
     free(rep->path);
     free(rep->name);
+    flint_free(rep->rational_denominator);
     memset(rep, 0, sizeof(*rep));
 }
 
@@ -1897,6 +1971,8 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     if (against) exactness_init(&ex_against, against);
     rep->rounded_entries = ex.any_rounded;
     rep->exact_entries = ex.any_exact;
+    flint_free(rep->rational_denominator);
+    rep->rational_denominator = fmpz_is_zero(ex.den) ? NULL : fmpz_get_str(NULL, 10, ex.den);
     int rc = VIGEN_OK;
     rep->rounds = 0;
     rep->prec_first = 0;
@@ -1930,6 +2006,7 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
         cx.prec = prec;
         rc = check_round(rep, &cx, t, against, against ? &ex_against : NULL, P, err);
         if (rc != VIGEN_OK) break;
+        rep->proved = cx.n_proved;
 
         /* exact conditions that hold with a nonzero radius are confirmed when
          * the previous round, at half the precision, gave the same verdicts,
@@ -2046,15 +2123,22 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
     fprintf(out, ": %ld stage%s, %s\n", (long)rep->s, rep->s == 1 ? "" : "s",
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
-    fprintf(out, "  entries: %s; ",
-            rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
-            : rep->rounded_entries ? "rounded decimals (half-ulp balls) or balls"
-                                   : "exact expressions");
+    if (rep->rational_denominator)
+        fprintf(out, "  entries: exact rationals, common denominator D = %s; ", rep->rational_denominator);
+    else
+        fprintf(out, "  entries: %s; ",
+                rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
+                : rep->rounded_entries ? "rounded decimals (half-ulp balls) or balls"
+                                       : "exact expressions");
     if (rep->rounds > 1)
         fprintf(out, "checked at %ld bits (%ld evaluations, from %ld bits)\n", (long)rep->prec, (long)rep->rounds,
                 (long)rep->prec_first);
     else fprintf(out, "checked at %ld bits (1 evaluation)\n", (long)rep->prec);
-    if (!rep->exact_entries)
+    if (rep->rational_denominator)
+        fputs("  a condition fails when its ball excludes 0; it holds, proved, when its ball lies inside\n"
+              "  (-1/(D^k g), 1/(D^k g)), k entries per term and g the denominator of its constant: the value is a\n"
+              "  multiple of 1/(D^k g), so 0; otherwise it is undecided\n", out);
+    else if (!rep->exact_entries)
         fputs("  a condition fails when its ball excludes 0 and holds, within the precision of the data, when it\n"
               "  contains 0\n", out);
     else if (!rep->rounded_entries)
@@ -2286,6 +2370,9 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
             rep->max_order);
     fprintf(out, " \"rounded_entries\": %s, \"exact_entries\": %s,\n", rep->rounded_entries ? "true" : "false",
             rep->exact_entries ? "true" : "false");
+    if (rep->rational_denominator)
+        fprintf(out, " \"rational_denominator\": \"%s\", \"proved\": %ld,\n", rep->rational_denominator,
+                (long)rep->proved);
     fputs(" \"rule\": \"a condition fails when its ball excludes 0 and holds when it contains 0: on rounded entries "
           "within the precision of the data; on exact entries with a radius below 2^-(prec/2) of its terms and the "
           "same verdicts at two precisions; otherwise it is undecided\",\n", out);

@@ -157,6 +157,8 @@ typedef struct {
     int has_At, has_bt, has_ct;
     int rounded_entries;         /* some entry is a rounded decimal (or the tableau is balls only) */
     int exact_entries;           /* some entry is an exact expression */
+    char *rational_denominator;  /* every entry rational: their common denominator D (decimal); else NULL */
+    slong proved;                /* holds proved exactly by the denominator bound (rational tableaux) */
     vigen_check_holds holds[VIGEN_CHECK_SECTIONS];
 
     int consistent;              /* row sums and sum b = 1 (tri-state) */

@@ -1077,6 +1077,60 @@ int vigen_expr_depends_on_t(const vigen_expr *e) { return e->root->has_t; }
 const char *vigen_expr_text(const vigen_expr *e) { return e->text; }
 
 /* ------------------------------------------------------------------------ */
+/* Rational values                                                            */
+
+/* Sizes beyond which a "rational" expression is not worth treating as one. */
+#define EXPR_RAT_MAX_EXP 4096
+#define EXPR_RAT_MAX_BITS 65536
+
+static int rat_node(fmpq_t res, const node *n)
+{
+    fmpq_t y;
+    int ok = 1;
+    switch (n->kind) {
+    case N_NUM:
+        if (!n->q_exact) return 0;
+        fmpq_set(res, n->q);
+        return 1;
+    case N_NEG:
+        if (!rat_node(res, n->a)) return 0;
+        fmpq_neg(res, res);
+        return 1;
+    case N_ADD: case N_SUB: case N_MUL: case N_DIV:
+        if (!rat_node(res, n->a)) return 0;
+        fmpq_init(y);
+        ok = rat_node(y, n->b);
+        if (ok && n->kind == N_DIV && fmpq_is_zero(y)) ok = 0;
+        if (ok) {
+            if (n->kind == N_ADD) fmpq_add(res, res, y);
+            else if (n->kind == N_SUB) fmpq_sub(res, res, y);
+            else if (n->kind == N_MUL) fmpq_mul(res, res, y);
+            else fmpq_div(res, res, y);
+        }
+        fmpq_clear(y);
+        break;
+    case N_POW:
+    {
+        if (!n->int_exp || !fmpz_fits_si(n->k)) return 0;
+        slong k = fmpz_get_si(n->k);
+        if (k > EXPR_RAT_MAX_EXP || k < -EXPR_RAT_MAX_EXP || !rat_node(res, n->a)) return 0;
+        if (k < 0 && fmpq_is_zero(res)) return 0;
+        fmpq_pow_si(res, res, k);
+        break;
+    }
+    default:
+        return 0;   /* pi, t, functions */
+    }
+    return ok && fmpz_bits(fmpq_numref(res)) <= EXPR_RAT_MAX_BITS && fmpz_bits(fmpq_denref(res)) <= EXPR_RAT_MAX_BITS;
+}
+
+int vigen_expr_to_fmpq(fmpq_t res, const vigen_expr *e)
+{
+    if (e->root->has_t) return 0;
+    return rat_node(res, e->root);
+}
+
+/* ------------------------------------------------------------------------ */
 /* LaTeX                                                                      */
 
 /* Binding strength of a node as LaTeX shows it: sums 1, products 2, unary

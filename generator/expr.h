@@ -26,6 +26,7 @@
 #include <arb.h>
 #include <acb.h>
 #include <arb_poly.h>
+#include <flint/fmpq.h>
 #include "error.h"
 
 typedef struct vigen_expr vigen_expr;
@@ -63,6 +64,11 @@ int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec);
  * int_0^x e(t) dt, computed from the exact antiderivative, to res and returns
  * 1; else returns 0 (use rigorous quadrature). */
 int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t x, slong prec);
+
+/* If the constant expression is built from numbers with + - * / and
+ * integer powers (so that its value is rational), writes the value to res
+ * and returns 1; else returns 0 (sqrt(4) counts as not rational). */
+int vigen_expr_to_fmpq(fmpq_t res, const vigen_expr *e);
 
 /* The expression in LaTeX (math mode), e.g. "1/4 - sqrt(3)/6" gives
  * "\frac{1}{4} - \frac{\sqrt{3}}{6}"; numbers as written.  A fresh string. */

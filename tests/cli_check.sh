@@ -41,6 +41,7 @@ run 0 "$pub/gauss_3.lua" --json
 json "d['order'] == 6 and d['symplectic'] is True and d['consistent'] is True and d['problems'] == []"
 run 0 "$pub/lobatto_iiia_iiib_3.lua" --json
 json "d['order'] == 4 and d['order_separable'] == 4 and d['symplectic'] is True"
+json "d['rational_denominator'] == '24' and d['proved'] > 0"
 run 0 "$data/rk4.lua" --json
 json "d['order'] == 4 and d['symplectic'] is False and d['order_A'] == 4"
 

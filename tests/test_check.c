@@ -339,6 +339,10 @@ static void test_lobatto3(void)
     vigen_check_report rep;
     CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
     CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_YES);
+    /* rational entries (lcm of the denominators 24): the holds are proofs, at
+     * the first precision, no confirmation at 1024 bits needed */
+    CHECK(rep.rational_denominator != NULL && strcmp(rep.rational_denominator, "24") == 0);
+    CHECK(rep.proved > 0 && rep.rounds == 1);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 4, 0, 0);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_SEPARABLE), 4, 0, 0);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_A_ALONE), 4, 0, 0);
@@ -421,6 +425,33 @@ static void test_lobatto3(void)
     }
     CHECK(rep.row_fail == 1 && rep.sym_fail == 1);
     CHECK(rep.nproblems == 4);   /* two diagnoses (row sum, symplecticity), two listed failures */
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&u);
+}
+
+/* A rational perturbation far below the first precision: at_11 = 1/6 +
+ * 10^-60 = (5 10^59 + 3)/(3 10^60).  The common denominator (with 24 from
+ * the other entries) becomes 3 10^60, so no condition on the
+ * perturbed entry can be proved 0 at low precision; the precision rises until
+ * the row sum of At and the symplecticity pairs through at_11 fail, and the
+ * untouched conditions (A's row sums, sum b = 1) are still proved. */
+#define ZEROS10 "0000000000"
+#define ZEROS60 ZEROS10 ZEROS10 ZEROS10 ZEROS10 ZEROS10 ZEROS10
+static void test_rational_tiny_perturbation(void)
+{
+    const char *bad[9];
+    memcpy(bad, lob3B_A, sizeof(bad));
+    bad[0] = "1/6 + 10^-60";
+    vigen_tableau u;
+    make(&u, "lobatto IIIA-IIIB 3, 1e-60 off", 3, lob3_c, lob3A_A, lob3_b, bad, lob3B_c, NULL);
+    vigen_check_report rep;
+    CHECK(check(&rep, &u, NULL, 4) == VIGEN_OK);
+    CHECK(rep.rational_denominator != NULL && strcmp(rep.rational_denominator, "3" ZEROS60) == 0);
+    CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO && rep.exit_code == 1);
+    const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "At", 1, 0);
+    if (p == NULL) p = find_problem(&rep, VIGEN_PROBLEM_ROWSUM, "At", 1, 1);
+    CHECK(p != NULL && !p->undecided);
+    CHECK(rep.proved > 0 && rep.row_fail >= 1 && rep.sym_fail >= 1);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&u);
 }
@@ -1033,6 +1064,7 @@ int main(void)
     test_stormer_verlet();
     test_gauss_exact();
     test_lobatto3();
+    test_rational_tiny_perturbation();
     test_rk4();
     test_ruth3();
     test_perturbed_gauss3();
