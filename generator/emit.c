@@ -13,6 +13,7 @@
 #endif
 #include <arb.h>
 #include <arb_mat.h>
+#include "check.h"
 #include "emit.h"
 #include "template.h"
 
@@ -1012,6 +1013,76 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     return VIGEN_OK;
 }
 
+/* ------------------------------------------------------------------ audit */
+
+/* The first problem of the report of a kind that certainly fails (diagnosed
+ * = 1: the one naming a single entry; 0: a plain failing condition). */
+static const vigen_check_problem *first_failing(const vigen_check_report *rep, int kind, int diagnosed)
+{
+    for (slong k = 0; k < rep->nproblems; k++) {
+        const vigen_check_problem *p = rep->problems + k;
+        if (p->kind == kind && !p->undecided && p->diagnosed == diagnosed && p->message) return p;
+    }
+    return NULL;
+}
+
+int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err)
+{
+    *warnings = 0;
+    const char *label = path ? path : (t->name ? t->name : "tableau");
+    vigen_check_options copt;
+    vigen_check_options_init(&copt);
+    /* Row sums and symplecticity do not depend on the order conditions; order
+     * 1 is the cheapest level the checker evaluates.  A claim order = p would
+     * make it evaluate order p + 1 (up to 12, slow for many stages), and a
+     * claim symplectic = true only changes how bt != b is listed: both are
+     * set aside for the audit and restored. */
+    copt.max_order = 1;
+    copt.path = label;
+    int claim_order = t->claim_order, claim_symplectic = t->claim_symplectic;
+    t->claim_order = -1;
+    t->claim_symplectic = -1;
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    int rc = vigen_check_tableau(&rep, t, NULL, &copt, err);
+    t->claim_order = claim_order;
+    t->claim_symplectic = claim_symplectic;
+    if (rc != VIGEN_OK) {
+        vigen_check_report_clear(&rep);
+        return rc;
+    }
+    /* Only certain failures are reported: a condition on rounded decimals that
+     * holds within the precision of the data, or an undecided one, is no
+     * evidence against the tableau. */
+    if (rep.consistent == VIGEN_CHECK_NO) {
+        const vigen_check_problem *p = first_failing(&rep, VIGEN_PROBLEM_ROWSUM, 0);
+        vigen_warn("%s: the tableau is not consistent (%ld of %ld conditions c_i = sum_j a_ij%s, sum b = 1%s fail%s%s)",
+                   label, (long)rep.row_fail, (long)rep.row_total, rep.has_ct ? ", ct_i = sum_j at_ij" : "",
+                   rep.has_bt ? ", sum bt = 1" : "", p ? "; first: " : "", p ? p->message : "");
+        (*warnings)++;
+    }
+    if (rep.symplectic == VIGEN_CHECK_NO && rep.symplectic_separable == VIGEN_CHECK_YES) {
+        vigen_warn("%s: the tableau is symplectic only for separable H = T(p) + V(t, q) (bt != b); "
+                   "for other H the stepper is not symplectic", label);
+        (*warnings)++;
+    } else if (rep.symplectic == VIGEN_CHECK_NO) {
+        const vigen_check_problem *p = first_failing(&rep, VIGEN_PROBLEM_SYMPLECTIC, 0);
+        vigen_warn("%s: the tableau is not symplectic (%ld of %ld conditions b_i at_ij + b_j a_ji - b_i b_j = 0%s "
+                   "fail%s%s)",
+                   label, (long)rep.sym_fail, (long)rep.sym_total, rep.has_bt ? ", bt = b" : "",
+                   p ? "; first: " : "", p ? p->message : "");
+        (*warnings)++;
+    }
+    if (*warnings > 0) {
+        const vigen_check_problem *d = first_failing(&rep, VIGEN_PROBLEM_ROWSUM, 1);
+        if (d == NULL) d = first_failing(&rep, VIGEN_PROBLEM_SYMPLECTIC, 1);
+        if (d) vigen_warn("%s: a misprint? %s", label, d->message);
+        vigen_warn("%s: the stepper is emitted as the tableau says; run 'vigen check %s' for details", label, label);
+    }
+    vigen_check_report_clear(&rep);
+    return VIGEN_OK;
+}
+
 /* ---------------------------------------------------------------- command */
 
 static const char usage_emit[] =
@@ -1026,7 +1097,12 @@ static const char usage_emit[] =
     "  --real TYPE   double (default), long-double (x87, 64-bit mantissa) or float128\n"
     "  -o DIR        output directory (default: the current directory)\n"
     "  --allow-inexact  round entries given with too few digits as written (warns)\n"
-    "  -q, --quiet   no summary on standard error\n"
+    "  -q, --quiet   no summary on standard error (warnings are still printed)\n"
+    "\n"
+    "The tableau is checked as 'vigen check' does (row sums, sum b = 1, symplecticity;\n"
+    "not the order): when a condition certainly fails, a warning on standard error says\n"
+    "which, and the stepper is still written (exit status 0).  Conditions that hold only\n"
+    "within the precision of rounded entries, or are undecided, give no warning.\n"
     "\n"
     "Exit status: 0 success, 1 the tableau cannot be rounded (too few digits),\n"
     "2 unreadable input, usage or output error.\n";
@@ -1081,6 +1157,17 @@ int vigen_emit_main(int argc, char **argv)
     vigen_emit_options opt = { name, real, base ? base + 1 : file, inexact };
     char *h = NULL, *c = NULL, *ident = NULL;
     rc = vigen_emit_render(&t, &opt, &h, &c, &ident, &err);
+    if (rc == VIGEN_OK) {
+        /* not silenced by -q: a stepper that is not what its user expects is
+         * worth a line even in a quiet build */
+        int nwarn = 0;
+        vigen_error aerr;
+        vigen_error_init(&aerr);
+        if (vigen_emit_audit(&t, file, &nwarn, &aerr) != VIGEN_OK)
+            vigen_warn("%s: could not check the tableau (%s); run 'vigen check %s'", file,
+                       aerr.message ? aerr.message : vigen_status_name(aerr.code), file);
+        vigen_error_clear(&aerr);
+    }
     vigen_tableau_clear(&t);
     if (rc == VIGEN_OK) {
         if (strcmp(ident, name) != 0) vigen_warn("--name '%s' is not a C identifier; using '%s'", name, ident);

@@ -28,6 +28,9 @@
  *   timestamp and no path.  Digest: FNV-1a 64 of the canonical text
  *   "vigen-tableau-v1\n" + name + "\n" + s + "\n" then every entry text of c,
  *   A (row-major), b, At, ct, bt, one per line, "-" for an absent part.
+ * - The tableau is audited (vigen_emit_audit below): a warning on stderr,
+ *   not silenced by -q, when it is certainly not consistent or not
+ *   symplectic; the files are still written and the exit status is 0.
  * - Structure: the stage equations are solved by fixed-point iteration or
  *   simplified Newton (runtime options).  When the tableau's dependency graph
  *   is acyclic for separable H (H = T(p) + V(t, q)), an explicit path is also
@@ -71,6 +74,20 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
 
 /* Sanitises a requested name into a C identifier (heap string). */
 char *vigen_emit_identifier(const char *name);
+
+/* The audit `vigen emit` runs on every tableau it compiles: vigen_check_tableau
+ * on the row sums (c_i = sum_j a_ij, ct_i = sum_j at_ij, sum b = 1, sum bt = 1)
+ * and symplecticity (b_i at_ij + b_j a_ji = b_i b_j, bt = b), the order
+ * conditions left out.  Each certain failure is one vigen_warn (not
+ * consistent; not symplectic, or symplectic only for separable H when just
+ * bt != b spoils it), followed by the checker's single-entry diagnosis when it
+ * has one and a line pointing to `vigen check PATH`; *warnings counts the
+ * failures (0: nothing certainly wrong; conditions that hold only within the
+ * precision of rounded data, or are undecided, never warn).  t is evaluated
+ * in place (its texts are kept; its claims are set aside for the audit and
+ * restored).  path names the file in the messages (NULL: the tableau name).
+ * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
+int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
 
 /* The `vigen emit` command: argv[0] is "emit", options follow.  Returns the
  * process exit status: 0 success, 1 the tableau cannot be emitted (precision),

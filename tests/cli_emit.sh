@@ -1,6 +1,7 @@
 #!/bin/bash
 # cli_emit.sh VIGEN SRC — `vigen emit` from the command line: files written,
-# byte-identical reruns, sanitised names, refusal of too few digits, usage.
+# byte-identical reruns, sanitised names, refusal of too few digits, the
+# warning for tableaux that are not symplectic or not consistent, usage.
 set -u
 VIGEN=$1
 SRC=$2
@@ -27,6 +28,39 @@ check '[ $? -eq 1 ] && grep -q "digits" "$T/err.txt" && [ ! -f "$T/q.c" ]' "too 
 check '[ $? -eq 0 ] && grep -q "0x1p-2L" "$T/q.c"' "long double literals"
 "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name q128 --real float128 -o "$T" -q
 check '[ $? -eq 0 ] && gcc -std=c11 -Wall -Wextra -Wpedantic -Werror -I"$SRC/runtime/include" -I"$T" -c "$T/q128.c" -o "$T/q128.o"' "float128 stepper compiles"
+
+# The audit: a tableau that certainly fails a row sum or a symplecticity
+# condition is still emitted (exit 0) with a warning that -q does not silence;
+# a symplectic one, even written with rounded decimals, gets none.
+# The classical RK4 (Kutta 1901), one RK method for both parts: consistent,
+# order 4, not symplectic (b_1 a_11 + b_1 a_11 - b_1^2 = -1/36).
+"$VIGEN" emit "$SRC/tests/data/check/rk4.lua" --name rk4 -o "$T" -q 2>"$T/err.txt"
+check '[ $? -eq 0 ] && [ -f "$T/rk4.c" ] && [ -f "$T/rk4.h" ]' "non-symplectic tableau still emitted, exit 0"
+check 'grep -q "warning: .*rk4.lua: the tableau is not symplectic (10 of 10 conditions" "$T/err.txt"' "RK4: warns 'not symplectic' despite -q"
+check 'grep -q "run .vigen check .*rk4.lua. for details" "$T/err.txt"' "RK4: points to vigen check"
+check '! grep -q "not consistent" "$T/err.txt"' "RK4: its row sums hold, no consistency warning"
+check 'gcc -std=c11 -Wall -Wextra -Wpedantic -Werror -I"$SRC/runtime/include" -I"$T" -c "$T/rk4.c" -o "$T/rk4.o"' "RK4 stepper compiles"
+# Leok-Zhang Ex. 5 (iii) as printed: a_33 misprinted, so row 3 of A does not
+# sum to c_3 and the pair (3, 3) is not symplectic; one entry explains both.
+"$VIGEN" emit "$SRC/tableaux/published/leok_zhang_ex5_iii.lua" --name ex5 -o "$T" 2>"$T/err.txt"
+check '[ $? -eq 0 ] && [ -f "$T/ex5.c" ]' "inconsistent published tableau still emitted"
+check 'grep -q "not consistent (1 of 7 conditions.*row 3 of A sums to" "$T/err.txt"' "Ex. 5 (iii): warns 'not consistent', names row 3 of A"
+check 'grep -q "not symplectic (1 of 9 conditions.*pair (3, 3)" "$T/err.txt"' "Ex. 5 (iii): warns 'not symplectic', names pair (3, 3)"
+check 'grep -q "A\[3\]\[3\]" "$T/err.txt"' "Ex. 5 (iii): names the misprinted entry"
+check 'grep -q "wrote" "$T/err.txt"' "without -q the summary is printed too"
+# sum b = 0.51 + 1/2: the ball of the rounded 0.51 excludes sum b = 1
+"$VIGEN" emit "$SRC/tests/data/check/gauss2_b051.lua" --name b051 -o "$T" -q --allow-inexact 2>"$T/err.txt"
+check '[ $? -eq 0 ] && grep -q "not consistent.*sum of b" "$T/err.txt"' "sum b != 1 on rounded data: warned"
+# symplectic tableaux: exact, generated (50 digits) and rounded to 6 digits
+# (the conditions hold only within the precision of the data: no alarm)
+for f in tests/data/emit/gauss2.lua tableaux/generated/gauss_legendre_s3.lua tableaux/published/yoshida_4.lua; do
+  "$VIGEN" emit "$SRC/$f" --name ok -o "$T" -q 2>"$T/err.txt"
+  check '[ $? -eq 0 ] && [ ! -s "$T/err.txt" ]' "$f: symplectic, no warning"
+done
+"$VIGEN" emit "$SRC/tests/data/check/gauss2_6digits.lua" --name ok -o "$T" -q --allow-inexact 2>"$T/err.txt"
+check '[ $? -eq 0 ] && ! grep -q "not symplectic\|not consistent" "$T/err.txt"' "6-digit Gauss-2: no false alarm"
+"$VIGEN" emit --help | grep -q "certainly fails"
+check '[ $? -eq 0 ]' "--help describes the audit"
 
 "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" -o "$T" 2>/dev/null
 check '[ $? -eq 2 ]' "missing --name is a usage error"

@@ -15,8 +15,12 @@
  *   - Newton and fixed-point iteration agree; Newton survives h = 5, and
  *     fixed-point iteration reports divergence at h = 100.
  * Also: correct rounding of coefficient literals, identifier sanitising,
- * refusal of entries with too few digits.  Needs gcc (clang optional) on PATH;
- * run from the source root (ctest sets the working directory). */
+ * refusal of entries with too few digits, and the audit that warns about
+ * tableaux that are certainly not symplectic or not consistent (only those).
+ * Long double and float128 steppers are run in test_emit_precision.c,
+ * time-dependent H and non-uniform grids in test_emit_time.c.  Needs gcc
+ * (clang optional) on PATH; run from the source root (ctest sets the working
+ * directory). */
 #define _POSIX_C_SOURCE 200809L
 #include <dirent.h>
 #include <stdio.h>
@@ -384,6 +388,72 @@ static void test_names(void)
     vigen_tableau_clear(&t);
 }
 
+/* The audit of vigen emit (vigen_emit_audit): warnings only for certain
+ * failures, collected through the warning hook. */
+static int audit_count;
+static vigen_strbuf audit_text;
+static void audit_collect(const char *message, void *ctx)
+{
+    (void)ctx;
+    audit_count++;
+    vigen_strbuf_append(&audit_text, message);
+    vigen_strbuf_append(&audit_text, "\n");
+}
+
+static int audit(const char *path, int *failures)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_tableau t;
+    audit_count = 0;
+    vigen_strbuf_clear(&audit_text);
+    vigen_strbuf_init(&audit_text);
+    vigen_strbuf_append(&audit_text, "");
+    *failures = -1;
+    if (vigen_tableau_load(&t, path, NULL, &err) != VIGEN_OK) {
+        CHECK_MSG(0, "%s: %s", path, err.message);
+        vigen_error_clear(&err);
+        return -1;
+    }
+    int claim_order = t.claim_order, claim_symplectic = t.claim_symplectic;
+    vigen_warning_set_handler(audit_collect, NULL);
+    int rc = vigen_emit_audit(&t, path, failures, &err);
+    vigen_warning_set_handler(NULL, NULL);
+    CHECK_MSG(rc == VIGEN_OK, "%s: audit failed: %s", path, err.message ? err.message : "");
+    CHECK_MSG(t.claim_order == claim_order && t.claim_symplectic == claim_symplectic, "%s: claims not restored", path);
+    vigen_error_clear(&err);
+    vigen_tableau_clear(&t);
+    return audit_count;
+}
+
+static void test_audit(void)
+{
+    int failures;
+    /* classical RK4 for both parts: consistent, not symplectic (b_1^2 - 2 b_1
+     * a_11 = 1/36 != 0): one failure, then the pointer to vigen check */
+    CHECK(audit("tests/data/check/rk4.lua", &failures) == 2 && failures == 1);
+    CHECK(strstr(audit_text.data, "not symplectic (10 of 10 conditions") != NULL);
+    CHECK(strstr(audit_text.data, "not consistent") == NULL);
+    CHECK(strstr(audit_text.data, "vigen check tests/data/check/rk4.lua") != NULL);
+    /* Leok-Zhang Ex. 5 (iii) as printed: a_33 misprinted; both fail and the
+     * entry is named */
+    CHECK(audit("tableaux/published/leok_zhang_ex5_iii.lua", &failures) == 4 && failures == 2);
+    CHECK(strstr(audit_text.data, "not consistent") != NULL && strstr(audit_text.data, "row 3 of A") != NULL);
+    CHECK(strstr(audit_text.data, "A[3][3]") != NULL);
+    /* sum b = 0.51 + 1/2: the rounded 0.51 is [0.505, 0.515], sum b != 1 for certain */
+    CHECK(audit("tests/data/check/gauss2_b051.lua", &failures) >= 2 && failures == 2);
+    CHECK(strstr(audit_text.data, "sum of b") != NULL);
+    /* symplectic tableaux, exact, with 50 digits, and with 6 digits (holding
+     * only within the precision of the data): silence */
+    const char *const good[] = { "tests/data/emit/gauss2.lua", "tests/data/emit/yoshida4.lua",
+                                 "tableaux/generated/gauss_legendre_s4.lua", "tableaux/published/yoshida_6.lua",
+                                 "tests/data/check/gauss2_6digits.lua" };
+    for (size_t k = 0; k < sizeof good / sizeof good[0]; k++) {
+        CHECK_MSG(audit(good[k], &failures) == 0 && failures == 0, "%s: audit warned: %s", good[k], audit_text.data);
+    }
+    vigen_strbuf_clear(&audit_text);
+}
+
 int main(void)
 {
 #ifdef VIGEN_SOURCE_DIR
@@ -410,6 +480,7 @@ int main(void)
     char *lib = vigen_strdup_printf("%s/librt.a", tmpdir);
 
     test_names();
+    test_audit();
     test_rounding();
     test_golden("gauss2");
     test_golden("verlet");
