@@ -1,8 +1,7 @@
 /* hand_gauss2.h — a careful hand-written 2-stage Gauss stepper (fixed-point
  * iteration with Gauss-Seidel sweeps over the partitions, the same
  * round-off-aware stopping rule and starting values extrapolated from the
- * previous step and corrected by the previous step's miss, as the emitted
- * steppers, compensated update), calling the
+ * previous step as the emitted steppers, compensated update), calling the
  * problem's gradients directly.  Instantiate with
  *   #define HG2_NAME name  #define HG2_DQ dq_fn  #define HG2_DP dp_fn
  *   #include "hand_gauss2.h"
@@ -18,21 +17,19 @@
 typedef struct {
     size_t n;
     double *Q1, *Q2, *P1, *P2, *F1, *F2, *G1, *G2, *Fo1, *Fo2, *Go1, *Go2, *cq, *cp;
-    double *Fd1, *Fd2, *Gd1, *Gd2;   /* predictions, then their misses */
     double hprev;
-    int hist, corr;
+    int hist;
     unsigned long evals, iters;
 } HG2_FN(_ws);
 
 static HG2_FN(_ws) *HG2_FN(_alloc)(size_t n)
 {
     HG2_FN(_ws) *w = calloc(1, sizeof *w);
-    double *m = calloc(18 * n, sizeof(double));
+    double *m = calloc(14 * n, sizeof(double));
     w->n = n;
     double **ptrs[] = { &w->Q1, &w->Q2, &w->P1, &w->P2, &w->F1, &w->F2, &w->G1, &w->G2,
-                        &w->Fo1, &w->Fo2, &w->Go1, &w->Go2, &w->cq, &w->cp,
-                        &w->Fd1, &w->Fd2, &w->Gd1, &w->Gd2 };
-    for (int k = 0; k < 18; k++) *ptrs[k] = m + (size_t)k * n;
+                        &w->Fo1, &w->Fo2, &w->Go1, &w->Go2, &w->cq, &w->cp };
+    for (int k = 0; k < 14; k++) *ptrs[k] = m + (size_t)k * n;
     return w;
 }
 
@@ -49,14 +46,11 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
     if (w->hist) {
         double r = h / w->hprev, x1 = 1 + c1 * r, x2 = 1 + c2 * r, d = c2 - c1;
         double w11 = (c2 - x1) / d, w12 = (x1 - c1) / d, w21 = (c2 - x2) / d, w22 = (x2 - c1) / d;
-        double rs = w->corr && r >= 0.5 && r <= 2 ? r * r : 0;
         for (size_t k = 0; k < n; k++) {
-            double f1 = w11 * w->Fo1[k] + w12 * w->Fo2[k], f2 = w21 * w->Fo1[k] + w22 * w->Fo2[k];
-            double g1 = w11 * w->Go1[k] + w12 * w->Go2[k], g2 = w21 * w->Go1[k] + w22 * w->Go2[k];
-            F1[k] = f1 + rs * w->Fd1[k]; w->Fd1[k] = f1;
-            F2[k] = f2 + rs * w->Fd2[k]; w->Fd2[k] = f2;
-            G1[k] = g1 + rs * w->Gd1[k]; w->Gd1[k] = g1;
-            G2[k] = g2 + rs * w->Gd2[k]; w->Gd2[k] = g2;
+            F1[k] = w11 * w->Fo1[k] + w12 * w->Fo2[k];
+            F2[k] = w21 * w->Fo1[k] + w22 * w->Fo2[k];
+            G1[k] = w11 * w->Go1[k] + w12 * w->Go2[k];
+            G2[k] = w21 * w->Go1[k] + w22 * w->Go2[k];
         }
     } else {
         HG2_DP(*t, q, p, F1, ctx);
@@ -101,24 +95,17 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
         w->evals += 4;
         it++;
         double rq = dq == 0 ? 0 : dq / sq, rp = dp == 0 ? 0 : dp / sp, delta = rq > rp ? rq : rp;
-        if (!(delta < 1e300)) { w->corr = 0; return 1; }
+        if (!(delta < 1e300)) return 1;
         if (delta == 0) break;
         if (prev2 >= 0 && delta >= prev2) {
             if (delta <= 2.3e-10 || prev1 <= 2.3e-10) break;
-            if (++strikes >= 3) { w->corr = 0; return 1; }
+            if (++strikes >= 3) return 1;
         }
-        if (it >= 50) { w->corr = 0; return 1; }
+        if (it >= 50) return 1;
         prev2 = prev1;
         prev1 = delta;
     }
     w->iters += (unsigned long)it;
-    if (w->hist) {
-        for (size_t k = 0; k < n; k++) {
-            w->Fd1[k] = F1[k] - w->Fd1[k]; w->Fd2[k] = F2[k] - w->Fd2[k];
-            w->Gd1[k] = G1[k] - w->Gd1[k]; w->Gd2[k] = G2[k] - w->Gd2[k];
-        }
-    }
-    w->corr = w->hist;
     for (size_t k = 0; k < n; k++) {     /* compensated (TwoSum) update */
         double e = h * 0.5 * (F1[k] + F2[k]) + w->cq[k], s = q[k] + e, bb = s - q[k];
         w->cq[k] = (q[k] - (s - bb)) + (e - bb);

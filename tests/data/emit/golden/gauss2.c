@@ -54,7 +54,7 @@
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
-#define GAUSS2_NARRAYS 26
+#define GAUSS2_NARRAYS 22
 
 struct gauss2_workspace {
     vigen_hamiltonian sys;
@@ -66,13 +66,11 @@ struct gauss2_workspace {
     double *Q[2], *P[2];     /* stage values */
     double *F[2], *G[2];     /* dH/dp, dH/dq at the stages */
     double *Fo[2], *Go[2];   /* the same at the previous step's stages */
-    double *Fd[2], *Gd[2];   /* last step's start corrections (or this step's predictions) */
     double *cq, *cp, ct;           /* compensation of the q, p and t updates */
     double *q0s, *p0s;             /* copies of q and p when a step needs them */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
     int history;                    /* Fo, Go and hprev are valid */
-    int corr;                       /* Fd, Gd hold the last step's corrections */
     double t_next, q_next0, p_next0;   /* what the last step returned */
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
     int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain */
@@ -89,7 +87,6 @@ void gauss2_reset(gauss2_workspace *w)
     memset(w->cq, 0, 2 * w->n * sizeof(double));   /* cq and cp are adjacent */
     w->ct = 0;
     w->history = 0;
-    w->corr = 0;
     memset(&w->stats, 0, sizeof w->stats);
 }
 
@@ -139,8 +136,6 @@ gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_
         w->G[i] = m; m += n;
         w->Fo[i] = m; m += n;
         w->Go[i] = m; m += n;
-        w->Fd[i] = m; m += n;
-        w->Gd[i] = m; m += n;
     }
     w->cq = m; m += n;
     w->cp = m; m += n;
@@ -333,27 +328,14 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
     const size_t n = w->n;
     const double t0 = *t;
     int st;
-    int predicted = 0;
     double *const F1 = w->F[0], *const G1 = w->G[0];
     const double *const Fo1 = w->Fo[0], *const Go1 = w->Go[0];
-    double *const Fd1 = w->Fd[0], *const Gd1 = w->Gd[0];
     double *const F2 = w->F[1], *const G2 = w->G[1];
     const double *const Fo2 = w->Fo[1], *const Go2 = w->Go[1];
-    double *const Fd2 = w->Fd[1], *const Gd2 = w->Gd[1];
     if (w->history && w->opt.extrapolate) {
-        /* The prediction below misses the converged stage gradients by an
-         * amount that varies slowly from step to step (O(h^2) at each
-         * stage, a smooth function of the state), so the last step's miss,
-         * scaled by r^2 for a new step size, is added back: on Kepler and
-         * the FPUT chain this starts 10 to 100 times closer to the fixed point
-         * (docs/benchmarks.md).  Only steps within a factor 2 of the last are
-         * corrected.  The predictions are kept in Fd, Gd and turned into the
-         * corrections for the next step once this one has converged. */
-        const double r = h / w->hprev;
-        const double rs = w->corr && r >= 0.5 && r <= 2 ? r * r : 0;
-        predicted = 1;
         /* Lagrange extrapolation of the previous step's stage gradients, at
          * times 1 + c_i r in units of the previous step (nodes c_j). */
+        const double r = h / w->hprev;
         const double x1 = 1 + 0x1.b0cb174df99c7p-3 * r;
         const double x2 = 1 + 0x1.93cd3a2c8198ep-1 * r;
         const double w1_1 = (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
@@ -361,18 +343,10 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
         const double w2_1 = (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
         const double w2_2 = (x2 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
         for (size_t k = 0; k < n; k++) {
-            const double f1 = w1_1 * Fo1[k] + w1_2 * Fo2[k];
-            const double g1 = w1_1 * Go1[k] + w1_2 * Go2[k];
-            const double f2 = w2_1 * Fo1[k] + w2_2 * Fo2[k];
-            const double g2 = w2_1 * Go1[k] + w2_2 * Go2[k];
-            F1[k] = f1 + rs * Fd1[k];
-            G1[k] = g1 + rs * Gd1[k];
-            Fd1[k] = f1;
-            Gd1[k] = g1;
-            F2[k] = f2 + rs * Fd2[k];
-            G2[k] = g2 + rs * Gd2[k];
-            Fd2[k] = f2;
-            Gd2[k] = g2;
+            F1[k] = w1_1 * Fo1[k] + w1_2 * Fo2[k];
+            G1[k] = w1_1 * Go1[k] + w1_2 * Go2[k];
+            F2[k] = w2_1 * Fo1[k] + w2_2 * Fo2[k];
+            G2[k] = w2_1 * Go1[k] + w2_2 * Go2[k];
         }
     } else {
         /* Start from the gradients at (t, q, p) at every stage. */
@@ -388,18 +362,8 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
     if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
     if (st != VIGEN_SUCCESS) {
         w->stats.failed_steps++;
-        w->corr = 0;                /* Fd, Gd hold predictions now */
         return st;
     }
-    if (predicted) {
-        for (size_t k = 0; k < n; k++) {
-            Fd1[k] = F1[k] - Fd1[k];
-            Gd1[k] = G1[k] - Gd1[k];
-            Fd2[k] = F2[k] - Fd2[k];
-            Gd2[k] = G2[k] - Gd2[k];
-        }
-    }
-    w->corr = predicted;
     if (w->opt.kahan) {
         for (size_t k = 0; k < n; k++) {
             q[k] = vigen_twosum_update(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), &w->cq[k]);
