@@ -59,17 +59,25 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
         memcpy(F2, F1, n * sizeof(double));
         memcpy(G2, G1, n * sizeof(double));
     }
-    /* starting stage values, then Gauss-Seidel sweeps: G(Q, P), P, F(Q, P), Q */
+    /* starting stage values and their scales, then Gauss-Seidel sweeps:
+     * G(Q, P), P, F(Q, P), Q */
+    double sq = 0, sp = 0;
     for (size_t k = 0; k < n; k++) {
         Q1[k] = q[k] + h * (a11 * F1[k] + a12 * F2[k]);
         Q2[k] = q[k] + h * (a21 * F1[k] + a22 * F2[k]);
         P1[k] = p[k] - h * (a11 * G1[k] + a12 * G2[k]);
         P2[k] = p[k] - h * (a21 * G1[k] + a22 * G2[k]);
+        double e1 = fabs(Q1[k]), e2 = fabs(Q2[k]);
+        sq = e1 > sq ? e1 : sq; sq = e2 > sq ? e2 : sq;
+        e1 = fabs(P1[k]); e2 = fabs(P2[k]);
+        sp = e1 > sp ? e1 : sp; sp = e2 > sp ? e2 : sp;
     }
+    if (sq == 0) sq = 1;
+    if (sp == 0) sp = 1;
     double prev1 = -1, prev2 = -1;
     int strikes = 0, it = 0;
     for (;;) {
-        double dq = 0, sq = 0, dp = 0, sp = 0;
+        double dq = 0, dp = 0;
         HG2_DQ(*t + c1 * h, Q1, P1, G1, ctx);
         HG2_DQ(*t + c2 * h, Q2, P2, G2, ctx);
         for (size_t k = 0; k < n; k++) {
@@ -77,8 +85,6 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
             double u2 = p[k] - h * (a21 * G1[k] + a22 * G2[k]);
             double e1 = fabs(u1 - P1[k]), e2 = fabs(u2 - P2[k]);
             dp = e1 > dp ? e1 : dp; dp = e2 > dp ? e2 : dp;
-            e1 = fabs(u1); e2 = fabs(u2);
-            sp = e1 > sp ? e1 : sp; sp = e2 > sp ? e2 : sp;
             P1[k] = u1; P2[k] = u2;
         }
         HG2_DP(*t + c1 * h, Q1, P1, F1, ctx);
@@ -88,8 +94,6 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
             double v2 = q[k] + h * (a21 * F1[k] + a22 * F2[k]);
             double d1 = fabs(v1 - Q1[k]), d2 = fabs(v2 - Q2[k]);
             dq = d1 > dq ? d1 : dq; dq = d2 > dq ? d2 : dq;
-            d1 = fabs(v1); d2 = fabs(v2);
-            sq = d1 > sq ? d1 : sq; sq = d2 > sq ? d2 : sq;
             Q1[k] = v1; Q2[k] = v2;
         }
         w->evals += 4;
