@@ -32,6 +32,11 @@ const char *vigen_check_usage =
     "    is tighter than 2^-(prec/2) of the size of its terms, with the same verdicts at\n"
     "    two successive precisions, the second of at least 1024 bits; the precision is\n"
     "    doubled until that is so (up to 4096 bits, or twice the start);\n"
+    "  - when every entry is rational, or every entry is a + b sqrt(d) with rational a, b\n"
+    "    and one d, holds are proofs instead: with D the common denominator, a condition\n"
+    "    v of k entries per term and constant denominator g holds when |v| D^k g < 1, or\n"
+    "    |v| |v'| (D^k g)^2 < 1 with v' the condition on the conjugate tableau\n"
+    "    (sqrt(d) -> -sqrt(d)); no second precision is then needed;\n"
     "  - anything else is reported undecided.\n"
     "The starting precision covers the digits of every decimal and exact literal\n"
     "(10^-45 included) plus 64 bits, at least 128.\n"
@@ -77,10 +82,79 @@ typedef struct {
     int part[2];                 /* every entry of (A, b) resp. (At, bt) is exact */
     int part_c[2];               /* ... and of c resp. ct */
     int any_exact, any_rounded;
-    fmpz_t den;                  /* every entry rational: a common denominator; else 0 */
+    /* Every entry a + b sqrt(qd) with a, b rational, in Q (qd = 1) or in one
+     * real quadratic field Q(sqrt qd) (qd > 1 squarefree): den is a common
+     * denominator of every a and b; otherwise den = qd = 0. */
+    fmpz_t den, qd;
+    char **conj[6];              /* qd > 1: the conjugate entries a - b sqrt(qd) as texts, in the
+                                    order of the lists of exactness_init (NULL when not given) */
 } exactness;
 
 static int text_exact(char **texts, slong k) { return texts != NULL && texts[k] != NULL && !vigen_decimal_is_rounded(texts[k]); }
+
+/* Entries in Q or in one Q(sqrt d) make holds provable (see proved_zero()).
+ * With D a common denominator of every a and b of the entries a + b sqrt(d),
+ * each condition value v (a sum of products of k entries, minus a constant
+ * with denominator g) has v D^k g = m + n sqrt(d) with integers m, n.  Sets
+ * x->den = D and x->qd = d (1 for rationals) when every given entry is such a
+ * value, and for d > 1 the texts of the conjugate entries a - b sqrt(d); the
+ * caller has checked that every entry is exact. */
+static void algebraic_init(exactness *x, char **const lists[6], const slong lens[6])
+{
+    int ok = x->part_c[0] && x->part_c[1];
+    fmpz_one(x->den);
+    fmpz_one(x->qd);
+    fmpq *qa[6] = {NULL}, *qb[6] = {NULL};
+    fmpz_t d;
+    fmpz_init(d);
+    for (int l = 0; l < 6 && ok; l++) {
+        if (lists[l] == NULL) continue;
+        qa[l] = _fmpq_vec_init(lens[l]);
+        qb[l] = _fmpq_vec_init(lens[l]);
+        for (slong k = 0; k < lens[l] && ok; k++) {
+            vigen_expr *e = NULL;
+            vigen_error err;
+            vigen_error_init(&err);
+            ok = lists[l][k] != NULL && vigen_expr_parse(&e, lists[l][k], 0, &err) == VIGEN_OK &&
+                 vigen_expr_to_quadratic(qa[l] + k, qb[l] + k, d, e);
+            /* one field for the whole tableau */
+            if (ok && !fmpz_is_one(d)) {
+                if (fmpz_is_one(x->qd)) fmpz_set(x->qd, d);
+                else ok = fmpz_equal(x->qd, d);
+            }
+            if (ok) {
+                fmpz_lcm(x->den, x->den, fmpq_denref(qa[l] + k));
+                fmpz_lcm(x->den, x->den, fmpq_denref(qb[l] + k));
+            }
+            vigen_expr_free(e);
+            vigen_error_clear(&err);
+        }
+    }
+    if (ok && !fmpz_is_one(x->qd)) {
+        char *ds = fmpz_get_str(NULL, 10, x->qd);
+        for (int l = 0; l < 6; l++) {
+            if (lists[l] == NULL) continue;
+            x->conj[l] = flint_calloc((size_t)lens[l], sizeof(char *));
+            for (slong k = 0; k < lens[l]; k++) {
+                char *a = fmpq_get_str(NULL, 10, qa[l] + k), *b = fmpq_get_str(NULL, 10, qb[l] + k);
+                x->conj[l][k] = vigen_strdup_printf("(%s) - (%s)*sqrt(%s)", a, b, ds);
+                flint_free(a);
+                flint_free(b);
+            }
+        }
+        flint_free(ds);
+    }
+    for (int l = 0; l < 6; l++)
+        if (qa[l]) {
+            _fmpq_vec_clear(qa[l], lens[l]);
+            _fmpq_vec_clear(qb[l], lens[l]);
+        }
+    fmpz_clear(d);
+    if (!ok) {
+        fmpz_zero(x->den);
+        fmpz_zero(x->qd);
+    }
+}
 
 static void exactness_init(exactness *x, const vigen_tableau *t)
 {
@@ -96,6 +170,8 @@ static void exactness_init(exactness *x, const vigen_tableau *t)
     x->any_exact = 0;
     x->any_rounded = !texts;
     fmpz_init(x->den);
+    fmpz_init(x->qd);
+    for (int l = 0; l < 6; l++) x->conj[l] = NULL;
     if (!texts) {
         x->part[0] = x->part[1] = x->part_c[0] = x->part_c[1] = 0;
         return;
@@ -136,38 +212,71 @@ static void exactness_init(exactness *x, const vigen_tableau *t)
             if (vigen_decimal_is_rounded(lists[l][k])) x->any_rounded = 1;
             else x->any_exact = 1;
         }
-    /* A tableau of rational entries with common denominator D makes every
-     * condition value a rational whose denominator divides D^k g (k factors
-     * of entries per term, g the denominator of the constant): a ball inside
-     * (-1/(D^k g), 1/(D^k g)) then proves the value 0 (see verdict()). */
-    int rational = x->part_c[0] && x->part_c[1];
-    fmpz_one(x->den);
-    fmpq_t q;
-    fmpq_init(q);
-    for (int l = 0; l < 6 && rational; l++)
-        for (slong k = 0; lists[l] && k < lens[l] && rational; k++) {
-            vigen_expr *e = NULL;
-            vigen_error err;
-            vigen_error_init(&err);
-            rational = lists[l][k] != NULL && vigen_expr_parse(&e, lists[l][k], 0, &err) == VIGEN_OK &&
-                       vigen_expr_to_fmpq(q, e);
-            if (rational) fmpz_lcm(x->den, x->den, fmpq_denref(q));
-            vigen_expr_free(e);
-            vigen_error_clear(&err);
-        }
-    fmpq_clear(q);
-    if (!rational) fmpz_zero(x->den);
+    algebraic_init(x, lists, lens);
 }
 
 static void exactness_clear(exactness *x)
 {
+    slong lens[6] = {x->s, x->s, x->s, x->s, x->s * x->s, x->s * x->s};
+    for (int l = 0; l < 6; l++) {
+        for (slong k = 0; x->conj[l] && k < lens[l]; k++) free(x->conj[l][k]);
+        flint_free(x->conj[l]);
+    }
     fmpz_clear(x->den);
+    fmpz_clear(x->qd);
     flint_free(x->A);
     flint_free(x->At);
     flint_free(x->b);
     flint_free(x->bt);
     flint_free(x->c);
     flint_free(x->ct);
+}
+
+/* Which condition a decision is about: its section, its shape (k, g, see
+ * ctx_shape) and its identity within the section. */
+typedef struct {
+    int section;
+    slong k;
+    ulong g;
+    slong id[3];
+} cond_tag;
+
+static int cond_tag_eq(const cond_tag *x, const cond_tag *y)
+{
+    return x->section == y->section && x->k == y->k && x->g == y->g && x->id[0] == y->id[0] &&
+           x->id[1] == y->id[1] && x->id[2] == y->id[2];
+}
+
+/* For a tableau in Q(sqrt d): one round on the conjugate tableau (every
+ * sqrt(d) negated) records, per decision, the condition and an upper bound of
+ * |v'|, its value there; the round on the tableau itself replays the
+ * record in order and uses a bound only while every condition so far was the
+ * same (the sequences could differ where the two rounds' verdicts do, since
+ * later checks depend on earlier verdicts: the rest of that round then goes
+ * without bounds). */
+typedef struct {
+    cond_tag *tag;
+    mag_struct *bound;
+    slong n, alloc;
+    slong pos;                   /* replay: the next decision */
+    int in_step;                 /* replay: every decision so far matched the record */
+} conj_log;
+
+static void conj_log_init(conj_log *log) { memset(log, 0, sizeof(*log)); }
+
+static void conj_log_clear(conj_log *log)
+{
+    for (slong k = 0; k < log->alloc; k++) mag_clear(log->bound + k);
+    flint_free(log->bound);
+    flint_free(log->tag);
+}
+
+/* Starts a round: recording afresh, or replaying from the first decision. */
+static void conj_log_start(conj_log *log, int recording)
+{
+    if (recording) log->n = 0;
+    log->pos = 0;
+    log->in_step = 1;
 }
 
 typedef struct {
@@ -184,7 +293,11 @@ typedef struct {
     slong n_proved;              /* holds proved by the denominator bound */
     slong rat_k;                 /* the condition being decided: a sum of products of rat_k */
     ulong rat_g;                 /* entries, minus a constant with denominator rat_g (0: no bound) */
+    slong cond_id[3];            /* ... and which condition of its section it is */
     ulong hash;                  /* of the sequence of verdicts */
+    conj_log *conj;              /* quadratic entries: the conjugate's bounds (NULL: none) */
+    int conj_recording;          /* this round runs on the conjugate tableau and fills conj */
+    const mag_struct *conj_bound;/* for the decision being made: an upper bound of |v'|, or NULL */
 } ctx_t;
 
 static void ctx_init(ctx_t *cx, const vigen_tableau *t, const exactness *ex, vigen_check_holds *holds)
@@ -209,22 +322,86 @@ static void ctx_init(ctx_t *cx, const vigen_tableau *t, const exactness *ex, vig
     cx->n_proved = 0;
     cx->rat_k = 0;
     cx->rat_g = 0;
+    cx->cond_id[0] = cx->cond_id[1] = cx->cond_id[2] = 0;
     cx->hash = 1469598103934665603ULL;
+    cx->conj = NULL;
+    cx->conj_recording = 0;
+    cx->conj_bound = NULL;
 }
 
-/* Sets the shape of the next conditions for the denominator bound: sums of
- * products of k entries, minus constants with denominator dividing g. */
-static void ctx_shape(ctx_t *cx, slong k, ulong g)
+/* Sets the next condition: a sum of products of at most k entries, minus a
+ * constant with denominator dividing g (for the denominator bound; g = 0: no
+ * bound), and (a, b, c) naming it within its section (for the conjugate's
+ * record, see conj_log). */
+static void ctx_shape(ctx_t *cx, slong k, ulong g, slong a, slong b, slong c)
 {
     cx->rat_k = k;
     cx->rat_g = g;
+    cx->cond_id[0] = a;
+    cx->cond_id[1] = b;
+    cx->cond_id[2] = c;
 }
 
-/* 1 if r is certainly 0: every entry is rational with common denominator D,
- * so r = N / (D^k g) for an integer N, and |r| D^k g < 1 forces N = 0. */
+/* Before a decision on r: records an upper bound of |r| when this round runs
+ * on the conjugate tableau; otherwise points cx->conj_bound at the bound the
+ * conjugate recorded for the same condition, if the record is still in step. */
+static void conj_step(ctx_t *cx, const arb_t r)
+{
+    conj_log *log = cx->conj;
+    cx->conj_bound = NULL;
+    if (log == NULL) return;
+    cond_tag tag = {cx->section, cx->rat_k, cx->rat_g, {cx->cond_id[0], cx->cond_id[1], cx->cond_id[2]}};
+    if (cx->conj_recording) {
+        if (log->n == log->alloc) {
+            slong alloc = log->alloc ? 2 * log->alloc : 256;
+            log->tag = flint_realloc(log->tag, sizeof(cond_tag) * (size_t)alloc);
+            log->bound = flint_realloc(log->bound, sizeof(mag_struct) * (size_t)alloc);
+            for (slong k = log->alloc; k < alloc; k++) mag_init(log->bound + k);
+            log->alloc = alloc;
+        }
+        log->tag[log->n] = tag;
+        arb_get_mag(log->bound + log->n, r);   /* inf when r is not finite */
+        log->n++;
+        return;
+    }
+    if (log->in_step && log->pos < log->n && cond_tag_eq(&tag, log->tag + log->pos))
+        cx->conj_bound = log->bound + log->pos;
+    else log->in_step = 0;
+    log->pos++;
+}
+
+/* Tableau in Q(sqrt d), d > 1: v D^k g = m + n sqrt(d) with integers m, n
+ * (D the common denominator of the a and b of the entries a + b sqrt(d)), and
+ * the same condition on the conjugate tableau has v' D^k g = m - n sqrt(d).
+ * So m^2 - d n^2 = v v' (D^k g)^2 is an integer; below 1 in absolute value it
+ * is 0, and as d is not a square, m = n = 0: v = 0.  Upper bounds only. */
+static int quadratic_zero(const ctx_t *cx, const arb_t r)
+{
+    if (cx->conj_bound == NULL || mag_is_inf(cx->conj_bound)) return 0;
+    mag_t m, t;
+    mag_init(m);
+    mag_init(t);
+    arb_get_mag(m, r);
+    mag_mul(m, m, cx->conj_bound);
+    mag_set_fmpz(t, cx->ex->den);
+    mag_pow_ui(t, t, 2 * (ulong)cx->rat_k);
+    mag_mul(m, m, t);
+    mag_set_ui(t, cx->rat_g);
+    mag_mul(t, t, t);
+    mag_mul(m, m, t);
+    int zero = mag_cmp_2exp_si(m, 0) < 0;
+    mag_clear(m);
+    mag_clear(t);
+    return zero;
+}
+
+/* 1 if r is certainly 0.  Rational entries with common denominator D: r =
+ * N / (D^k g) for an integer N, and |r| D^k g < 1 forces N = 0.  Entries in
+ * Q(sqrt d): see quadratic_zero. */
 static int proved_zero(const ctx_t *cx, const arb_t r)
 {
     if (cx->ex == NULL || fmpz_is_zero(cx->ex->den) || cx->rat_k <= 0 || cx->rat_g == 0) return 0;
+    if (!fmpz_is_one(cx->ex->qd)) return quadratic_zero(cx, r);
     fmpz_t m;
     arb_t u;
     arf_t ub;
@@ -277,6 +454,7 @@ static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale,
 static int decide(ctx_t *cx, const arb_t r, int exact, const mag_t scale)
 {
     int unconfirmed, proved;
+    conj_step(cx, r);
     int v = verdict(cx, r, exact, scale, &unconfirmed, &proved);
     cx->hash = (cx->hash ^ (ulong)(v + 1)) * 1099511628211ULL;
     cx->n_unconfirmed += unconfirmed;
@@ -572,7 +750,7 @@ static int cond_decide(ctx_t *cx, const cond *c)
     mag_t m;
     mag_init(m);
     cond_scale(m, cx, c);
-    ctx_shape(cx, cond_is_rowsum(c) || c->type == C_BT_EQ_B ? 1 : 2, 1);
+    ctx_shape(cx, cond_is_rowsum(c) || c->type == C_BT_EQ_B ? 1 : 2, 1, c->type, c->i, c->j);
     int v = decide(cx, c->r, cond_exact(cx, c), m);
     mag_clear(m);
     return v;
@@ -1317,7 +1495,7 @@ static int check_orders(vigen_check_report *rep, ctx_t *cx, int P, vigen_error *
                 int flags = vigen_forest_tree_flags(&ts, c, ids, k);
                 /* a monochromatic tree involves one part only */
                 int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
-                ctx_shape(cx, n, gamma);   /* b Phi has n factors; 1/gamma */
+                ctx_shape(cx, n, gamma, n, it.index, c);   /* b Phi has n factors; 1/gamma */
                 int st = decide2(cx, r, exact, val[c], inv);
                 orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, &ts, c, ids, k, val[c], inv);
                 if (flags & VIGEN_TREE_SEPARABLE)
@@ -1359,6 +1537,7 @@ typedef struct {
     arb_srcptr b, c;
     arb_ptr cp;                  /* cp[k*s + i] = c_i^k, k = 0..cap */
     int exact;                   /* every entry of (c, A, b) of the part is exact */
+    int part;                    /* 0: (c, A, b), 1: (ct, At, bt) */
 } part_t;
 
 static int worst_status(int a, int b)
@@ -1410,7 +1589,7 @@ static int assumption_B(part_t *p, int k)
     arb_sub(r, r, q, prec);
     for (slong i = 0; i < s; i++) mag_addmul3(m, p->b + i, p->cp + (k - 1) * s + i, NULL);
     mag_add_arb(m, q);
-    ctx_shape(p->cx, k, (ulong)k);
+    ctx_shape(p->cx, k, (ulong)k, 3 * p->part, k, 0);
     int st = decide(p->cx, r, p->exact, m);
     arb_clear(r);
     arb_clear(q);
@@ -1435,7 +1614,7 @@ static int assumption_C(part_t *p, int k)
         mag_zero(m);
         for (slong j = 0; j < s; j++) mag_addmul3(m, arb_mat_entry(p->A, i, j), p->cp + (k - 1) * s + j, NULL);
         mag_add_arb(m, q);
-        ctx_shape(p->cx, k, (ulong)k);
+        ctx_shape(p->cx, k, (ulong)k, 3 * p->part + 1, k, i);
         st = worst_status(st, decide(p->cx, r, p->exact, m));
     }
     arb_clear(r);
@@ -1474,7 +1653,7 @@ static int assumption_D(part_t *p, int k)
         arb_mul(u, u, p->b + j, prec);
         arb_div_ui(u, u, (ulong)k, prec);
         mag_add_arb(m, u);
-        ctx_shape(p->cx, k + 1, (ulong)k);
+        ctx_shape(p->cx, k + 1, (ulong)k, 3 * p->part + 2, k, j);   /* b_j/k has fewer factors: D^1 | D^(k+1) */
         st = worst_status(st, decide(p->cx, r, p->exact, m));
     }
     arb_clear(r);
@@ -1509,6 +1688,7 @@ static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
     for (int part = 0; part < 2; part++) {
         part_t p;
         p.cx = cx;
+        p.part = part;
         p.exact = cx->ex->part_c[part];
         p.A = part ? cx->At : cx->A;
         p.b = part ? cx->bt : cx->b;
@@ -1658,7 +1838,7 @@ static void compare_entry(vigen_check_report *rep, ctx_t *cx, const char *mat, s
     arb_t d;
     arb_init(d);
     arb_sub(d, x, y, cx->prec);
-    ctx_shape(cx, 0, 0);   /* FILE2's denominators are not in cx: no proof by denominators */
+    ctx_shape(cx, 0, 0, 0, i, j);   /* FILE2's denominators are not in cx: no proof by denominators */
     int st = decide(cx, d, exact, scale);
     if (st == HOLDS) {
         arb_clear(d);
@@ -1781,6 +1961,8 @@ void vigen_check_report_clear(vigen_check_report *rep)
     free(rep->path);
     free(rep->name);
     flint_free(rep->rational_denominator);
+    flint_free(rep->quadratic_d);
+    flint_free(rep->quadratic_denominator);
     memset(rep, 0, sizeof(*rep));
 }
 
@@ -1918,6 +2100,7 @@ static int check_round(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vig
                        const exactness *ex_against, int P, vigen_error *err)
 {
     report_reset_round(rep);
+    if (cx->conj) conj_log_start(cx->conj, cx->conj_recording);
     check_rows_and_symplecticity(rep, cx, t->claim_symplectic);
     int rc = check_orders(rep, cx, P, err);
     if (rc != VIGEN_OK) return rc;
@@ -1930,6 +2113,60 @@ static int check_round(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vig
         check_against(rep, cx, &cy);
     }
     return VIGEN_OK;
+}
+
+/* The conjugate of a tableau in Q(sqrt d): every entry a + b sqrt(d) becomes
+ * a - b sqrt(d) (texts from ex->conj; ct and bt default as in t), with the
+ * claims of t.  Evaluate it with vigen_tableau_evaluate. */
+static void conj_tableau_init(vigen_tableau *tc, const vigen_tableau *t, const exactness *ex)
+{
+    slong s = t->s;
+    vigen_tableau_init(tc, s);
+    tc->has_At = t->has_At;
+    tc->has_ct = t->has_At && t->has_ct;
+    tc->has_bt = t->has_At && t->has_bt;
+    tc->claim_order = t->claim_order;
+    tc->claim_symplectic = t->claim_symplectic;
+    char ***lists[6] = {&tc->c_text, &tc->b_text, &tc->ct_text, &tc->bt_text, &tc->A_text, &tc->At_text};
+    slong lens[6] = {s, s, s, s, s * s, s * s};
+    for (int l = 0; l < 6; l++) {
+        if (ex->conj[l] == NULL) continue;
+        *lists[l] = calloc((size_t)lens[l], sizeof(char *));
+        for (slong k = 0; k < lens[l]; k++) (*lists[l])[k] = vigen_strdup(ex->conj[l][k]);
+    }
+}
+
+/* Runs one round at prec on the conjugate tableau tc, recording in log the
+ * conditions decided and the upper bounds of their values there.  Its report
+ * is a scratch copy: rep (read for the settings the checks use) is untouched.
+ * When tc cannot be evaluated the record stays empty: no proof this round. */
+static void conj_record(conj_log *log, const vigen_check_report *rep, vigen_tableau *tc, const exactness *ex,
+                        slong prec, int P)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    conj_log_start(log, 1);
+    if (vigen_tableau_evaluate(tc, prec, &err) == VIGEN_OK) {
+        vigen_check_report scratch;
+        vigen_check_report_init(&scratch);
+        scratch.s = rep->s;
+        scratch.max_order = rep->max_order;
+        scratch.has_At = rep->has_At;
+        scratch.has_bt = rep->has_bt;
+        scratch.has_ct = rep->has_ct;
+        scratch.claim_order = rep->claim_order;
+        scratch.claim_symplectic = rep->claim_symplectic;
+        scratch.rounded_entries = rep->rounded_entries;
+        scratch.exact_entries = rep->exact_entries;
+        ctx_t cx;
+        ctx_init(&cx, tc, ex, scratch.holds);
+        cx.prec = prec;
+        cx.conj = log;
+        cx.conj_recording = 1;
+        if (check_round(&scratch, &cx, tc, NULL, NULL, P, &err) != VIGEN_OK) log->n = 0;
+        vigen_check_report_clear(&scratch);
+    }
+    vigen_error_clear(&err);
 }
 
 int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against,
@@ -1972,7 +2209,21 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     rep->rounded_entries = ex.any_rounded;
     rep->exact_entries = ex.any_exact;
     flint_free(rep->rational_denominator);
-    rep->rational_denominator = fmpz_is_zero(ex.den) ? NULL : fmpz_get_str(NULL, 10, ex.den);
+    flint_free(rep->quadratic_d);
+    flint_free(rep->quadratic_denominator);
+    rep->rational_denominator = rep->quadratic_d = rep->quadratic_denominator = NULL;
+    int quadratic = fmpz_cmp_ui(ex.qd, 1) > 0;
+    if (fmpz_is_one(ex.qd)) rep->rational_denominator = fmpz_get_str(NULL, 10, ex.den);
+    else if (quadratic) {
+        rep->quadratic_d = fmpz_get_str(NULL, 10, ex.qd);
+        rep->quadratic_denominator = fmpz_get_str(NULL, 10, ex.den);
+    }
+    /* entries in Q(sqrt d): each round is run on the conjugate tableau first,
+     * for the bounds of the quadratic proof (twice the work, for these only) */
+    vigen_tableau conj;
+    conj_log log;
+    conj_log_init(&log);
+    if (quadratic) conj_tableau_init(&conj, t, &ex);
     int rc = VIGEN_OK;
     rep->rounds = 0;
     rep->prec_first = 0;
@@ -2004,6 +2255,10 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
         ctx_t cx;
         ctx_init(&cx, t, &ex, rep->holds);
         cx.prec = prec;
+        if (quadratic) {
+            conj_record(&log, rep, &conj, &ex, prec, P);
+            cx.conj = &log;
+        }
         rc = check_round(rep, &cx, t, against, against ? &ex_against : NULL, P, err);
         if (rc != VIGEN_OK) break;
         rep->proved = cx.n_proved;
@@ -2037,6 +2292,8 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
         last_undecided = cx.n_undecided;
         prec *= 2;
     }
+    if (quadratic) vigen_tableau_clear(&conj);
+    conj_log_clear(&log);
     exactness_clear(&ex);
     if (against) exactness_clear(&ex_against);
     if (rc != VIGEN_OK) return rc;
@@ -2125,6 +2382,9 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
     if (rep->rational_denominator)
         fprintf(out, "  entries: exact rationals, common denominator D = %s; ", rep->rational_denominator);
+    else if (rep->quadratic_d)
+        fprintf(out, "  entries: exact, in Q(sqrt(%s)): a + b sqrt(%s), common denominator D = %s; ", rep->quadratic_d,
+                rep->quadratic_d, rep->quadratic_denominator);
     else
         fprintf(out, "  entries: %s; ",
                 rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
@@ -2138,6 +2398,13 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fputs("  a condition fails when its ball excludes 0; it holds, proved, when its ball lies inside\n"
               "  (-1/(D^k g), 1/(D^k g)), k entries per term and g the denominator of its constant: the value is a\n"
               "  multiple of 1/(D^k g), so 0; otherwise it is undecided\n", out);
+    else if (rep->quadratic_d)
+        fprintf(out, "  a condition fails when its ball excludes 0; it holds, proved, when |v| |v'| (D^k g)^2 < 1, v' the same\n"
+                     "  condition on the conjugate tableau (sqrt(%s) -> -sqrt(%s)), k entries per term and g the denominator\n"
+                     "  of its constant: v v' (D^k g)^2 is an integer m^2 - %s n^2, so m = n = 0 and v = 0; otherwise it\n"
+                     "  holds only with a radius below 2^-(prec/2) of its terms and the same verdicts at two precisions,\n"
+                     "  else it is undecided\n",
+                rep->quadratic_d, rep->quadratic_d, rep->quadratic_d);
     else if (!rep->exact_entries)
         fputs("  a condition fails when its ball excludes 0 and holds, within the precision of the data, when it\n"
               "  contains 0\n", out);
@@ -2373,6 +2640,9 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     if (rep->rational_denominator)
         fprintf(out, " \"rational_denominator\": \"%s\", \"proved\": %ld,\n", rep->rational_denominator,
                 (long)rep->proved);
+    else if (rep->quadratic_d)
+        fprintf(out, " \"quadratic_field\": \"sqrt(%s)\", \"denominator\": \"%s\", \"proved\": %ld,\n",
+                rep->quadratic_d, rep->quadratic_denominator, (long)rep->proved);
     fputs(" \"rule\": \"a condition fails when its ball excludes 0 and holds when it contains 0: on rounded entries "
           "within the precision of the data; on exact entries with a radius below 2^-(prec/2) of its terms and the "
           "same verdicts at two precisions; otherwise it is undecided\",\n", out);

@@ -18,6 +18,14 @@
  *                  wide from cancellation), and the same verdicts came out at
  *                  two successive precisions p and 2p (or the ball is exactly
  *                  0);
+ *                - or, proved, when every entry of the tableau is rational
+ *                  with common denominator D: |v| D^k g < 1 (k entries per
+ *                  term, g the denominator of the constant); or every entry
+ *                  is a + b sqrt(d) for one squarefree d > 1, a and b rational
+ *                  with common denominator D: |v| |v'| (D^k g)^2 < 1, v' the
+ *                  same condition on the conjugate tableau (sqrt(d) ->
+ *                  -sqrt(d)), since v v' (D^k g)^2 = m^2 - d n^2 is an integer
+ *                  and m = n = 0 is the only way to make it 0;
  *   undecided  anything else (an exact condition whose ball is still wide or
  *              unconfirmed at the precision cap, or a non-finite ball).
  * The starting precision is adequate to the entries: enough bits for the
@@ -158,7 +166,11 @@ typedef struct {
     int rounded_entries;         /* some entry is a rounded decimal (or the tableau is balls only) */
     int exact_entries;           /* some entry is an exact expression */
     char *rational_denominator;  /* every entry rational: their common denominator D (decimal); else NULL */
-    slong proved;                /* holds proved exactly by the denominator bound (rational tableaux) */
+    char *quadratic_d;           /* every entry a + b sqrt(d), a and b rational, for one squarefree d > 1
+                                    (and some b != 0): d (decimal); else NULL */
+    char *quadratic_denominator; /* ... and the common denominator D of every a and b (decimal) */
+    slong proved;                /* holds proved exactly by the denominator bound (rational tableaux) or
+                                    by the norm bound (quadratic tableaux) */
     vigen_check_holds holds[VIGEN_CHECK_SECTIONS];
 
     int consistent;              /* row sums and sum b = 1 (tri-state) */

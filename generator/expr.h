@@ -70,6 +70,17 @@ int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t 
  * and returns 1; else returns 0 (sqrt(4) counts as not rational). */
 int vigen_expr_to_fmpq(fmpq_t res, const vigen_expr *e);
 
+/* If the constant expression's value lies in one real quadratic field,
+ * writes it as a + b sqrt(d) and returns 1: d > 1 squarefree and b != 0, or
+ * d = 1 and b = 0 when the value is rational.  Allowed: numbers, + - * /,
+ * integer powers (|k| <= 4096, as vigen_expr_to_fmpq) and sqrt of a
+ * non-negative rational p/q in lowest terms (sqrt(p/q) = m sqrt(d)/q; refused
+ * when p or q, its prime factors below 4096 divided out, leaves a cofactor
+ * that is not a square and exceeds 64 bits, too large to factor at once).  Returns 0 otherwise: pi, t, other functions, nested radicals, and an
+ * operation on two irrationals of different fields even when the result lies
+ * in one (sqrt(2)*sqrt(3) = sqrt(6) and sqrt(6)/sqrt(2) = sqrt(3) give 0). */
+int vigen_expr_to_quadratic(fmpq_t a, fmpq_t b, fmpz_t d, const vigen_expr *e);
+
 /* The expression in LaTeX (math mode), e.g. "1/4 - sqrt(3)/6" gives
  * "\frac{1}{4} - \frac{\sqrt{3}}{6}"; numbers as written.  A fresh string. */
 char *vigen_expr_latex(const vigen_expr *e);

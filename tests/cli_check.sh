@@ -45,6 +45,39 @@ json "d['rational_denominator'] == '24' and d['proved'] > 0"
 run 0 "$data/rk4.lua" --json
 json "d['order'] == 4 and d['symplectic'] is False and d['order_A'] == 4"
 
+# entries in one real quadratic field: holds are proved with the conjugate
+# tableau, at the first precision (Gauss-2 in Q(sqrt 3), D = lcm(4, 6, 2) =
+# 12; Gauss-3 in Q(sqrt 15), D = lcm(36, 9, 15, 30, 24, 10, 18) = 360)
+run 0 "$pub/gauss_2.lua" --json
+json "d['quadratic_field'] == 'sqrt(3)' and d['denominator'] == '12' and d['proved'] > 0 and d['evaluations'] == 1 and
+      d['order'] == 4 and d['symplectic'] is True and 'rational_denominator' not in d"
+run 0 "$pub/gauss_3.lua" --json
+json "d['quadratic_field'] == 'sqrt(15)' and d['denominator'] == '360' and d['proved'] > 0 and d['evaluations'] == 1 and
+      d['order'] == 6 and d['symplectic'] is True"
+run 0 "$pub/gauss_3.lua"
+grep_out "entries: exact, in Q(sqrt(15)): a + b sqrt(15), common denominator D = 360"
+grep_out "conjugate tableau (sqrt(15) -> -sqrt(15))"
+# ... and a perturbation of A[1][1] by 10^-60 or sqrt(3)/10^60 stays in the
+# field but still fails row 1 and the pair (1, 1), by that amount, from any
+# start (D = 3 10^60)
+for f in gauss2_1e-60 gauss2_sqrt3_1e-60; do
+  for prec in "" "--prec 128"; do
+    run 1 "$data/$f.lua" --json $prec
+    json "d['quadratic_field'] == 'sqrt(3)' and d['denominator'] == '3' + '0' * 60 and d['order'] == 1 and
+          d['consistent'] is False and d['symplectic'] is False and
+          d['claims']['order']['holds'] is False and d['claims']['symplectic']['holds'] is False"
+    json "[(p['kind'], p['matrix'], p['row'], p.get('col')) for p in d['problems'] if p['kind'] != 'claim' and
+           not p.get('diagnosed')] == [('rowsum', 'A', 1, None), ('symplectic', 'A', 1, 1)]"
+  done
+done
+run 1 "$data/gauss2_sqrt3_1e-60.lua"
+grep_out "(defect 1.73205e-60)"
+# the same Gauss-2 written with sqrt(6)/sqrt(2) for sqrt(3): no single field
+# is recognised, the numeric rule decides (confirmed at >= 1024 bits)
+run 0 "$data/gauss2_sqrt2_sqrt3.lua" --json
+json "'quadratic_field' not in d and 'rational_denominator' not in d and d['evaluations'] > 1 and
+      d['order'] == 4 and d['symplectic'] is True and d['consistent'] is True"
+
 # a 40-digit Gauss-3 and a copy with a 1e-30 perturbation of A[2][3]
 run 0 "$data/gauss3_40.lua" --against "$pub/gauss_3.lua"
 grep_out "0 entries differ"
@@ -146,6 +179,8 @@ json "d['max_order'] == 10 and d['order'] == 6"
 # an exact defect below any 256-bit radius (exp(-200) ~ 2^-288) is not taken for a hold
 run 1 "$data/exp200.lua"
 grep_out "claim symplectic = true is false"
+run 1 "$data/exp200.lua" --json
+json "'quadratic_field' not in d and 'rational_denominator' not in d and d['symplectic'] is False"
 
 # unreadable input and usage errors: status 2
 run 2 "$data/syntax_error.lua"

@@ -182,6 +182,37 @@ static void eval_text(arb_t x, const char *text, slong prec)
     vigen_error_clear(&err);
 }
 
+/* The listed failure of the row sum of row `row` of `matrix` (c or ct the
+ * other side) is eps, certified to 30 digits. */
+static void check_rowsum_defect(const vigen_check_report *rep, const char *matrix, slong row, const arb_t eps)
+{
+    const vigen_check_problem *p = find_listed(rep, VIGEN_PROBLEM_ROWSUM, matrix, row, 0);
+    CHECK_MSG(p != NULL, "row %ld of %s is not listed", (long)row, matrix);
+    if (p == NULL) return;
+    arb_t d;
+    arb_init(d);
+    arb_sub(d, p->value, p->expected, 2048);
+    CHECK_CLOSE(d, eps, 30, 2048);
+    arb_clear(d);
+}
+
+/* The report names the field Q(sqrt d) and the common denominator D. */
+static int in_field(const vigen_check_report *rep, const char *d, const char *D)
+{
+    return rep->quadratic_d && strcmp(rep->quadratic_d, d) == 0 && rep->quadratic_denominator &&
+           strcmp(rep->quadratic_denominator, D) == 0 && rep->rational_denominator == NULL;
+}
+
+/* Gauss-2 (b_1 = 1/2) with a_11 + eps: row 1 of A and the pair (1, 1),
+ * 2 b_1 (a_11 + eps) - b_1^2 = eps, are listed as failing by eps. */
+static void check_a11_defects(const vigen_check_report *rep, const arb_t eps)
+{
+    check_rowsum_defect(rep, "A", 1, eps);
+    const vigen_check_problem *p = find_listed(rep, VIGEN_PROBLEM_SYMPLECTIC, "A", 1, 1);
+    CHECK(p != NULL);
+    if (p) CHECK_CLOSE(p->value, eps, 30, 2048);
+}
+
 /* ----------------------------------------------------- published tableaux */
 
 static const char *const gauss1_c[] = {"1/2"}, *const gauss1_A[] = {"1/2"}, *const gauss1_b[] = {"1"};
@@ -327,6 +358,11 @@ static void test_gauss_exact(void)
         static const slong counts[] = {0, 2, 4, 14, 52, 214, 916, 4116};
         for (int n = 1; n <= 2 * s; n++) CHECK(rep.orders[0].hold[n] == counts[n]);
         CHECK(rep.orders[0].fail[2 * s + 1] > 0);
+        /* entries in Q (s = 1: dyadic, every ball exact) or Q(sqrt 3), Q(sqrt
+         * 15): every hold is exact or proved at the first precision, no
+         * confirmation round */
+        CHECK_MSG((s == 1 || rep.proved > 0) && rep.rounds == 1, "gauss%d: %ld proved, %ld rounds", s,
+                  (long)rep.proved, (long)rep.rounds);
         vigen_check_report_clear(&rep);
         vigen_tableau_clear(&t);
     }
@@ -454,6 +490,152 @@ static void test_rational_tiny_perturbation(void)
     CHECK(rep.proved > 0 && rep.row_fail >= 1 && rep.sym_fail >= 1);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&u);
+}
+
+/* Entries in one real quadratic field: holds are proved with the conjugate
+ * tableau (v v' (D^k g)^2 is an integer).  Gauss-2 lies in Q(sqrt 3) with
+ * common denominator 12 (of 1/4, 1/6, 1/2), Gauss-3 in Q(sqrt 15) with 360 =
+ * lcm(36, 9, 15, 30, 24, 10, 18).  Perturbed copies must fail exactly where
+ * the perturbation enters: row 1 of A and the pair (1, 1), each by eps
+ * (b_1 = 1/2: 2 b_1 (a_11 + eps) - b_1^2 = eps). */
+static void test_quadratic_proofs(void)
+{
+    vigen_check_report rep;
+    vigen_tableau t;
+    make(&t, "gauss2", 2, gauss2_c, gauss2_A, gauss2_b, gauss2_A, gauss2_c, NULL);
+    t.claim_order = 4;
+    t.claim_symplectic = 1;
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK(in_field(&rep, "3", "12"));
+    CHECK(rep.rounds == 1 && rep.prec == 128 && rep.proved > 0);
+    CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_YES && rep.exit_code == 0);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 4, 0, 0);
+    CHECK(rep.orders[0].hold[4] == 52 && rep.orders[0].fail[5] > 0);
+    char *text = render(&rep, 0), *json = render(&rep, 1);
+    CHECK(strstr(text, "in Q(sqrt(3))") != NULL && strstr(text, "D = 12") != NULL &&
+          strstr(text, "conjugate tableau") != NULL);
+    CHECK(strstr(json, "\"quadratic_field\": \"sqrt(3)\", \"denominator\": \"12\", \"proved\": ") != NULL);
+    CHECK(strstr(json, "rational_denominator") == NULL);
+    free(text);
+    free(json);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
+    make(&t, "gauss3", 3, gauss3_c, gauss3_A, gauss3_b, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK(in_field(&rep, "15", "360"));   /* order, B, C, D: test_gauss_exact */
+    CHECK(rep.rounds == 1 && rep.proved > 0 && rep.symplectic == VIGEN_CHECK_YES);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 6, 0, 0);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
+    /* Radau IIA, s = 3 (Hairer-Wanner II, Table IV.5.6), in Q(sqrt 6) with D
+     * = lcm(10, 360, 1800, 225, 36, 9) = 1800: order 2s - 1 = 5, B(5), C(3),
+     * D(2); not symplectic (b_i a_ij + b_j a_ji = b_i b_j fails) */
+    {
+        const char *c[] = {"(4 - sqrt(6))/10", "(4 + sqrt(6))/10", "1"};
+        const char *A[] = {"(88 - 7*sqrt(6))/360", "(296 - 169*sqrt(6))/1800", "(-2 + 3*sqrt(6))/225",
+                           "(296 + 169*sqrt(6))/1800", "(88 + 7*sqrt(6))/360", "(-2 - 3*sqrt(6))/225",
+                           "(16 - sqrt(6))/36", "(16 + sqrt(6))/36", "1/9"};
+        const char *b[] = {"(16 - sqrt(6))/36", "(16 + sqrt(6))/36", "1/9"};
+        make(&t, "radau IIA 3", 3, c, A, b, NULL, NULL, NULL);
+        CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+        CHECK(in_field(&rep, "6", "1800"));
+        CHECK(rep.rounds == 1 && rep.proved > 0);
+        CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_NO);
+        CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 5, 0, 0);
+        CHECK_LEVEL(&rep.B[0], 5, 0, 0);
+        CHECK_LEVEL(&rep.C[0], 3, 0, 0);
+        CHECK_LEVEL(&rep.D[0], 2, 0, 0);
+        vigen_check_report_clear(&rep);
+        vigen_tableau_clear(&t);
+    }
+
+    /* a_11 + eps.  1/10^60 (rational) and sqrt(3)/10^60 keep the field and
+     * raise D to 3 10^60.  (2 - sqrt 3)^100 ~ 6e-58 is an algebraic integer
+     * (D stays 12) whose conjugate (2 + sqrt 3)^100 ~ 2e57 is large: the
+     * denominator bound alone would take its ball at 128 bits for 0, the
+     * conjugate's bound must not.  From 128 bits none of them is visible at
+     * first. */
+    static const char *const eps_texts[] = {"1/10^60", "sqrt(3)/10^60", "(2 - sqrt(3))^100"};
+    static const char *const dens[] = {"3" ZEROS60, "3" ZEROS60, "12"};
+    arb_t eps;
+    arb_init(eps);
+    for (int e = 0; e < 3; e++)
+        for (int start = 0; start < 2; start++) {
+            char *a11 = vigen_strdup_printf("1/4 + %s", eps_texts[e]);
+            const char *A[] = {a11, gauss2_A[1], gauss2_A[2], gauss2_A[3]};
+            make(&t, "gauss2, a11 + eps", 2, gauss2_c, A, gauss2_b, NULL, NULL, NULL);
+            t.claim_order = 4;
+            t.claim_symplectic = 1;
+            CHECK(check_prec(&rep, &t, NULL, 6, start ? 128 : 0, 0) == VIGEN_OK);
+            CHECK_MSG(in_field(&rep, "3", dens[e]), "%s: field %s, D = %s", a11,
+                      rep.quadratic_d ? rep.quadratic_d : "none",
+                      rep.quadratic_denominator ? rep.quadratic_denominator : "none");
+            CHECK_MSG(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO && rep.exit_code == 1,
+                      "%s from %s", a11, start ? "128 bits" : "the default");
+            CHECK(rep.row_fail == 1 && rep.sym_fail == 1 && rep.row_undecided == 0 && rep.sym_undecided == 0);
+            CHECK(rep.claim_order_status == VIGEN_CHECK_NO && rep.claim_symplectic_status == VIGEN_CHECK_NO);
+            CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 1, 0, 0);   /* b[b]: sum b_i a_ij = 1/2 + eps/2 */
+            eval_text(eps, eps_texts[e], 2048);
+            check_a11_defects(&rep, eps);
+            /* what does not involve a_11 is still proved */
+            CHECK(rep.proved > 0);
+            vigen_check_report_clear(&rep);
+            vigen_tableau_clear(&t);
+            free(a11);
+        }
+
+    /* The same unit eps = (2 - sqrt 3)^100 where every other condition is
+     * exact or fails visibly, so that nothing else asks for a second round:
+     * the midpoint rule (c, A, b) = (1/2, 1/2, 1) with at_11 = 1 + eps, ct_1
+     * = bt_1 = 1.  Only the row sum of At (at_11 - ct_1 = eps) and C(1) of
+     * (ct, At, bt), the same sum, have a tiny value, 2^-190; no order
+     * condition involving at_11 is near 0 (bt at_11 = 1 + eps against 1/2,
+     * and at order 3 powers of 1/2 against 1/3 and 1/6), the pair (1, 1) is
+     * 1/2 + eps.  At 128 bits the row sum's ball contains 0; were it taken
+     * for 0 (as |v| D^k g < 1 alone would, D = 2), the round would end there
+     * with the row sums holding. */
+    {
+        const char *c[] = {"1/2"}, *A[] = {"1/2"}, *b[] = {"1"};
+        const char *At[] = {"1 + (2 - sqrt(3))^100"}, *ct[] = {"1"}, *bt[] = {"1"};
+        make(&t, "midpoint, at11 = 1 + (2 - sqrt 3)^100", 1, c, A, b, At, ct, bt);
+        CHECK(check_prec(&rep, &t, NULL, 3, 128, 0) == VIGEN_OK);
+        CHECK(in_field(&rep, "3", "2"));
+        CHECK(rep.consistent == VIGEN_CHECK_NO && rep.row_fail == 1 && rep.row_undecided == 0);
+        CHECK(rep.rounds >= 2 && rep.prec >= 256);
+        eval_text(eps, "(2 - sqrt(3))^100", 2048);
+        check_rowsum_defect(&rep, "At", 1, eps);
+        CHECK_LEVEL(&rep.C[1], 0, 0, 0);
+        CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_A_ALONE), 2, 0, 0);   /* the midpoint rule */
+        vigen_check_report_clear(&rep);
+        vigen_tableau_clear(&t);
+    }
+
+    /* Gauss-2 written with sqrt(2) as well (sqrt(6)/sqrt(2) = sqrt(3)): no
+     * single field is recognised, so no proof; the numeric rule still finds
+     * order 4 and symplecticity, confirmed at a second precision of >= 1024
+     * bits.  With a_11 + sqrt(2)/10^60 it fails where it must. */
+    const char *Amix[] = {gauss2_A[0], "1/4 - sqrt(6)/(6*sqrt(2))", gauss2_A[2], gauss2_A[3]};
+    make(&t, "gauss2, sqrt(2) and sqrt(3)", 2, gauss2_c, Amix, gauss2_b, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
+    CHECK(rep.quadratic_d == NULL && rep.rational_denominator == NULL && rep.proved == 0);
+    CHECK(rep.rounds >= 2 && rep.prec >= 1024);
+    CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_YES);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 4, 0, 0);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    const char *A2[] = {"1/4 + sqrt(2)/10^60", gauss2_A[1], gauss2_A[2], gauss2_A[3]};
+    make(&t, "gauss2, a11 + sqrt(2)/10^60", 2, gauss2_c, A2, gauss2_b, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
+    CHECK(rep.quadratic_d == NULL && rep.rational_denominator == NULL && rep.proved == 0);
+    CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO);
+    CHECK(rep.row_fail == 1 && rep.sym_fail == 1);
+    eval_text(eps, "sqrt(2)/10^60", 2048);
+    check_a11_defects(&rep, eps);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    arb_clear(eps);
 }
 
 static void test_rk4(void)
@@ -871,9 +1053,8 @@ static void test_exact_refinement(void)
      * from the default start, and from --prec 128 (where every ball contains
      * 0 with a radius near 2^-128) by confirming at higher precision */
     const char *A45[] = {"1/4 + 1/10^45", "1/4 - sqrt(3)/6", "1/4 + sqrt(3)/6", "1/4"};
-    arb_t eps, d;
+    arb_t eps;
     arb_init(eps);
-    arb_init(d);
     eval_text(eps, "1/10^45", 512);
     make(&ref, "gauss2", 2, gauss2_c, gauss2_A, gauss2_b, NULL, NULL, NULL);
     for (int start = 0; start < 2; start++) {
@@ -883,15 +1064,7 @@ static void test_exact_refinement(void)
         CHECK(check_prec(&rep, &t, NULL, 6, start ? 128 : 0, 0) == VIGEN_OK);
         CHECK_MSG(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO, "start %d", start);
         CHECK(rep.exit_code == 1);
-        const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "A", 1, 0);
-        CHECK(p != NULL);
-        if (p) {
-            arb_sub(d, p->value, p->expected, 1024);
-            CHECK_CLOSE(d, eps, 30, 1024);
-        }
-        p = find_listed(&rep, VIGEN_PROBLEM_SYMPLECTIC, "A", 1, 1);
-        CHECK(p != NULL);
-        if (p) CHECK_CLOSE(p->value, eps, 30, 1024);
+        check_a11_defects(&rep, eps);
         CHECK(rep.claim_order_status == VIGEN_CHECK_NO && rep.claim_symplectic_status == VIGEN_CHECK_NO);
         CHECK(rep.prec > 150);   /* 10^-45 is about 2^-149.5 */
         if (start) CHECK(rep.rounds >= 2);
@@ -923,15 +1096,8 @@ static void test_exact_refinement(void)
     CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
     CHECK(rep.prec_first == 128 && rep.rounds >= 3);
     CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO);
-    {
-        const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "A", 1, 0);
-        CHECK(p != NULL);
-        if (p) {
-            eval_text(eps, "exp(-110)", 1024);
-            arb_sub(d, p->value, p->expected, 1024);
-            CHECK_CLOSE(d, eps, 30, 1024);
-        }
-    }
+    eval_text(eps, "exp(-110)", 1024);
+    check_rowsum_defect(&rep, "A", 1, eps);
     vigen_check_report_clear(&rep);
     CHECK(check(&rep, &ref, &t, 6) == VIGEN_OK);
     CHECK(rep.against_differences == 1);
@@ -952,7 +1118,6 @@ static void test_exact_refinement(void)
     vigen_tableau_clear(&t);
     vigen_tableau_clear(&ref);
     arb_clear(eps);
-    arb_clear(d);
 }
 
 static void test_claims(void)
@@ -1065,6 +1230,7 @@ int main(void)
     test_gauss_exact();
     test_lobatto3();
     test_rational_tiny_perturbation();
+    test_quadratic_proofs();
     test_rk4();
     test_ruth3();
     test_perturbed_gauss3();

@@ -732,8 +732,102 @@ static void test_latex(void)
     }
 }
 
+/* Parses the constant text (checking that it parses) and converts it with
+ * vigen_expr_to_quadratic (quadratic) or vigen_expr_to_fmpq; its result. */
+static int exact_value(fmpq_t a, fmpq_t b, fmpz_t d, const char *text, int quadratic)
+{
+    vigen_expr *e = NULL;
+    vigen_error err;
+    vigen_error_init(&err);
+    int rc = vigen_expr_parse(&e, text, 0, &err);
+    CHECK_MSG(rc == VIGEN_OK, "parse \"%s\": %s", text, err.message ? err.message : "");
+    int got = rc == VIGEN_OK && (quadratic ? vigen_expr_to_quadratic(a, b, d, e) : vigen_expr_to_fmpq(a, e));
+    vigen_expr_free(e);
+    vigen_error_clear(&err);
+    return got;
+}
+
+/* Values in Q(sqrt d), each worked out by hand: rationalised denominators,
+ * square factors pulled out of the radicand, conjugate products. */
+static void test_quadratic(void)
+{
+    static const char *const ok[][4] = {
+        /* text, a, b, d */
+        { "1/(2 - sqrt(3))", "2", "1", "3" },                 /* (2 + sqrt 3)/(4 - 3) */
+        { "sqrt(12)", "0", "2", "3" },
+        { "(1 + sqrt(5))^2/4", "3/2", "1/2", "5" },           /* (6 + 2 sqrt 5)/4 */
+        { "sqrt(3/4)", "0", "1/2", "3" },
+        { "sqrt(2/3)", "0", "1/3", "6" },                     /* sqrt(6)/3 */
+        { "1/sqrt(2)", "0", "1/2", "2" },
+        { "(1 + sqrt(2))^-3", "-7", "5", "2" },               /* (sqrt 2 - 1)^3 */
+        { "sqrt(7)^3", "0", "7", "7" },
+        { "-sqrt(10)/-5", "0", "1/5", "10" },
+        { "5/36 - sqrt(15)/30", "5/36", "-1/30", "15" },      /* Gauss-3, a_13 */
+        { "2.5e-3*sqrt(5)", "0", "1/400", "5" },
+        { "sqrt(2/10^60)", "0", "1/1000000000000000000000000000000", "2" },   /* 1/(2^59 5^60) */
+        { "sqrt(3*2^65)", "0", "4294967296", "6" },
+        { "sqrt(5*(2^61 - 1)^2)", "0", "2305843009213693951", "5" },          /* a large square cofactor */
+        /* rational values: d = 1, b = 0 */
+        { "sqrt(2)^2", "2", "0", "1" },
+        { "sqrt(8) - 2*sqrt(2)", "0", "0", "1" },
+        { "(2 + sqrt(3))*(2 - sqrt(3))", "1", "0", "1" },
+        { "sqrt(4)", "2", "0", "1" },
+        { "sqrt(1/10^60)", "1/1000000000000000000000000000000", "0", "1" },
+        { "0.5 + sqrt(0)", "1/2", "0", "1" },
+        /* one field after all: sqrt(2)^2 is rational */
+        { "sqrt(2)*sqrt(2) + sqrt(3)", "2", "1", "3" },
+    };
+    static const char *const refused[] = {
+        "sqrt(2)*sqrt(3)",          /* = sqrt(6), but from two fields */
+        "sqrt(6)/sqrt(2)",
+        "sqrt(2) + sqrt(3)",        /* of degree 4 */
+        "sqrt(-3)", "pi", "exp(1)", "sqrt(sqrt(2))", "sqrt(1 + sqrt(2))", "2^(1/2)",
+        "1/(sqrt(3) - sqrt(3))", "0^-1",
+        "(1 + sqrt(2))^5000",       /* beyond the exponent limit */
+        "sqrt((2^61 - 1)*(2^31 - 1))",   /* two primes > 4096: a non-square cofactor of 92 bits */
+    };
+    fmpq_t a, b, wa, wb;
+    fmpz_t d, wd;
+    arb_t x, y, r;
+    fmpq_init(a); fmpq_init(b); fmpq_init(wa); fmpq_init(wb);
+    fmpz_init(d); fmpz_init(wd);
+    arb_init(x); arb_init(y); arb_init(r);
+    for (size_t k = 0; k < sizeof ok / sizeof ok[0]; k++) {
+        fmpq_set_str(wa, ok[k][1], 10);
+        fmpq_set_str(wb, ok[k][2], 10);
+        fmpz_set_str(wd, ok[k][3], 10);
+        int got = exact_value(a, b, d, ok[k][0], 1);
+        CHECK_MSG(got && fmpq_equal(a, wa) && fmpq_equal(b, wb) && fmpz_equal(d, wd), "%s as a + b sqrt(d)", ok[k][0]);
+        /* and a + b sqrt(d) is the value the expression evaluates to */
+        if (got) {
+            arb_sqrt_fmpz(r, d, 256);
+            arb_mul_fmpz(r, r, fmpq_numref(b), 256);
+            arb_div_fmpz(r, r, fmpq_denref(b), 256);
+            arb_set_fmpq(y, a, 256);
+            arb_add(y, y, r, 256);
+            CHECK(eval_text(x, ok[k][0], NULL, 256) == VIGEN_OK);
+            CHECK_MSG(arb_overlaps(x, y), "%s", ok[k][0]);
+        }
+    }
+    for (size_t k = 0; k < sizeof refused / sizeof refused[0]; k++)
+        CHECK_MSG(!exact_value(a, b, d, refused[k], 1), "%s is not in one Q(sqrt d)", refused[k]);
+    /* vigen_expr_to_fmpq takes no square roots, even of squares */
+    static const char *const rat[][2] = { { "1/3 + 2^-2", "7/12" }, { "(1/2)^-3", "8" }, { "-0.125e1", "-5/4" } };
+    for (size_t k = 0; k < sizeof rat / sizeof rat[0]; k++) {
+        fmpq_set_str(wa, rat[k][1], 10);
+        CHECK_MSG(exact_value(a, NULL, NULL, rat[k][0], 0) && fmpq_equal(a, wa), "%s = %s", rat[k][0], rat[k][1]);
+    }
+    static const char *const not_rat[] = { "sqrt(4)", "sqrt(3)", "pi", "1/0" };
+    for (size_t k = 0; k < sizeof not_rat / sizeof not_rat[0]; k++)
+        CHECK_MSG(!exact_value(a, NULL, NULL, not_rat[k], 0), "%s is not taken as rational", not_rat[k]);
+    fmpq_clear(a); fmpq_clear(b); fmpq_clear(wa); fmpq_clear(wb);
+    fmpz_clear(d); fmpz_clear(wd);
+    arb_clear(x); arb_clear(y); arb_clear(r);
+}
+
 int main(void)
 {
+    test_quadratic();
     test_latex();
     test_closed_form_integrals();
     test_identities();
