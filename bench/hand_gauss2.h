@@ -14,6 +14,20 @@
 #define HG2_CAT(a, b) HG2_CAT2(a, b)
 #define HG2_FN(x) HG2_CAT(HG2_NAME, x)
 
+#ifndef HG2_ABSBITS
+#define HG2_ABSBITS
+#include <stdint.h>
+/* |x| as bits: integer order = order of magnitude, NaN above infinity, so a
+ * maximum over them cannot skip a NaN increment */
+static inline uint64_t hg2_absbits(double x)
+{
+    uint64_t u;
+    memcpy(&u, &x, sizeof u);
+    return u & UINT64_C(0x7fffffffffffffff);
+}
+static inline double hg2_bits_value(uint64_t u) { double d; memcpy(&d, &u, sizeof d); return d; }
+#endif
+
 typedef struct {
     size_t n;
     double *Q1, *Q2, *P1, *P2, *F1, *F2, *G1, *G2, *Fo1, *Fo2, *Go1, *Go2, *cq, *cp;
@@ -77,13 +91,13 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
     double prev1 = -1, prev2 = -1;
     int strikes = 0, it = 0;
     for (;;) {
-        double dq = 0, dp = 0;
+        uint64_t dq = 0, dp = 0;
         HG2_DQ(*t + c1 * h, Q1, P1, G1, ctx);
         HG2_DQ(*t + c2 * h, Q2, P2, G2, ctx);
         for (size_t k = 0; k < n; k++) {
             double u1 = p[k] - h * (a11 * G1[k] + a12 * G2[k]);
             double u2 = p[k] - h * (a21 * G1[k] + a22 * G2[k]);
-            double e1 = fabs(u1 - P1[k]), e2 = fabs(u2 - P2[k]);
+            uint64_t e1 = hg2_absbits(u1 - P1[k]), e2 = hg2_absbits(u2 - P2[k]);
             dp = e1 > dp ? e1 : dp; dp = e2 > dp ? e2 : dp;
             P1[k] = u1; P2[k] = u2;
         }
@@ -92,13 +106,14 @@ static int HG2_FN(_step)(HG2_FN(_ws) *w, double *t, double *q, double *p, double
         for (size_t k = 0; k < n; k++) {
             double v1 = q[k] + h * (a11 * F1[k] + a12 * F2[k]);
             double v2 = q[k] + h * (a21 * F1[k] + a22 * F2[k]);
-            double d1 = fabs(v1 - Q1[k]), d2 = fabs(v2 - Q2[k]);
+            uint64_t d1 = hg2_absbits(v1 - Q1[k]), d2 = hg2_absbits(v2 - Q2[k]);
             dq = d1 > dq ? d1 : dq; dq = d2 > dq ? d2 : dq;
             Q1[k] = v1; Q2[k] = v2;
         }
         w->evals += 4;
         it++;
-        double rq = dq == 0 ? 0 : dq / sq, rp = dp == 0 ? 0 : dp / sp, delta = rq > rp ? rq : rp;
+        double rq = dq == 0 ? 0 : hg2_bits_value(dq) / sq, rp = dp == 0 ? 0 : hg2_bits_value(dp) / sp;
+        double delta = rq > rp || rq != rq ? rq : rp;
         if (!(delta < 1e300)) return 1;
         if (delta == 0) break;
         if (prev2 >= 0 && delta >= prev2) {

@@ -205,6 +205,39 @@ static void test_huge_step(void)
     CHECK(gauss2_alloc(&bad, NULL) == NULL);
 }
 
+/* A gradient that turns NaN or infinite is a failed stage solve, not a
+ * converged one: the step reports VIGEN_ENONFINITE and leaves the state as it
+ * was, for fixed-point iteration and Newton alike.  (A maximum of the
+ * increments that skipped NaN used to accept such a step.) */
+static double bad_value;
+static void bad_dq(double t, const double *q, const double *p, double *o, void *c)
+{
+    (void)p; (void)c;
+    o[0] = t > 0.55 ? bad_value : q[0];
+}
+static void test_nonfinite_gradient(void)
+{
+    const double bad[2] = { NAN, INFINITY };
+    for (int b = 0; b < 2; b++)
+        for (int solver = 0; solver < 2; solver++) {
+            bad_value = bad[b];
+            vigen_hamiltonian sys = { 1, bad_dq, ho_dp, ho_H, NULL, 1, NULL };
+            vigen_solver_options o;
+            vigen_solver_options_default(&o);
+            o.solver = solver ? VIGEN_SOLVER_NEWTON : VIGEN_SOLVER_FIXED_POINT;
+            gauss2_workspace *w = gauss2_alloc(&sys, &o);
+            double t = 0, q[1] = { 1 }, p[1] = { 0 };
+            int st = VIGEN_SUCCESS, k = 0;
+            for (; k < 10 && st == VIGEN_SUCCESS; k++) st = gauss2_step(w, &t, q, p, 0.1);
+            /* steps 1..5 end at t = 0.5; step 6 has stages beyond 0.55 */
+            CHECK_MSG(st == VIGEN_ENONFINITE && k == 6, "%s gradient, %s: status %d after %d steps", b ? "inf" : "NaN",
+                      solver ? "Newton" : "fixed point", st, k);
+            CHECK(fabs(t - 0.5) < 1e-15 && isfinite(q[0]) && isfinite(p[0]));
+            CHECK(fabs(q[0] - cos(0.5)) < 1e-6 && fabs(p[0] + sin(0.5)) < 1e-6);
+            gauss2_free(w);
+        }
+}
+
 /* Stormer-Verlet, explicit path: one gradient of each kind per step (the
  * last dH/dq of a step is the first of the next), and the result equals the
  * textbook kick-drift-kick formula. */
@@ -304,6 +337,7 @@ int main(void)
     test_hessian_fd();
     test_gauss2_ho();
     test_huge_step();
+    test_nonfinite_gradient();
     test_verlet();
     test_driver();
     test_start_values();

@@ -78,6 +78,20 @@ struct gauss2_workspace {
 
 static inline double gauss2_abs(double x) { return fabs(x); }
 static inline double gauss2_max(double x, double y) { return x > y ? x : y; }
+/* The largest |increment| of a sweep.  A NaN must win (a plain maximum
+ * skips it, and a stage solve whose gradients turned NaN would look
+ * converged).  For double it is kept as the bits of |d|: for non-negative
+ * doubles the integer order is the order of magnitude, with infinity above
+ * every finite value and NaN above infinity, at the cost of a plain maximum. */
+typedef uint64_t gauss2_inc;
+static inline gauss2_inc gauss2_inc_add(gauss2_inc m, double d)
+{
+    uint64_t u;
+    memcpy(&u, &d, sizeof u);
+    u &= UINT64_C(0x7fffffffffffffff);
+    return u > m ? u : m;
+}
+static inline double gauss2_inc_value(gauss2_inc m) { double d; memcpy(&d, &m, sizeof d); return d; }
 /* Relative increment of one partition: max |d| / scale, the scale being the
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
@@ -220,7 +234,7 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
     if (sp == 0) sp = 1;
     vigen_iter_start(&mon);
     for (;;) {
-        double dq = 0, dp = 0;
+        gauss2_inc dq = 0, dp = 0;
         gauss2_dHdq(w, t0 + 0x1.b0cb174df99c7p-3 * h, Q1, P1, w->G[0]);
         gauss2_dHdq(w, t0 + 0x1.93cd3a2c8198ep-1 * h, Q2, P2, w->G[1]);
         for (size_t k = 0; k < n; k++) {
@@ -230,8 +244,8 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
             const double g2 = G2[k];
             const double u1 = pk - h * (0x1p-2 * g1 + (-0x1.3cd3a2c8198e2p-5) * g2);
             const double u2 = pk - h * (0x1.13cd3a2c8198ep-1 * g1 + 0x1p-2 * g2);
-            d = gauss2_abs(u1 - P1[k]); dp = d > dp ? d : dp;
-            d = gauss2_abs(u2 - P2[k]); dp = d > dp ? d : dp;
+            dp = gauss2_inc_add(dp, u1 - P1[k]);
+            dp = gauss2_inc_add(dp, u2 - P2[k]);
             P1[k] = u1;
             P2[k] = u2;
         }
@@ -244,14 +258,14 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
             const double f2 = F2[k];
             const double v1 = qk + h * (0x1p-2 * f1 + (-0x1.3cd3a2c8198e2p-5) * f2);
             const double v2 = qk + h * (0x1.13cd3a2c8198ep-1 * f1 + 0x1p-2 * f2);
-            d = gauss2_abs(v1 - Q1[k]); dq = d > dq ? d : dq;
-            d = gauss2_abs(v2 - Q2[k]); dq = d > dq ? d : dq;
+            dq = gauss2_inc_add(dq, v1 - Q1[k]);
+            dq = gauss2_inc_add(dq, v2 - Q2[k]);
             Q1[k] = v1;
             Q2[k] = v2;
         }
         {
-            double rq = gauss2_rel(dq, sq), rp = gauss2_rel(dp, sp);
-            st = vigen_iter_judge(&mon, rq > rp ? rq : rp, w->tol, w->opt.max_iter);
+            double rq = gauss2_rel(gauss2_inc_value(dq), sq), rp = gauss2_rel(gauss2_inc_value(dp), sp);
+            st = vigen_iter_judge(&mon, ((rq > rp) | (rq != rq)) ? rq : rp, w->tol, w->opt.max_iter);
             if (st >= 0) break;
         }
     }
@@ -297,7 +311,8 @@ static int gauss2_newton(gauss2_workspace *w, double t0, const double *q, const 
     }
     vigen_iter_start(&mon);
     for (;;) {
-        double dq = 0, sq = 0, dp = 0, sp = 0, d;
+        gauss2_inc dq = 0, dp = 0;
+        double sq = 0, sp = 0, d;
         gauss2_sweep(w, t0, h);
         sweeps++;
         for (size_t k = 0; k < n; k++) {
@@ -311,24 +326,24 @@ static int gauss2_newton(gauss2_workspace *w, double t0, const double *q, const 
         for (size_t k = 0; k < n; k++) {
             d = (double)rhs[0 * n + k];
             Q1[k] += d;
-            dq = gauss2_max(dq, gauss2_abs(d));
+            dq = gauss2_inc_add(dq, d);
             sq = gauss2_max(sq, gauss2_abs(Q1[k]));
             d = (double)rhs[2 * n + k];
             P1[k] += d;
-            dp = gauss2_max(dp, gauss2_abs(d));
+            dp = gauss2_inc_add(dp, d);
             sp = gauss2_max(sp, gauss2_abs(P1[k]));
             d = (double)rhs[1 * n + k];
             Q2[k] += d;
-            dq = gauss2_max(dq, gauss2_abs(d));
+            dq = gauss2_inc_add(dq, d);
             sq = gauss2_max(sq, gauss2_abs(Q2[k]));
             d = (double)rhs[3 * n + k];
             P2[k] += d;
-            dp = gauss2_max(dp, gauss2_abs(d));
+            dp = gauss2_inc_add(dp, d);
             sp = gauss2_max(sp, gauss2_abs(P2[k]));
         }
         {
-            double rq = gauss2_rel(dq, sq), rp = gauss2_rel(dp, sp);
-            st = vigen_iter_judge(&mon, rq > rp ? rq : rp, w->tol, w->opt.max_iter);
+            double rq = gauss2_rel(gauss2_inc_value(dq), sq), rp = gauss2_rel(gauss2_inc_value(dp), sp);
+            st = vigen_iter_judge(&mon, ((rq > rp) | (rq != rq)) ? rq : rp, w->tol, w->opt.max_iter);
             if (st >= 0) break;
         }
     }

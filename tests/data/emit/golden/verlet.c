@@ -80,6 +80,20 @@ struct verlet_workspace {
 
 static inline double verlet_abs(double x) { return fabs(x); }
 static inline double verlet_max(double x, double y) { return x > y ? x : y; }
+/* The largest |increment| of a sweep.  A NaN must win (a plain maximum
+ * skips it, and a stage solve whose gradients turned NaN would look
+ * converged).  For double it is kept as the bits of |d|: for non-negative
+ * doubles the integer order is the order of magnitude, with infinity above
+ * every finite value and NaN above infinity, at the cost of a plain maximum. */
+typedef uint64_t verlet_inc;
+static inline verlet_inc verlet_inc_add(verlet_inc m, double d)
+{
+    uint64_t u;
+    memcpy(&u, &d, sizeof u);
+    u &= UINT64_C(0x7fffffffffffffff);
+    return u > m ? u : m;
+}
+static inline double verlet_inc_value(verlet_inc m) { double d; memcpy(&d, &m, sizeof d); return d; }
 /* Relative increment of one partition: max |d| / scale, the scale being the
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
@@ -223,7 +237,7 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
     if (sp == 0) sp = 1;
     vigen_iter_start(&mon);
     for (;;) {
-        double dq = 0, dp = 0;
+        verlet_inc dq = 0, dp = 0;
         verlet_dHdq(w, t0 + 0 * h, Q1, P1, w->G[0]);
         verlet_dHdq(w, t0 + 0x1p+0 * h, Q2, P2, w->G[1]);
         for (size_t k = 0; k < n; k++) {
@@ -232,8 +246,8 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
             const double g1 = G1[k];
             const double u1 = pk - h * (0x1p-1 * g1);
             const double u2 = pk - h * (0x1p-1 * g1);
-            d = verlet_abs(u1 - P1[k]); dp = d > dp ? d : dp;
-            d = verlet_abs(u2 - P2[k]); dp = d > dp ? d : dp;
+            dp = verlet_inc_add(dp, u1 - P1[k]);
+            dp = verlet_inc_add(dp, u2 - P2[k]);
             P1[k] = u1;
             P2[k] = u2;
         }
@@ -246,14 +260,14 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
             const double f2 = F2[k];
             const double v1 = qk;
             const double v2 = qk + h * (0x1p-1 * f1 + 0x1p-1 * f2);
-            d = verlet_abs(v1 - Q1[k]); dq = d > dq ? d : dq;
-            d = verlet_abs(v2 - Q2[k]); dq = d > dq ? d : dq;
+            dq = verlet_inc_add(dq, v1 - Q1[k]);
+            dq = verlet_inc_add(dq, v2 - Q2[k]);
             Q1[k] = v1;
             Q2[k] = v2;
         }
         {
-            double rq = verlet_rel(dq, sq), rp = verlet_rel(dp, sp);
-            st = vigen_iter_judge(&mon, rq > rp ? rq : rp, w->tol, w->opt.max_iter);
+            double rq = verlet_rel(verlet_inc_value(dq), sq), rp = verlet_rel(verlet_inc_value(dp), sp);
+            st = vigen_iter_judge(&mon, ((rq > rp) | (rq != rq)) ? rq : rp, w->tol, w->opt.max_iter);
             if (st >= 0) break;
         }
     }
@@ -297,7 +311,8 @@ static int verlet_newton(verlet_workspace *w, double t0, const double *q, const 
     }
     vigen_iter_start(&mon);
     for (;;) {
-        double dq = 0, sq = 0, dp = 0, sp = 0, d;
+        verlet_inc dq = 0, dp = 0;
+        double sq = 0, sp = 0, d;
         verlet_sweep(w, t0, h);
         sweeps++;
         for (size_t k = 0; k < n; k++) {
@@ -311,24 +326,24 @@ static int verlet_newton(verlet_workspace *w, double t0, const double *q, const 
         for (size_t k = 0; k < n; k++) {
             d = (double)rhs[0 * n + k];
             Q1[k] += d;
-            dq = verlet_max(dq, verlet_abs(d));
+            dq = verlet_inc_add(dq, d);
             sq = verlet_max(sq, verlet_abs(Q1[k]));
             d = (double)rhs[2 * n + k];
             P1[k] += d;
-            dp = verlet_max(dp, verlet_abs(d));
+            dp = verlet_inc_add(dp, d);
             sp = verlet_max(sp, verlet_abs(P1[k]));
             d = (double)rhs[1 * n + k];
             Q2[k] += d;
-            dq = verlet_max(dq, verlet_abs(d));
+            dq = verlet_inc_add(dq, d);
             sq = verlet_max(sq, verlet_abs(Q2[k]));
             d = (double)rhs[3 * n + k];
             P2[k] += d;
-            dp = verlet_max(dp, verlet_abs(d));
+            dp = verlet_inc_add(dp, d);
             sp = verlet_max(sp, verlet_abs(P2[k]));
         }
         {
-            double rq = verlet_rel(dq, sq), rp = verlet_rel(dp, sp);
-            st = vigen_iter_judge(&mon, rq > rp ? rq : rp, w->tol, w->opt.max_iter);
+            double rq = verlet_rel(verlet_inc_value(dq), sq), rp = verlet_rel(verlet_inc_value(dp), sp);
+            st = vigen_iter_judge(&mon, ((rq > rp) | (rq != rq)) ? rq : rp, w->tol, w->opt.max_iter);
             if (st >= 0) break;
         }
     }
