@@ -185,10 +185,11 @@ const vigen_stats *verlet_stats(const verlet_workspace *w) { return &w->stats; }
 /* Gradients at every stage (one sweep of the stage iteration). */
 static void verlet_sweep(verlet_workspace *w, double t0, double h)
 {
-    verlet_dHdp(w, t0 + 0 * h, w->Q[0], w->P[0], w->F[0]);
-    verlet_dHdq(w, t0 + 0 * h, w->Q[0], w->P[0], w->G[0]);
-    verlet_dHdp(w, t0 + 0x1p+0 * h, w->Q[1], w->P[1], w->F[1]);
-    verlet_dHdq(w, t0 + 0x1p+0 * h, w->Q[1], w->P[1], w->G[1]);
+    (void)h;   /* unused when every node is 0 */
+    verlet_dHdp(w, t0, w->Q[0], w->P[0], w->F[0]);
+    verlet_dHdq(w, t0, w->Q[0], w->P[0], w->G[0]);
+    verlet_dHdp(w, t0 + h, w->Q[1], w->P[1], w->F[1]);
+    verlet_dHdq(w, t0 + h, w->Q[1], w->P[1], w->G[1]);
     w->stats.dHdp_evals += 2;
     w->stats.dHdq_evals += 2;
 }
@@ -238,8 +239,8 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
     vigen_iter_start(&mon);
     for (;;) {
         verlet_inc dq = 0, dp = 0;
-        verlet_dHdq(w, t0 + 0 * h, Q1, P1, w->G[0]);
-        verlet_dHdq(w, t0 + 0x1p+0 * h, Q2, P2, w->G[1]);
+        verlet_dHdq(w, t0, Q1, P1, w->G[0]);
+        verlet_dHdq(w, t0 + h, Q2, P2, w->G[1]);
         for (size_t k = 0; k < n; k++) {
             /* loads first, then the new stage values, then the stores */
             const double pk = p[k];
@@ -251,8 +252,8 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
             P1[k] = u1;
             P2[k] = u2;
         }
-        verlet_dHdp(w, t0 + 0 * h, Q1, P1, w->F[0]);
-        verlet_dHdp(w, t0 + 0x1p+0 * h, Q2, P2, w->F[1]);
+        verlet_dHdp(w, t0, Q1, P1, w->F[0]);
+        verlet_dHdp(w, t0 + h, Q2, P2, w->F[1]);
         sweeps++;
         for (size_t k = 0; k < n; k++) {
             const double qk = q[k];
@@ -365,8 +366,8 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
         /* Lagrange extrapolation of the previous step's stage gradients, at
          * times 1 + c_i r in units of the previous step (nodes c_j). */
         const double r = h / w->hprev;
-        const double x1 = 1 + 0 * r;
-        const double x2 = 1 + 0x1p+0 * r;
+        const double x1 = 1;
+        const double x2 = 1 + r;
         const double w1_1 = (x1 - 0x1p+0) * (-0x1p+0);
         const double w1_2 = (x1 - 0) * 0x1p+0;
         const double w2_1 = (x2 - 0x1p+0) * (-0x1p+0);
@@ -449,9 +450,9 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     verlet_dHdp(w, t0, q, X1, X2);
     w->stats.dHdp_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_update(q[k], (0x1p+0 * h) * X2[k], &cq[k]);
+        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_update(q[k], h * X2[k], &cq[k]);
     } else {
-        for (size_t k = 0; k < n; k++) q[k] += (0x1p+0 * h) * X2[k];
+        for (size_t k = 0; k < n; k++) q[k] += h * X2[k];
     }
     verlet_dHdq(w, t1, q, p, X3);
     w->stats.dHdq_evals++;
