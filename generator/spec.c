@@ -170,10 +170,13 @@ static void warn_unknown_fields(lua_State *L, int table, load_ctx *cx)
             int known = 0;
             for (int i = 0; known_fields[i]; i++) known |= strcmp(key, known_fields[i]) == 0;
             if (!known) {
+                /* the closest known field within 2 edits ('node' is 1 from
+                 * 'nodes' and 2 from 'name': nodes) */
                 const char *near = NULL;
-                for (int i = 0; known_fields[i] && !near; i++) {
+                size_t nearest = 3;
+                for (int i = 0; known_fields[i]; i++) {
                     size_t d = edit_distance(key, known_fields[i]);
-                    if (d <= 2 && d < strlen(key)) near = known_fields[i];
+                    if (d < nearest && d < strlen(key)) { nearest = d; near = known_fields[i]; }
                 }
                 char *all = join_names(known_fields);
                 w = near ? vigen_strdup_printf("%s: unknown field '%s' is ignored; did you mean '%s'? (known fields: %s)",

@@ -292,6 +292,12 @@ static void test_unknown_fields(void)
     CHECK(contains(warnings.data, path) && contains(warnings.data, "entry [1] is ignored"));
     free(path);
 
+    /* the closest field is suggested: 'node' is one edit from 'nodes', two from 'name' */
+    vigen_strbuf_clear(&warnings);
+    CHECK(load(&spec, "return { name = 'x', basis = 'lagrange', node = {'0'} }", NULL, &err, NULL) == VIGEN_E_SPEC);
+    CHECK_MSG(contains(warnings.data, "did you mean 'nodes'"), "%s", warnings.data ? warnings.data : "(none)");
+    vigen_error_clear(&err);
+
     /* a typo of a required field: the warning, then the error */
     vigen_strbuf_clear(&warnings);
     CHECK(load(&spec, "return { name = 'x', basys = 'lagrange', nodes = {'0'} }", NULL, &err, NULL) == VIGEN_E_SPEC);
