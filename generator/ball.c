@@ -12,6 +12,7 @@
  * a pointer to it sits in the state's extra space so that every operation
  * reaches it without touching the Lua API.
  */
+#include <stdio.h>
 #include <string.h>
 
 #include <lauxlib.h>
@@ -109,8 +110,15 @@ static void check_operand(lua_State *L, int idx, const char *fname, const char *
     }
     if (t == LUA_TNUMBER) {
         const char *f = vigen_push_float_text(L, lua_tonumber(L, idx));
-        if (fname) luaL_error(L, "basis function: %s got a Lua float (%s); %s", fname, f, float_hint);
-        luaL_error(L, "basis function: a Lua float (%s) met a ball; %s", f, float_hint);
+        /* a short literal (0.5, 2.25) was most likely meant exactly: suggest
+         * that very value; a long one (0.3333333333333333) has no exact text */
+        char hint[96];
+        if (strlen(f) <= 12)
+            snprintf(hint, sizeof hint, "a Lua float is a rounded double: write exact(\"%s\") if that value is meant exactly", f);
+        else
+            snprintf(hint, sizeof hint, "%s", float_hint);
+        if (fname) luaL_error(L, "basis function: %s got a Lua float (%s); %s", fname, f, hint);
+        luaL_error(L, "basis function: a Lua float (%s) met a ball; %s", f, hint);
     }
     if (is_ball(L, idx)) return;
     if (fname) {
