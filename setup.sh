@@ -23,7 +23,13 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$(nproc)"
+# the build's progress goes to a log; it is shown only when the build fails
+if ! cmake --build build -j"$(nproc)" >build/build.log 2>&1; then
+  cat build/build.log >&2
+  echo "setup.sh: the build failed (the log above is also in build/build.log)" >&2
+  exit 1
+fi
+echo "setup.sh: built build/vigen and the tests (log: build/build.log)"
 
 case "${1:-run}" in
   run)
