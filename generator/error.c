@@ -161,3 +161,40 @@ char *vigen_strdup_printf(const char *fmt, ...)
     va_end(ap);
     return s;
 }
+
+static size_t edit_distance(const char *a, const char *b)
+{
+    size_t na = strlen(a), nb = strlen(b);
+    size_t *row = calloc(nb + 1, sizeof *row);
+    if (row == NULL) return (size_t)-1;
+    for (size_t j = 0; j <= nb; j++) row[j] = j;
+    for (size_t i = 1; i <= na; i++) {
+        size_t diag = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= nb; j++) {
+            size_t up = row[j];
+            size_t best = diag + (a[i - 1] != b[j - 1]);
+            if (up + 1 < best) best = up + 1;
+            if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
+            row[j] = best;
+            diag = up;
+        }
+    }
+    size_t d = row[nb];
+    free(row);
+    return d;
+}
+
+const char *vigen_nearest_name(const char *key, const char *const *names, size_t max_edits)
+{
+    const char *near = NULL;
+    size_t nearest = max_edits + 1;
+    for (int i = 0; names[i]; i++) {
+        size_t d = edit_distance(key, names[i]);
+        if (d < nearest && d < strlen(key)) {
+            nearest = d;
+            near = names[i];
+        }
+    }
+    return near;
+}

@@ -69,6 +69,11 @@ void vigen_strbuf_printf(vigen_strbuf *sb, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* The name in the NULL-terminated list names closest to key (Levenshtein
+ * distance), when at most max_edits away and closer than the key's length;
+ * NULL otherwise.  For "did you mean" hints. */
+const char *vigen_nearest_name(const char *key, const char *const *names, size_t max_edits);
+
 char *vigen_strdup(const char *s);
 char *vigen_strdup_printf(const char *fmt, ...)
 #if defined(__GNUC__)

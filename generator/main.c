@@ -24,10 +24,10 @@ static const char *usage_main =
     "  generate SPEC [--digits N] [-o FILE]   tableau of the Galerkin variational integrator of a spec\n"
     "  show FILE [--format text|latex|json|lua] [--digits N]\n"
     "                                         print a tableau (or the tableau of a spec)\n"
-    "  check FILE [--against FILE2] [--max-order P] [--json]\n"
+    "  check FILE [--against FILE2] [--max-order P] [--prec BITS] [--json]\n"
     "                                         certify order, symplecticity and consistency\n"
-    "  emit FILE --name NAME [--real double|long-double|float128] [-o DIR]\n"
-    "                                         compile a tableau into a C stepper (NAME.h, NAME.c)\n"
+    "  emit FILE --name NAME [--real double|long-double|float128] [-o DIR] [-q]\n"
+    "       [--allow-inexact]                 compile a tableau (or a spec) into a C stepper\n"
     "\n"
     "Options for every command (spec and tableau files run in a Lua sandbox):\n"
     "  --max-memory MIB        memory cap of the sandbox (default 256)\n"
@@ -71,9 +71,10 @@ static int exit_code_for(int status)
     return 2;
 }
 
-static int fail(vigen_error *err)
+/* "vigen COMMAND: message" on standard error, the exit status for the error. */
+static int fail(const char *command, vigen_error *err)
 {
-    fprintf(stderr, "vigen: %s\n", err->message ? err->message : vigen_status_name(err->code));
+    fprintf(stderr, "vigen %s: %s\n", command, err->message ? err->message : vigen_status_name(err->code));
     int code = exit_code_for(err->code);
     vigen_error_clear(err);
     return code;
@@ -93,8 +94,19 @@ static int parse_digits(const char *text, slong *digits)
 
 static int is_help(const char *arg) { return strcmp(arg, "--help") == 0 || strcmp(arg, "-h") == 0; }
 
+/* An unknown option: the message, with the closest known option as a hint. */
+static int unknown_option(const char *cmd, const char *arg, const char *const *known, const char *usage)
+{
+    const char *near = vigen_nearest_name(arg, known, 2);
+    if (near) fprintf(stderr, "vigen %s: unknown or incomplete option '%s'; did you mean '%s'?\n\n%s", cmd, arg, near, usage);
+    else fprintf(stderr, "vigen %s: unknown or incomplete option '%s'\n\n%s", cmd, arg, usage);
+    return 2;
+}
+
 static int cmd_generate(int argc, char **argv)
 {
+    static const char cmd[] = "generate";
+    static const char *const known[] = { "--digits", "-o", "-q", "--quiet", "--help", NULL };
     const char *spec_path = NULL, *out_path = NULL;
     slong digits = DEFAULT_DIGITS;
     int quiet = 0;
@@ -104,22 +116,24 @@ static int cmd_generate(int argc, char **argv)
             if (!parse_digits(argv[++i], &digits)) return 2;
         } else if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) out_path = argv[++i];
         else if (strcmp(argv[i], "-q") == 0 || strcmp(argv[i], "--quiet") == 0) quiet = 1;
-        else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "vigen generate: unknown or incomplete option '%s'\n\n%s", argv[i], usage_generate);
-            return 2;
-        } else if (spec_path == NULL) spec_path = argv[i];
+        else if (argv[i][0] == '-' && argv[i][1] != '\0') return unknown_option(cmd, argv[i], known, usage_generate);
+        else if (spec_path == NULL) spec_path = argv[i];
         else { fprintf(stderr, "vigen generate: one spec file at a time\n"); return 2; }
     }
-    if (spec_path == NULL) { fputs(usage_generate, stderr); return 2; }
+    if (spec_path == NULL) {
+        fprintf(stderr, "vigen generate: which spec file? (for example tableaux/specs/gauss_legendre_s2.lua)\n\n%s",
+                usage_generate);
+        return 2;
+    }
 
     vigen_error err;
     vigen_error_init(&err);
     vigen_spec *spec = NULL;
-    if (vigen_spec_load(&spec, spec_path, NULL, &err) != VIGEN_OK) return fail(&err);
+    if (vigen_spec_load(&spec, spec_path, NULL, &err) != VIGEN_OK) return fail(cmd, &err);
     vigen_tableau t;
     int rc = vigen_galerkin_generate(&t, spec, digits, &err);
     vigen_spec_free(spec);
-    if (rc != VIGEN_OK) return fail(&err);
+    if (rc != VIGEN_OK) return fail(cmd, &err);
 
     char *text = vigen_tableau_to_lua(&t);
     rc = vigen_write_file_atomic(out_path ? out_path : "-", text, &err);
@@ -136,12 +150,14 @@ static int cmd_generate(int argc, char **argv)
         arb_clear(res);
     }
     vigen_tableau_clear(&t);
-    if (rc != VIGEN_OK) return fail(&err);
+    if (rc != VIGEN_OK) return fail(cmd, &err);
     return 0;
 }
 
 static int cmd_show(int argc, char **argv)
 {
+    static const char cmd[] = "show";
+    static const char *const known[] = { "--format", "--digits", "--help", NULL };
     const char *path = NULL, *format = "text";
     slong digits = DEFAULT_DIGITS;
     for (int i = 0; i < argc; i++) {
@@ -149,13 +165,14 @@ static int cmd_show(int argc, char **argv)
         if (strcmp(argv[i], "--format") == 0 && i + 1 < argc) format = argv[++i];
         else if (strcmp(argv[i], "--digits") == 0 && i + 1 < argc) {
             if (!parse_digits(argv[++i], &digits)) return 2;
-        } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            fprintf(stderr, "vigen show: unknown or incomplete option '%s'\n\n%s", argv[i], usage_show);
-            return 2;
-        } else if (path == NULL) path = argv[i];
+        } else if (argv[i][0] == '-' && argv[i][1] != '\0') return unknown_option(cmd, argv[i], known, usage_show);
+        else if (path == NULL) path = argv[i];
         else { fprintf(stderr, "vigen show: one file at a time\n"); return 2; }
     }
-    if (path == NULL) { fputs(usage_show, stderr); return 2; }
+    if (path == NULL) {
+        fprintf(stderr, "vigen show: which file? (a tableau file or a spec file)\n\n%s", usage_show);
+        return 2;
+    }
     vigen_show_format fmt;
     if (!vigen_show_parse_format(&fmt, format)) {
         fprintf(stderr, "vigen show: unknown format '%s' (use text, latex, json or lua)\n", format);
@@ -164,11 +181,11 @@ static int cmd_show(int argc, char **argv)
     vigen_error err;
     vigen_error_init(&err);
     vigen_tableau t;
-    if (vigen_source_load(&t, path, digits, &err) != VIGEN_OK) return fail(&err);
+    if (vigen_source_load(&t, path, digits, &err) != VIGEN_OK) return fail(cmd, &err);
     char *text = NULL;
     int rc = vigen_show_render(&text, &t, fmt, digits, &err);
     vigen_tableau_clear(&t);
-    if (rc != VIGEN_OK) return fail(&err);
+    if (rc != VIGEN_OK) return fail(cmd, &err);
     fputs(text, stdout);
     free(text);
     return 0;

@@ -116,28 +116,6 @@ static char *join_names(const char *const *names)
     return b.data;
 }
 
-static size_t edit_distance(const char *a, const char *b)
-{
-    size_t na = strlen(a), nb = strlen(b);
-    size_t *row = xcalloc(nb + 1, sizeof *row);
-    for (size_t j = 0; j <= nb; j++) row[j] = j;
-    for (size_t i = 1; i <= na; i++) {
-        size_t diag = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= nb; j++) {
-            size_t up = row[j];
-            size_t best = diag + (a[i - 1] != b[j - 1]);
-            if (up + 1 < best) best = up + 1;
-            if (row[j - 1] + 1 < best) best = row[j - 1] + 1;
-            row[j] = best;
-            diag = up;
-        }
-    }
-    size_t d = row[nb];
-    free(row);
-    return d;
-}
-
 static int compare_strings(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
@@ -172,12 +150,7 @@ static void warn_unknown_fields(lua_State *L, int table, load_ctx *cx)
             if (!known) {
                 /* the closest known field within 2 edits ('node' is 1 from
                  * 'nodes' and 2 from 'name': nodes) */
-                const char *near = NULL;
-                size_t nearest = 3;
-                for (int i = 0; known_fields[i]; i++) {
-                    size_t d = edit_distance(key, known_fields[i]);
-                    if (d < nearest && d < strlen(key)) { nearest = d; near = known_fields[i]; }
-                }
+                const char *near = vigen_nearest_name(key, known_fields, 2);
                 char *all = join_names(known_fields);
                 w = near ? vigen_strdup_printf("%s: unknown field '%s' is ignored; did you mean '%s'? (known fields: %s)",
                                                cx->spec->path, key, near, all)
