@@ -8,7 +8,7 @@
 -- is a test input for `vigen check`. The recomputed closed forms are in
 -- tests/data/leok_zhang/leok_zhang_ex4.lua and the misprints are listed in
 -- docs/published.md.
--- PRK convention (MATH.md sec. 1): (c, A, b) for dH/dp (q-equation), (c~, A~,
+-- PRK convention (docs/math.md): (c, A, b) for dH/dp (q-equation), (c~, A~,
 -- b) for -dH/dq (p-equation).
 return {
   name = "leok_zhang_ex4",

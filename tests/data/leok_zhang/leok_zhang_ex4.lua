@@ -4,7 +4,7 @@
 -- (journal version: IMA J. Numer. Anal., 2011, doi:10.1093/imanum/drq027, not
 -- examined); Section 4.5 "Examples", Example 4: basis psi = {1, cos(pi*t),
 -- sin(pi*t)}, quadrature points c = {0, 1/2, 1}.
--- Every entry recomputed with sympy from the construction of MATH.md sec. 2
+-- Every entry recomputed with sympy from the construction of docs/math.md (Theorem 3 of Leok & Zhang)
 -- (M_ij = psi_i(c_j), B_i = int_0^1 psi_i, Apsi_ij = int_0^c_i psi_j, b =
 -- M^-1 B, A = Apsi M^-T, at_ij = (b_i b_j - b_j a_ji)/b_i, ct_i = sum_j
 -- at_ij). Reference values for the test suite. Entries that differ from the

@@ -4,7 +4,7 @@
 -- (journal version: IMA J. Numer. Anal., 2011, doi:10.1093/imanum/drq027, not
 -- examined); Section 4.5 "Examples", Example 5 (iii): Lagrange basis at the
 -- Chebyshev quadrature nodes (roots of G_3 = (2x^3-x)/2), s = 3.
--- Every entry recomputed with sympy from the construction of MATH.md sec. 2
+-- Every entry recomputed with sympy from the construction of docs/math.md (Theorem 3 of Leok & Zhang)
 -- (M_ij = psi_i(c_j), B_i = int_0^1 psi_i, Apsi_ij = int_0^c_i psi_j, b =
 -- M^-1 B, A = Apsi M^-T, at_ij = (b_i b_j - b_j a_ji)/b_i, ct_i = sum_j
 -- at_ij). Reference values for the test suite. Entries that differ from the
