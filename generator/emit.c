@@ -15,6 +15,9 @@
 #include <arb_mat.h>
 #include "check.h"
 #include "emit.h"
+#include "galerkin.h"
+#include "source.h"
+#include "spec.h"
 #include "template.h"
 
 #ifndef VIGEN_VERSION
@@ -125,6 +128,14 @@ static unsigned long long tableau_digest(const vigen_tableau *t)
 
 /* ------------------------------------------------------- correct rounding */
 
+/* The entries of the tableau in file order: c, A, b, At, bt.  A coefficient
+ * is either one of them (a reference, "ref", into this flat numbering) or
+ * derived from several (ref = -1: merged sums, 1/(c_j - c_m)). */
+enum { PART_C, PART_A, PART_B, PART_AT, PART_BT };
+
+/* marks[ref] of the current pass */
+enum { MARK_INEXACT = 1, MARK_ZERO = 2 };
+
 typedef struct {
     const vigen_tableau *t;
     slong s, prec, bits;
@@ -132,8 +143,53 @@ typedef struct {
     arb_ptr c, b, bt;
     arb_mat_t A, At;
     char **At_text, **bt_text;    /* At = A and bt = b when absent */
+    unsigned char *marks;         /* per entry, reset at every pass */
+    slong inexact_derived;        /* derived coefficients rounded from midpoints */
+    int fail_kind;                /* 1: ball straddles a rounding boundary, 2: contains zero */
+    slong fail_ref;
+    char fail_label[64];
     vigen_error *err;
 } emit_ctx;
+
+static slong n_entries(slong s) { return 3 * s + 2 * s * s; }
+
+/* The reference of entry (i, j) of a part (j ignored for vectors); At and bt
+ * are A and b when the file leaves them out. */
+static slong entry_ref(const emit_ctx *E, int part, slong i, slong j)
+{
+    slong s = E->s;
+    if (part == PART_AT && !E->t->has_At) part = PART_A;
+    if (part == PART_BT && !E->t->has_bt) part = PART_B;
+    switch (part) {
+    case PART_C: return i;
+    case PART_A: return s + i * s + j;
+    case PART_B: return s + s * s + i;
+    case PART_AT: return 2 * s + s * s + i * s + j;
+    default: return 2 * s + 2 * s * s + i;
+    }
+}
+
+/* Label ("A[2][1]"), text in the file and current ball of an entry. */
+static void entry_describe(const emit_ctx *E, slong ref, char *label, size_t n, const char **text, arb_srcptr *value)
+{
+    const vigen_tableau *t = E->t;
+    slong s = E->s;
+    const char *name;
+    const char *tx;
+    arb_srcptr v;
+    slong i, j = -1;
+    if (ref < s) { name = "c"; i = ref; tx = t->c_text[i]; v = E->c + i; }
+    else if (ref < s + s * s) { name = "A"; i = (ref - s) / s; j = (ref - s) % s; tx = t->A_text[i * s + j]; v = arb_mat_entry(E->A, i, j); }
+    else if (ref < 2 * s + s * s) { name = "b"; i = ref - s - s * s; tx = t->b_text[i]; v = E->b + i; }
+    else if (ref < 2 * s + 2 * s * s) {
+        name = "At"; i = (ref - 2 * s - s * s) / s; j = (ref - 2 * s - s * s) % s;
+        tx = E->At_text[i * s + j]; v = arb_mat_entry(E->At, i, j);
+    } else { name = "bt"; i = ref - 2 * s - 2 * s * s; tx = E->bt_text[i]; v = E->bt + i; }
+    if (j >= 0) snprintf(label, n, "%s[%ld][%ld]", name, (long)(i + 1), (long)(j + 1));
+    else snprintf(label, n, "%s[%ld]", name, (long)(i + 1));
+    if (text) *text = tx;
+    if (value) *value = v;
+}
 
 /* A ball around zero small enough to be taken as an exact zero. */
 static int tiny_zero(const emit_ctx *E, const arb_t x)
@@ -145,22 +201,40 @@ static int tiny_zero(const emit_ctx *E, const arb_t x)
 
 static int coef_zero(const emit_ctx *E, const arb_t x) { return tiny_zero(E, x); }
 
+/* Records why x cannot be rounded (the message is rewritten with advice by
+ * precision_message once more precision has not helped). */
+static int refuse(emit_ctx *E, int kind, slong ref, const char *label)
+{
+    E->fail_kind = kind;
+    E->fail_ref = ref;
+    snprintf(E->fail_label, sizeof E->fail_label, "%s", label);
+    return vigen_error_set(E->err, VIGEN_E_PRECISION, "%s: %s", label,
+                           kind == 1 ? "the value is not known well enough to round it correctly"
+                                     : "the ball contains zero; it cannot be rounded to the target type");
+}
+
 /* Formats x correctly rounded to the target type as a C literal in *out, or
- * NULL for an exact zero.  Returns VIGEN_E_PRECISION when the ball straddles
- * a rounding boundary. */
-static int literal(char **out, emit_ctx *E, const arb_t x, const char *label)
+ * NULL for an exact zero.  ref names the entry x is (or -1 for a derived
+ * coefficient, then described by label).  Returns VIGEN_E_PRECISION when the
+ * ball straddles a rounding boundary.  Exact zeros taken from tiny balls and
+ * entries rounded as written (--allow-inexact) are marked, not reported:
+ * vigen_emit_render reports them once, after the last pass. */
+static int literal(char **out, emit_ctx *E, const arb_t x, slong ref, const char *label)
 {
     *out = NULL;
+    char lab[64];
+    if (ref >= 0) entry_describe(E, ref, lab, sizeof lab, NULL, NULL);
+    else snprintf(lab, sizeof lab, "%s", label);
     if (arb_is_zero(x)) return VIGEN_OK;
     if (arb_contains_zero(x)) {
         if (tiny_zero(E, x)) {
-            vigen_warn("%s is only known to lie within %.3g of zero; emitted as an exact 0", label,
-                       mag_get_d(arb_radref(x)));
+            if (ref >= 0) E->marks[ref] |= MARK_ZERO;
+            else
+                vigen_warn("%s is only known to lie within %.3g of zero; emitted as an exact 0", lab,
+                           mag_get_d(arb_radref(x)));
             return VIGEN_OK;
         }
-        return vigen_error_set(E->err, VIGEN_E_PRECISION,
-                               "%s: the ball contains zero; it cannot be rounded to the target type "
-                               "(give the entry exactly or with more digits)", label);
+        return refuse(E, 2, ref, lab);
     }
     arf_t lo, hi;
     arf_init(lo);
@@ -173,15 +247,13 @@ static int literal(char **out, emit_ctx *E, const arb_t x, const char *label)
     if (!arf_equal(lo, hi) && E->allow_inexact && E->inexact_done) {
         arf_set_round(lo, arb_midref(x), E->bits, ARF_RND_NEAR);
         arf_set(hi, lo);
-        vigen_warn("%s: not known well enough to round correctly to %ld bits; rounding the value as written",
-                   label, (long)E->bits);
+        if (ref >= 0) E->marks[ref] |= MARK_INEXACT;
+        else E->inexact_derived++;
     }
     if (!arf_equal(lo, hi)) {
-        rc = vigen_error_set(E->err, VIGEN_E_PRECISION,
-                             "%s: the value is not known well enough to round it correctly to %ld bits "
-                             "(give the entry exactly or with more digits)", label, (long)E->bits);
+        rc = refuse(E, 1, ref, lab);
     } else if (arf_cmpabs_2exp_si(lo, -1000) < 0 || arf_cmpabs_2exp_si(lo, 1000) > 0) {
-        rc = vigen_error_set(E->err, VIGEN_E_DOMAIN, "%s: magnitude outside [2^-1000, 2^1000]", label);
+        rc = vigen_error_set(E->err, VIGEN_E_DOMAIN, "%s: magnitude outside [2^-1000, 2^1000]", lab);
     } else {
         fmpz_t m, e, fr;
         fmpz_init(m);
@@ -252,25 +324,23 @@ static void put_lit(vigen_strbuf *sb, const char *lit)
 }
 
 /* Appends the literal of x (or false), failing on precision. */
-static int put_coef(vigen_strbuf *sb, emit_ctx *E, const arb_t x, const char *label)
+static int put_coef(vigen_strbuf *sb, emit_ctx *E, const arb_t x, slong ref, const char *label)
 {
     char *lit = NULL;
-    int rc = literal(&lit, E, x, label);
+    int rc = literal(&lit, E, x, ref, label);
     if (rc != VIGEN_OK) return rc;
     put_lit(sb, lit);
     free(lit);
     return VIGEN_OK;
 }
 
-static int put_vec(vigen_strbuf *sb, emit_ctx *E, const char *key, arb_srcptr v, const char *label, int zero_text)
+static int put_vec(vigen_strbuf *sb, emit_ctx *E, const char *key, arb_srcptr v, int part, int zero_text)
 {
     put_key(sb, key);
     vigen_strbuf_append(sb, "{ ");
     for (slong i = 0; i < E->s; i++) {
-        char lab[64];
-        snprintf(lab, sizeof lab, "%s[%ld]", label, (long)(i + 1));
         char *lit = NULL;
-        int rc = literal(&lit, E, v + i, lab);
+        int rc = literal(&lit, E, v + i, entry_ref(E, part, i, 0), NULL);
         if (rc != VIGEN_OK) return rc;
         if (lit == NULL && zero_text) vigen_template_quote(sb, "0");
         else put_lit(sb, lit);
@@ -281,16 +351,14 @@ static int put_vec(vigen_strbuf *sb, emit_ctx *E, const char *key, arb_srcptr v,
     return VIGEN_OK;
 }
 
-static int put_mat(vigen_strbuf *sb, emit_ctx *E, const char *key, const arb_mat_t m, const char *label)
+static int put_mat(vigen_strbuf *sb, emit_ctx *E, const char *key, const arb_mat_t m, int part)
 {
     put_key(sb, key);
     vigen_strbuf_append(sb, "{\n");
     for (slong i = 0; i < E->s; i++) {
         vigen_strbuf_append(sb, "  { ");
         for (slong j = 0; j < E->s; j++) {
-            char lab[64];
-            snprintf(lab, sizeof lab, "%s[%ld][%ld]", label, (long)(i + 1), (long)(j + 1));
-            int rc = put_coef(sb, E, arb_mat_entry(m, i, j), lab);
+            int rc = put_coef(sb, E, arb_mat_entry(m, i, j), entry_ref(E, part, i, j), NULL);
             if (rc != VIGEN_OK) return rc;
             vigen_strbuf_append(sb, ", ");
         }
@@ -544,7 +612,7 @@ static int put_terms(vigen_strbuf *sb, emit_ctx *E, const plan *P, const arb_mat
         merged(m, E, M, v, r, cls, f);
         if (coef_zero(E, m)) continue;
         char *lit = NULL;
-        rc = literal(&lit, E, m, label);
+        rc = literal(&lit, E, m, -1, label);
         if (rc != VIGEN_OK || lit == NULL) { free(lit); continue; }
         vigen_strbuf_append(sb, "{ coef = ");
         vigen_template_quote(sb, lit);
@@ -648,7 +716,7 @@ static int put_explicit(vigen_strbuf *sb, emit_ctx *E, const plan *P, const char
             else if (qk == K_END) vigen_strbuf_append(sb, "time = \"t1\", ");
             else {
                 char *lit = NULL;
-                rc = literal(&lit, E, E->c + r, "c");
+                rc = literal(&lit, E, E->c + r, entry_ref(E, PART_C, r, 0), NULL);
                 vigen_strbuf_append(sb, "time = \"c\", tc = ");
                 vigen_template_quote(sb, lit ? lit : "0");
                 vigen_strbuf_append(sb, ", ");
@@ -814,6 +882,14 @@ static int build_data(vigen_strbuf *sb, emit_ctx *E, const vigen_emit_options *o
         vigen_template_quote(sb, line);
         vigen_strbuf_append(sb, ",\n");
         free(line);
+        if (t->generated_now) {
+            line = vigen_strdup_printf("Tableau generated from the spec %s with %ld certified digits "
+                                       "(as by vigen generate %s --digits %ld)",
+                                       inp, (long)t->digits, inp, (long)t->digits);
+            vigen_template_quote(sb, line);
+            vigen_strbuf_append(sb, ",\n");
+            free(line);
+        }
         free(inp);
         line = vigen_strdup_printf("Tableau digest (FNV-1a 64 of the canonical text): %016llx", tableau_digest(t));
         vigen_template_quote(sb, line);
@@ -875,11 +951,11 @@ static int build_data(vigen_strbuf *sb, emit_ctx *E, const vigen_emit_options *o
     }
     vigen_strbuf_append(sb, "},\n");
 
-    rc = put_vec(sb, E, "c", E->c, "c", 1);
-    if (rc == VIGEN_OK) rc = put_vec(sb, E, "b", E->b, "b", 0);
-    if (rc == VIGEN_OK) rc = put_vec(sb, E, "bt", E->bt, t->has_bt ? "bt" : "b", 0);
-    if (rc == VIGEN_OK) rc = put_mat(sb, E, "a", E->A, "A");
-    if (rc == VIGEN_OK) rc = put_mat(sb, E, "at", E->At, t->has_At ? "At" : "A");
+    rc = put_vec(sb, E, "c", E->c, PART_C, 1);
+    if (rc == VIGEN_OK) rc = put_vec(sb, E, "b", E->b, PART_B, 0);
+    if (rc == VIGEN_OK) rc = put_vec(sb, E, "bt", E->bt, PART_BT, 0);
+    if (rc == VIGEN_OK) rc = put_mat(sb, E, "a", E->A, PART_A);
+    if (rc == VIGEN_OK) rc = put_mat(sb, E, "at", E->At, PART_AT);
 
     /* extrapolation: Lagrange through distinct nodes c */
     int distinct = s >= 2;
@@ -898,7 +974,7 @@ static int build_data(vigen_strbuf *sb, emit_ctx *E, const vigen_emit_options *o
                     if (m == j) { vigen_strbuf_append(sb, "false, "); continue; }
                     arb_sub(d, E->c + j, E->c + m, E->prec);
                     arb_inv(d, d, E->prec);
-                    rc = put_coef(sb, E, d, "1/(c_j - c_m)");
+                    rc = put_coef(sb, E, d, -1, "1/(c_j - c_m)");
                     vigen_strbuf_append(sb, ", ");
                 }
                 vigen_strbuf_append(sb, "},\n");
@@ -943,6 +1019,94 @@ static int build_data(vigen_strbuf *sb, emit_ctx *E, const vigen_emit_options *o
     return rc;
 }
 
+slong vigen_emit_spec_digits(int real) { return real == VIGEN_REAL_FLOAT128 ? 60 : 40; }
+
+static const char *const real_names[] = { "double", "long-double", "float128" };
+
+/* How the messages name the input. */
+static const char *input_name(const emit_ctx *E, const vigen_emit_options *opt)
+{
+    if (opt->input_label) return opt->input_label;
+    return E->t->name ? E->t->name : "tableau";
+}
+
+/* Rewrites the error of an entry that more working precision could not
+ * round into one that says what to do about it. */
+static void precision_message(emit_ctx *E, const vigen_emit_options *opt, vigen_error *err)
+{
+    const vigen_tableau *t = E->t;
+    char lab[64];
+    const char *text = NULL;
+    if (E->fail_ref >= 0) entry_describe(E, E->fail_ref, lab, sizeof lab, &text, NULL);
+    else snprintf(lab, sizeof lab, "%s", E->fail_label);
+    char *shown = text ? safe_text(text, 60) : NULL;
+    char *what;
+    if (shown) what = vigen_strdup_printf("%s = %s", lab, shown);
+    else what = vigen_strdup_printf("%s (computed from entries given as rounded decimals)", lab);
+    const char *why = E->fail_kind == 2 ? "is a ball around zero too wide to be rounded" : "is not known well enough to round it correctly";
+    long bits = (long)E->bits, need = (long)vigen_emit_spec_digits(E->real);
+    const char *rname = real_names[E->real];
+    if (t->generated_now)
+        vigen_error_set(err, VIGEN_E_PRECISION,
+                        "%s %s to %ld bits (%s), even generated from the spec with %ld digits (the value lies "
+                        "extremely close to a rounding boundary); pass --allow-inexact to round the decimals as "
+                        "written", what, why, bits, rname, (long)t->digits);
+    else if (t->digits > 0)
+        vigen_error_set(err, VIGEN_E_PRECISION,
+                        "%s %s to %ld bits (%s): the tableau was generated with %ld digits; regenerate it with "
+                        "'vigen generate SPEC --digits %ld' (or more), or emit the spec itself (vigen emit then "
+                        "generates enough digits); or give the entry exactly; or pass --allow-inexact to round the "
+                        "decimals as written (the stepper's coefficients are then only as good as the decimals)",
+                        what, why, bits, rname, (long)t->digits, need);
+    else
+        vigen_error_set(err, VIGEN_E_PRECISION,
+                        "%s %s to %ld bits (%s): give the entry exactly (an expression such as 1/3 or sqrt(3)/6) "
+                        "or with %ld or more significant digits (a tableau from vigen generate: regenerate it with "
+                        "'vigen generate SPEC --digits %ld'); or pass --allow-inexact to round the decimals as "
+                        "written (the stepper's coefficients are then only as good as the decimals)",
+                        what, why, bits, rname, need, need);
+    free(shown);
+    free(what);
+}
+
+/* The warnings of the last pass, one per entry: exact zeros taken from tiny
+ * balls, and one summary of the entries rounded as written. */
+static void report_marks(emit_ctx *E, const vigen_emit_options *opt)
+{
+    const char *in = input_name(E, opt);
+    slong n = n_entries(E->s), ninexact = 0;
+    vigen_strbuf names;
+    vigen_strbuf_init(&names);
+    vigen_strbuf_append(&names, "");
+    for (slong r = 0; r < n; r++) {
+        if (!E->marks[r]) continue;
+        char lab[64];
+        arb_srcptr v;
+        entry_describe(E, r, lab, sizeof lab, NULL, &v);
+        if (E->marks[r] & MARK_ZERO)
+            vigen_warn("%s: %s is only known to lie within %.3g of zero; emitted as an exact 0", in, lab,
+                       mag_get_d(arb_radref(v)));
+        if (E->marks[r] & MARK_INEXACT) {
+            if (ninexact < 5) vigen_strbuf_printf(&names, "%s%s", ninexact ? ", " : "", lab);
+            ninexact++;
+        }
+    }
+    if (ninexact > 0 || E->inexact_derived > 0) {
+        char more[64] = "", derived[96] = "";
+        if (ninexact > 5) snprintf(more, sizeof more, " and %ld more", (long)(ninexact - 5));
+        if (E->inexact_derived > 0)
+            snprintf(derived, sizeof derived, "; and %ld coefficient%s computed from them", (long)E->inexact_derived,
+                     E->inexact_derived == 1 ? "" : "s");
+        vigen_warn("%s: --allow-inexact: rounded %ld entr%s to %s (%ld bits) from %s decimals as written (%s%s%s): "
+                   "too few digits to round %s correctly, so the stepper's coefficients are only as good as these "
+                   "decimals",
+                   in, (long)ninexact, ninexact == 1 ? "y" : "ies", real_names[E->real], (long)E->bits,
+                   ninexact == 1 ? "its" : "their", ninexact ? names.data : "none", more, derived,
+                   ninexact == 1 ? "it" : "them");
+    }
+    vigen_strbuf_clear(&names);
+}
+
 int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
                       char **ident, vigen_error *err)
 {
@@ -966,6 +1130,8 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     E.bt = _arb_vec_init(t->s);
     arb_mat_init(E.A, t->s, t->s);
     arb_mat_init(E.At, t->s, t->s);
+    E.marks = calloc((size_t)n_entries(t->s), 1);
+    if (E.marks == NULL) abort();
     vigen_strbuf data;
     vigen_strbuf_init(&data);
     int rc = VIGEN_OK;
@@ -974,6 +1140,9 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
         if (rc != VIGEN_OK) break;
         vigen_strbuf_clear(&data);
         vigen_strbuf_init(&data);
+        memset(E.marks, 0, (size_t)n_entries(t->s));
+        E.inexact_derived = 0;
+        E.fail_kind = 0;
         rc = build_data(&data, &E, opt, id);
         if (rc != VIGEN_E_PRECISION) break;
         if (E.prec >= 8192) {
@@ -984,6 +1153,7 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
         }
         vigen_error_clear(err);
     }
+    if (rc == VIGEN_E_PRECISION && E.fail_kind) precision_message(&E, opt, err);
     if (rc == VIGEN_OK) {
         /* the workspace block size depends on nx, known only from the data: let
          * the template compute it from narrays_base + nx */
@@ -996,7 +1166,9 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
         free(hp);
         free(cp);
     }
+    if (rc == VIGEN_OK) report_marks(&E, opt);
     vigen_strbuf_clear(&data);
+    free(E.marks);
     _arb_vec_clear(E.c, t->s);
     _arb_vec_clear(E.b, t->s);
     _arb_vec_clear(E.bt, t->s);
@@ -1089,23 +1261,71 @@ static const char usage_emit[] =
     "usage: vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]\n"
     "                  [--allow-inexact] [-q]\n"
     "\n"
-    "Compiles the tableau file FILE into a C stepper: writes DIR/NAME.h and DIR/NAME.c\n"
-    "(atomically), to be compiled with -std=c11 and linked against the vigen runtime.\n"
-    "Coefficients are correctly rounded from certified balls to the target type.\n"
+    "Compiles FILE into a C stepper: writes DIR/NAME.h and DIR/NAME.c (atomically), to be\n"
+    "compiled with -std=c11 and linked against the vigen runtime.  FILE is a tableau file,\n"
+    "or a spec file (nodes and basis, as for 'vigen generate'), which is generated first\n"
+    "with 40 certified digits (60 for float128), enough to round every coefficient\n"
+    "correctly; the header of the output says so.  Coefficients are correctly rounded\n"
+    "from certified balls to the target type.\n"
     "\n"
-    "  --name NAME   prefix of every emitted symbol (made a C identifier if needed)\n"
-    "  --real TYPE   double (default), long-double (x87, 64-bit mantissa) or float128\n"
-    "  -o DIR        output directory (default: the current directory)\n"
-    "  --allow-inexact  round entries given with too few digits as written (warns)\n"
-    "  -q, --quiet   no summary on standard error (warnings are still printed)\n"
+    "  --name NAME      prefix of every emitted symbol (made a C identifier if needed)\n"
+    "  --real TYPE      double (default), long-double (x87, 64-bit mantissa) or float128\n"
+    "  -o DIR           output directory (default: the current directory)\n"
+    "  --allow-inexact  an entry given as a decimal with too few digits to determine its\n"
+    "                   correctly rounded value (a 16-digit textbook tableau, or a tableau\n"
+    "                   generated with the default 34 digits emitted as float128) is\n"
+    "                   refused; with this option it is rounded as written, and one\n"
+    "                   warning says how many entries were.  The coefficients are then only\n"
+    "                   as good as those decimals: use it when no more digits exist; for a\n"
+    "                   generated tableau, regenerate with 'vigen generate SPEC --digits 40'\n"
+    "                   (60 for float128) or emit the spec itself instead\n"
+    "  -q, --quiet      no summary on standard error (warnings are still printed)\n"
     "\n"
     "The tableau is checked as 'vigen check' does (row sums, sum b = 1, symplecticity;\n"
     "not the order): when a condition certainly fails, a warning on standard error says\n"
     "which, and the stepper is still written (exit status 0).  Conditions that hold only\n"
     "within the precision of rounded entries, or are undecided, give no warning.\n"
     "\n"
-    "Exit status: 0 success, 1 the tableau cannot be rounded (too few digits),\n"
-    "2 unreadable input, usage or output error.\n";
+    "Exit status: 0 success, 1 the tableau cannot be rounded (too few digits) or the spec\n"
+    "cannot be generated, 2 unreadable input, usage or output error.\n";
+
+/* Loads FILE for emission: a tableau file as it is; a spec generated with
+ * vigen_emit_spec_digits(real) digits, doubled (up to 960) while the emitter
+ * still finds a value it cannot round, with allow_inexact honoured only at
+ * the last attempt.  Renders into *h, *c, *ident; t is left initialised
+ * (on success and on failures after loading); *loaded says whether it is. */
+static int emit_load_render(vigen_tableau *t, int *loaded, const char *file, vigen_emit_options *opt, char **h,
+                            char **c, char **ident, vigen_error *err)
+{
+    *loaded = 0;
+    int kind = vigen_source_is_tableau(file, err);
+    if (kind < 0) return err->code;
+    if (kind == 1) {
+        int rc = vigen_tableau_load(t, file, NULL, err);
+        if (rc != VIGEN_OK) return rc;
+        *loaded = 1;
+        return vigen_emit_render(t, opt, h, c, ident, err);
+    }
+    vigen_spec *spec = NULL;
+    int rc = vigen_spec_load(&spec, file, NULL, err);
+    if (rc != VIGEN_OK) return rc;
+    int inexact = opt->allow_inexact;
+    const slong max_digits = 960;
+    for (slong digits = vigen_emit_spec_digits(opt->real);; digits *= 2) {
+        if (*loaded) vigen_tableau_clear(t);
+        *loaded = 0;
+        rc = vigen_galerkin_generate(t, spec, digits, err); /* its messages name the file */
+        if (rc != VIGEN_OK) break;
+        *loaded = 1;
+        opt->allow_inexact = digits * 2 > max_digits ? inexact : 0;
+        rc = vigen_emit_render(t, opt, h, c, ident, err);
+        if (rc != VIGEN_E_PRECISION || digits * 2 > max_digits) break;
+        vigen_error_clear(err);
+    }
+    opt->allow_inexact = inexact;
+    vigen_spec_free(spec);
+    return rc;
+}
 
 int vigen_emit_main(int argc, char **argv)
 {
@@ -1147,16 +1367,19 @@ int vigen_emit_main(int argc, char **argv)
     vigen_error err;
     vigen_error_init(&err);
     vigen_tableau t;
-    int rc = vigen_tableau_load(&t, file, NULL, &err);
-    if (rc != VIGEN_OK) {
-        fprintf(stderr, "vigen emit: %s\n", err.message ? err.message : vigen_status_name(rc));
-        vigen_error_clear(&err);
-        return 2;
-    }
     const char *base = strrchr(file, '/');
     vigen_emit_options opt = { name, real, base ? base + 1 : file, inexact };
     char *h = NULL, *c = NULL, *ident = NULL;
-    rc = vigen_emit_render(&t, &opt, &h, &c, &ident, &err);
+    int loaded = 0;
+    int rc = emit_load_render(&t, &loaded, file, &opt, &h, &c, &ident, &err);
+    if (rc != VIGEN_OK && !loaded) {
+        /* unreadable or malformed input; a spec whose method cannot be built
+         * (singular M, b_i = 0, complex nodes) exits with 1 like vigen generate */
+        fprintf(stderr, "vigen emit: %s\n", err.message ? err.message : vigen_status_name(rc));
+        vigen_error_clear(&err);
+        return (rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION) ? 1 : 2;
+    }
+    if (rc != VIGEN_OK && err.message) vigen_error_prefix(&err, "%s: ", file);
     if (rc == VIGEN_OK) {
         /* not silenced by -q: a stepper that is not what its user expects is
          * worth a line even in a quiet build */
@@ -1168,6 +1391,7 @@ int vigen_emit_main(int argc, char **argv)
                        aerr.message ? aerr.message : vigen_status_name(aerr.code), file);
         vigen_error_clear(&aerr);
     }
+    slong spec_digits = rc == VIGEN_OK && t.generated_now ? t.digits : 0;
     vigen_tableau_clear(&t);
     if (rc == VIGEN_OK) {
         if (strcmp(ident, name) != 0) vigen_warn("--name '%s' is not a C identifier; using '%s'", name, ident);
@@ -1180,7 +1404,12 @@ int vigen_emit_main(int argc, char **argv)
         char *cp = vigen_strdup_printf("%s%s%s.c", dir, sep, ident);
         if (rc == VIGEN_OK) rc = vigen_write_file_atomic(hp, h, &err);
         if (rc == VIGEN_OK) rc = vigen_write_file_atomic(cp, c, &err);
-        if (rc == VIGEN_OK && !quiet) fprintf(stderr, "vigen emit: wrote %s and %s\n", hp, cp);
+        if (rc == VIGEN_OK && !quiet) {
+            if (spec_digits > 0)
+                fprintf(stderr, "vigen emit: wrote %s and %s (tableau generated from the spec with %ld certified digits)\n",
+                        hp, cp, (long)spec_digits);
+            else fprintf(stderr, "vigen emit: wrote %s and %s\n", hp, cp);
+        }
         free(hp);
         free(cp);
     }

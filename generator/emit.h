@@ -7,14 +7,21 @@
  * templates/stepper.h.in and templates/stepper.c.in (see template.h) and
  * linked against the runtime library (runtime/include/vigen/runtime.h).
  *
+ * - FILE is a tableau file or a spec file (nodes and basis, as for vigen
+ *   generate).  A spec is generated on the fly with vigen_emit_spec_digits
+ *   certified digits (40 for double and long double, 60 for float128; twice
+ *   as many, up to 960, in the rare case that a value lies that close to a
+ *   rounding boundary), and the header says so.
  * - Coefficients are literals correctly rounded (to nearest, ties to even)
  *   from the certified balls to the target type: 53, 64 or 113 bits, printed
  *   as exact C hex-float literals.  When a ball straddles a rounding boundary
  *   the tableau is re-evaluated at higher precision; an entry given as a
- *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION) unless
- *   --allow-inexact asks for the decimal as written to be rounded.  An
+ *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION, with a
+ *   message naming the entry and what to do: more digits, an exact entry, or
+ *   --allow-inexact) unless --allow-inexact asks for the decimal as written to
+ *   be rounded: then one warning lists how many entries were rounded so.  An
  *   entry that is a ball around zero of radius below 2^-(bits+20) is emitted
- *   as an exact zero with a warning.
+ *   as an exact zero with a warning (one per entry).
  * - A tableau without At is a classical RK method: At = A, bt = b.
  * - NAME becomes a C identifier: characters outside [A-Za-z0-9_] become '_',
  *   a leading digit or underscore gets the prefix "m_", C keywords get the
@@ -60,15 +67,33 @@ enum { VIGEN_REAL_DOUBLE, VIGEN_REAL_LONG_DOUBLE, VIGEN_REAL_FLOAT128 };
 typedef struct {
     const char *name;        /* requested NAME (sanitised by the emitter) */
     int real;                /* VIGEN_REAL_* */
-    const char *input_label; /* how the input is named in the header (basename) */
+    const char *input_label; /* how the input is named in the header and in warnings
+                                (basename); a tableau made by the generator in this run
+                                (generated_now) is said to come from the spec of that name */
     int allow_inexact;       /* round the midpoint of a ball that straddles a rounding
                                 boundary (decimal entries with too few digits), with a
                                 warning, instead of refusing */
 } vigen_emit_options;
 
+/* Certified digits with which `vigen emit` generates a spec for a target
+ * type (VIGEN_REAL_*): 40 for double and long double, 60 for float128.  The
+ * emitter rounds the generated decimals, each a ball of relative radius at
+ * most 5 * 10^-digits; a ball of width w straddles a boundary between two
+ * neighbouring values of the target type (relative spacing 2^-52 .. 2^-53 for
+ * double, 2^-63 .. 2^-64 for long double, 2^-112 .. 2^-113 for float128) with
+ * probability about w over that spacing: 40 digits leave 10^-23 (double) and
+ * 10^-20 (long double) per entry; 40 digits would leave 10^-5 for float128,
+ * 60 leave 10^-25. */
+slong vigen_emit_spec_digits(int real);
+
 /* Renders the header and source for a loaded tableau (balls need not be
  * evaluated: the emitter evaluates at the precision it needs).  *h_text and
- * *c_text are heap strings; *ident receives the sanitised name. */
+ * *c_text are heap strings; *ident receives the sanitised name.  Warnings
+ * (vigen_warn, after success only): entries emitted as exact zeros, one per
+ * entry, and with allow_inexact one summary of the entries rounded as
+ * written.  VIGEN_E_PRECISION: an entry cannot be rounded correctly; the
+ * message names it (not the file: callers prefix the path) and says what to
+ * do. */
 int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
                       char **ident, vigen_error *err);
 

@@ -29,6 +29,8 @@
 #include <unistd.h>
 #include "check.h"
 #include "emit.h"
+#include "galerkin.h"
+#include "spec.h"
 #include "tableau.h"
 #include "testlib.h"
 
@@ -454,6 +456,115 @@ static void test_audit(void)
     vigen_strbuf_clear(&audit_text);
 }
 
+
+/* Entries with too few digits: the refusal names the entry and says what to
+ * do; --allow-inexact gives one summary warning, each entry at most once; a
+ * spec generated with vigen_emit_spec_digits digits is said so in the header. */
+static int count_of(const char *hay, const char *needle)
+{
+    int n = 0;
+    for (const char *p = hay; (p = strstr(p, needle)) != NULL; p += strlen(needle)) n++;
+    return n;
+}
+
+static void test_inexact(void)
+{
+    CHECK(vigen_emit_spec_digits(VIGEN_REAL_DOUBLE) == 40 && vigen_emit_spec_digits(VIGEN_REAL_LONG_DOUBLE) == 40 &&
+          vigen_emit_spec_digits(VIGEN_REAL_FLOAT128) == 60);
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_spec *spec = NULL;
+    vigen_tableau g;
+    if (vigen_spec_load(&spec, "tableaux/specs/gauss_legendre_s3.lua", NULL, &err) != VIGEN_OK) {
+        CHECK_MSG(0, "%s", err.message);
+        vigen_error_clear(&err);
+        return;
+    }
+    /* what `vigen generate` writes by default: 34 digits, too few for float128 */
+    CHECK(vigen_galerkin_generate(&g, spec, 34, &err) == VIGEN_OK);
+    char *path = vigen_strdup_printf("%s/gauss3_34.lua", tmpdir);
+    char *text = vigen_tableau_to_lua(&g);
+    CHECK(write_text(path, text));
+    free(text);
+    vigen_tableau_clear(&g);
+    vigen_tableau t;
+    if (vigen_tableau_load(&t, path, NULL, &err) != VIGEN_OK) {
+        CHECK_MSG(0, "%s", err.message);
+        vigen_error_clear(&err);
+        vigen_spec_free(spec);
+        free(path);
+        return;
+    }
+    vigen_emit_options opt = { "g3", VIGEN_REAL_DOUBLE, "gauss3_34.lua", 0 };
+    char *h = NULL, *c = NULL, *id = NULL;
+    vigen_strbuf_clear(&audit_text);
+    vigen_strbuf_init(&audit_text);
+    vigen_strbuf_append(&audit_text, "");
+    audit_count = 0;
+    vigen_warning_set_handler(audit_collect, NULL);
+    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK && audit_count == 0);
+    free(h); free(c); free(id);
+    opt.real = VIGEN_REAL_FLOAT128;
+    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_E_PRECISION && h == NULL && audit_count == 0);
+    const char *m = err.message ? err.message : "";
+    CHECK_MSG(strstr(m, "c[1] = 0.1127016653792583114820734600217600 is not known well enough") != NULL &&
+                  strstr(m, "113 bits (float128)") != NULL && strstr(m, "generated with 34 digits") != NULL &&
+                  strstr(m, "'vigen generate SPEC --digits 60'") != NULL && strstr(m, "emit the spec itself") != NULL &&
+                  strstr(m, "exactly") != NULL && strstr(m, "--allow-inexact") != NULL,
+              "advice for a 34-digit tableau as float128: %s", m);
+    vigen_error_clear(&err);
+    /* rounded as written: one warning for 24 entries (c, A, b, At; bt = b is
+     * not counted twice) and the 6 reciprocals 1/(c_j - c_m) */
+    opt.allow_inexact = 1;
+    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
+    CHECK_MSG(audit_count == 1, "%d warnings: %s", audit_count, audit_text.data);
+    CHECK_MSG(strstr(audit_text.data, "gauss3_34.lua: --allow-inexact: rounded 24 entries to float128 (113 bits)") != NULL &&
+                  strstr(audit_text.data, "(c[1], c[2], c[3], A[1][1], A[1][2] and 19 more; and 6 coefficients") != NULL &&
+                  strstr(audit_text.data, "only as good as these decimals") != NULL,
+              "summary: %s", audit_text.data);
+    CHECK(c && strstr(c, "--allow-inexact") != NULL);
+    free(h); free(c); free(id);
+    vigen_tableau_clear(&t);
+
+    /* a hand-transcribed 16-digit tableau for double: the same advice */
+    audit_count = 0;
+    vigen_strbuf_clear(&audit_text);
+    vigen_strbuf_init(&audit_text);
+    vigen_strbuf_append(&audit_text, "");
+    if (vigen_tableau_load(&t, "tableaux/published/blanes_moan_s6_4.lua", NULL, &err) == VIGEN_OK) {
+        vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0 };
+        CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_E_PRECISION);
+        m = err.message ? err.message : "";
+        CHECK_MSG(strstr(m, "c[1] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits") != NULL &&
+                      strstr(m, "give the entry exactly") != NULL && strstr(m, "40 or more significant digits") != NULL &&
+                      strstr(m, "--allow-inexact") != NULL,
+                  "advice for a 16-digit tableau: %s", m);
+        vigen_error_clear(&err);
+        bo.allow_inexact = 1;
+        CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_OK);
+        CHECK_MSG(audit_count == 1 && count_of(audit_text.data, "c[1]") == 1, "%d warnings: %s", audit_count,
+                  audit_text.data);
+        free(h); free(c); free(id);
+        vigen_tableau_clear(&t);
+    } else {
+        CHECK_MSG(0, "%s", err.message);
+    }
+    vigen_error_clear(&err);
+
+    /* a spec generated for the emitter: the header says from what */
+    CHECK(vigen_galerkin_generate(&g, spec, vigen_emit_spec_digits(VIGEN_REAL_FLOAT128), &err) == VIGEN_OK);
+    vigen_emit_options so = { "g3s", VIGEN_REAL_FLOAT128, "gauss_legendre_s3.lua", 0 };
+    audit_count = 0;
+    CHECK(vigen_emit_render(&g, &so, &h, &c, &id, &err) == VIGEN_OK && audit_count == 0);
+    CHECK(c && strstr(c, "Tableau generated from the spec gauss_legendre_s3.lua with 60 certified digits") != NULL);
+    free(h); free(c); free(id);
+    vigen_tableau_clear(&g);
+    vigen_warning_set_handler(NULL, NULL);
+    vigen_error_clear(&err);
+    vigen_spec_free(spec);
+    free(path);
+}
+
 int main(void)
 {
 #ifdef VIGEN_SOURCE_DIR
@@ -481,6 +592,7 @@ int main(void)
 
     test_names();
     test_audit();
+    test_inexact();
     test_rounding();
     test_golden("gauss2");
     test_golden("verlet");
