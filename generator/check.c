@@ -26,8 +26,9 @@ const char *vigen_check_usage =
     "\n"
     "A condition fails when its ball excludes 0 and holds when its ball contains 0:\n"
     "  - rounded decimal entries (\"0.2113\") stand for balls of half a unit in their last\n"
-    "    digit; a condition on them that contains 0 holds within the precision of the\n"
-    "    data (the report shows the largest such radius);\n"
+    "    digit; a condition on them holds within the precision of the data when its ball\n"
+    "    contains 0 with a radius at most 2^-10 of its terms (the report shows the largest\n"
+    "    such radius); a wider ball is undecided: the data are too short to decide;\n"
     "  - on exact expressions (\"1/4 - sqrt(3)/6\") a condition holds only when its ball\n"
     "    is tighter than 2^-(prec/2) of the size of its terms, with the same verdicts at\n"
     "    two successive precisions, the second of at least 1024 bits; the precision is\n"
@@ -38,6 +39,9 @@ const char *vigen_check_usage =
     "    |v| |v'| (D^k g)^2 < 1 with v' the condition on the conjugate tableau\n"
     "    (sqrt(d) -> -sqrt(d)); no second precision is then needed;\n"
     "  - anything else is reported undecided.\n"
+    "Verdicts that rest on holds within the precision of the data say so (JSON status\n"
+    "\"within_data\"); short decimals among long ones (\"0.5\" among 16-digit entries) are\n"
+    "named with the fraction to write if they are exact (\"1/2\").\n"
     "The starting precision covers the digits of every decimal and exact literal\n"
     "(10^-45 included) plus 64 bits, at least 128.\n"
     "\n"
@@ -47,8 +51,9 @@ const char *vigen_check_usage =
     "  --json           print one JSON object\n"
     "  --prec BITS      starting working precision (default: adequate to the entries)\n"
     "\n"
-    "Exit status: 0 consistent and every stated claim holds (and no entry differs from\n"
-    "FILE2), 1 something fails or cannot be decided, 2 unreadable input or usage error.\n";
+    "Exit status: 0 consistent and every stated claim holds (within the precision of\n"
+    "the data counts; the report says so) and no entry differs from FILE2, 1 something\n"
+    "fails or cannot be decided, 2 unreadable input or usage error.\n";
 
 #define DEFAULT_MAX_ORDER 8
 #define DEFAULT_MAX_PREC 4096
@@ -290,6 +295,9 @@ typedef struct {
     int section;                 /* VIGEN_CHECK_SECT_* of the decisions being made */
     vigen_check_holds *holds;    /* statistics per section (the report's) */
     slong n_undecided, n_undecided_exact, n_unconfirmed;
+    slong n_undecided_short;     /* undecided: rounded data too short (ball containing 0, too wide) */
+    int last_within;             /* the last decision: a hold within the precision of the data */
+    int last_short;              /* the last decision: undecided, the data too short */
     slong n_proved;              /* holds proved by the denominator bound */
     slong rat_k;                 /* the condition being decided: a sum of products of rat_k */
     ulong rat_g;                 /* entries, minus a constant with denominator rat_g (0: no bound) */
@@ -319,6 +327,8 @@ static void ctx_init(ctx_t *cx, const vigen_tableau *t, const exactness *ex, vig
     cx->section = VIGEN_CHECK_SECT_ROWSUM;
     cx->holds = holds;
     cx->n_undecided = cx->n_undecided_exact = cx->n_unconfirmed = 0;
+    cx->n_undecided_short = 0;
+    cx->last_within = cx->last_short = 0;
     cx->n_proved = 0;
     cx->rat_k = 0;
     cx->rat_g = 0;
@@ -423,19 +433,50 @@ static int proved_zero(const ctx_t *cx, const arb_t r)
  * radius is left out, so that a ball much wider than its terms shows it). */
 static void mid_mag(mag_t m, const arb_t x) { arf_get_mag(m, arb_midref(x)); }
 
+/* Rounded data: a ball containing 0 holds within the precision of the data
+ * only when its radius is at most 2^-VIGEN_CHECK_DATA_BITS = 2^-10 of the size
+ * of the terms it compares.  A wider ball says too little: "0.5" is 0.5 +/-
+ * 0.05, and with it a 2-stage tableau "satisfies" order-5 conditions that fail
+ * by a few per cent (b.c^4 = 7/36, not 1/5).  Why 2^-10 (about 0.1%):
+ *   - an entry with k significant digits has a relative radius of at most
+ *     5 10^-k: up to 5e-3 for k = 3 (above 2^-10, so 1- to 3-digit data are
+ *     not enough to decide alone), at most 5e-4 for k = 4;
+ *   - a condition of order n multiplies n entries, so its relative radius is
+ *     about n times theirs: for the 9- to 16-digit tables in the literature
+ *     (order <= 12) that is below 1e-7, four decades under the threshold,
+ *     which leaves room for cancellation among the terms;
+ *   - what a hold then says is precise: the exact value of the condition is
+ *     within 0.1% of its terms of 0 (the radius shown).
+ * On exact entries the rule is the tighter 2^-(prec/2) below. */
+static int data_ball_tight(const arb_t r, const mag_t scale)
+{
+    mag_t thr;
+    mag_init(thr);
+    mag_mul_2exp_si(thr, scale, -VIGEN_CHECK_DATA_BITS);
+    int tight = mag_cmp(arb_radref(r), thr) <= 0;
+    mag_clear(thr);
+    return tight;
+}
+
 /* The verdict on a ball r = left side - right side (see check.h).  exact: every
  * entry the condition involves is exact; scale: an upper bound of the size of
- * its terms (exact conditions hold only with radius <= 2^-(prec/2) scale). */
-static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale, int *unconfirmed, int *proved)
+ * its terms (exact conditions hold only with radius <= 2^-(prec/2) scale,
+ * conditions on rounded data only with radius <= 2^-10 scale; *too_short: the
+ * latter is undecided for that reason). */
+static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale, int *unconfirmed, int *proved,
+                   int *too_short)
 {
     *unconfirmed = 0;
     *proved = 0;
+    *too_short = 0;
     if (!arb_is_finite(r)) return UNDECIDED;
     if (!arb_contains_zero(r)) return FAILS;
     if (mag_is_zero(arb_radref(r))) return HOLDS;
-    /* rounded data: a ball wider than the terms it compares says nothing (a
-     * 1-digit tableau would "satisfy" every order condition): undecided */
-    if (!exact) return mag_cmp(arb_radref(r), scale) > 0 ? UNDECIDED : HOLDS;
+    if (!exact) {
+        if (data_ball_tight(r, scale)) return HOLDS;
+        *too_short = 1;
+        return UNDECIDED;
+    }
     if (proved_zero(cx, r)) {
         *proved = 1;
         return HOLDS;
@@ -453,23 +494,26 @@ static int verdict(const ctx_t *cx, const arb_t r, int exact, const mag_t scale,
 /* The verdict, with the bookkeeping of the refinement loop and the report. */
 static int decide(ctx_t *cx, const arb_t r, int exact, const mag_t scale)
 {
-    int unconfirmed, proved;
+    int unconfirmed, proved, too_short;
     conj_step(cx, r);
-    int v = verdict(cx, r, exact, scale, &unconfirmed, &proved);
+    int v = verdict(cx, r, exact, scale, &unconfirmed, &proved, &too_short);
     cx->hash = (cx->hash ^ (ulong)(v + 1)) * 1099511628211ULL;
     cx->n_unconfirmed += unconfirmed;
     cx->n_proved += proved;
+    cx->last_within = v == HOLDS && !exact;
+    cx->last_short = too_short;
     vigen_check_holds *h = cx->holds + cx->section;
     if (v == HOLDS) {
         if (exact) h->exact++;
         else {
             h->data++;
             mag_max(h->radius, h->radius, arb_radref(r));
-            h->wide += mag_cmp(arb_radref(r), scale) > 0;
         }
     } else if (v == UNDECIDED) {
         cx->n_undecided++;
         cx->n_undecided_exact += exact != 0;
+        cx->n_undecided_short += too_short;
+        h->too_short += too_short;
     }
     return v;
 }
@@ -578,6 +622,7 @@ typedef struct {
     int type;
     slong i, j;
     int status;
+    int too_short;               /* undecided because the rounded data are too short */
     arb_t r;                     /* left side - right side */
 } cond;
 
@@ -590,6 +635,7 @@ static void add_cond(cond *conds, slong *n, int type, slong i, slong j)
     c->i = i;
     c->j = j;
     c->status = HOLDS;
+    c->too_short = 0;
     arb_init(c->r);
 }
 
@@ -1202,6 +1248,7 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
         }
         cx->section = cond_is_rowsum(conds + k) ? VIGEN_CHECK_SECT_ROWSUM : VIGEN_CHECK_SECT_SYMPLECTIC;
         conds[k].status = cond_decide(cx, conds + k);
+        conds[k].too_short = cx->last_short;
         slong *fail = cond_is_rowsum(conds + k) ? &rep->row_fail : &rep->sym_fail;
         slong *und = cond_is_rowsum(conds + k) ? &rep->row_undecided : &rep->sym_undecided;
         slong *tot = cond_is_rowsum(conds + k) ? &rep->row_total : &rep->sym_total;
@@ -1211,6 +1258,7 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
     }
     rep->consistent = tri_of(rep->row_fail, rep->row_undecided);
     rep->symplectic = tri_of(rep->sym_fail, rep->sym_undecided);
+    rep->consistent_within_data = rep->consistent == VIGEN_CHECK_YES && rep->holds[VIGEN_CHECK_SECT_ROWSUM].data > 0;
     slong pair_fail = 0, pair_undecided = 0;
     for (slong k = 0; k < n; k++)
         if (conds[k].type == C_SYMP) {
@@ -1218,6 +1266,8 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
             pair_undecided += conds[k].status == UNDECIDED;
         }
     rep->symplectic_separable = tri_of(pair_fail, pair_undecided);
+    rep->symplectic_within_data = (rep->symplectic == VIGEN_CHECK_YES || rep->symplectic_separable == VIGEN_CHECK_YES) &&
+                                  rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].data > 0;
 
     /* Diagnosis: over everything; then without bt = b (a splitting method
      * written as a PRK pair has bt != b by design); then over the row sums
@@ -1310,7 +1360,9 @@ static void check_rows_and_symplecticity(vigen_check_report *rep, ctx_t *cx, int
         slong digits = digits_to_separate(p->value, p->expected, cx->prec);
         char *v = ball_str(p->value, digits), *e = ball_str(p->expected, digits);
         char *d = ball_str(c->r, 6);
-        const char *verdict = p->undecided ? "undecided at this precision: " : "";
+        const char *verdict = !p->undecided ? ""
+                              : c->too_short ? "undecided, the data are too short to decide: "
+                                             : "undecided at this precision: ";
         /* "defect 0.0100" or "defect in [0.00500, 0.0150]": the reader sees whether it excludes 0 */
         const char *in = d[0] == '[' ? "in " : "";
         switch (c->type) {
@@ -1371,13 +1423,21 @@ static void orders_reset(vigen_check_orders *o)
     memset(o->hold, 0, sizeof(o->hold));
     memset(o->fail, 0, sizeof(o->fail));
     memset(o->undecided, 0, sizeof(o->undecided));
+    memset(o->hold_data, 0, sizeof(o->hold_data));
+    memset(o->undecided_short, 0, sizeof(o->undecided_short));
 }
 
-static void orders_record(vigen_check_orders *o, int n, int status, const vigen_treeset *ts, int colour,
+/* data: for a hold, it holds within the precision of the data; for an
+ * undecided condition, the data are too short to decide it. */
+static void orders_record(vigen_check_orders *o, int n, int status, int data, const vigen_treeset *ts, int colour,
                           const slong *ids, int k, const arb_t value, const arb_t expected)
 {
     o->count[n]++;
-    if (status == HOLDS) { o->hold[n]++; return; }
+    if (status == HOLDS) {
+        o->hold[n]++;
+        o->hold_data[n] += data != 0;
+        return;
+    }
     vigen_strbuf sb;
     if (status == FAILS) {
         o->fail[n]++;
@@ -1390,6 +1450,7 @@ static void orders_record(vigen_check_orders *o, int n, int status, const vigen_
         arb_set(o->fail_expected, expected);
     } else {
         o->undecided[n]++;
+        o->undecided_short[n] += data != 0;
         if (o->undecided_order) return;
         o->undecided_order = n;
         vigen_strbuf_init(&sb);
@@ -1414,6 +1475,10 @@ static void orders_finish(vigen_check_orders *o, int P)
         o->level.capped = 0;
         o->level.undecided = o->fail_order != bad;
     }
+    /* the level rests on every condition up to it */
+    o->level.within_data = 0;
+    for (int n = 1; n <= o->level.value && n <= VIGEN_TREE_MAX_ORDER; n++) o->level.within_data |= o->hold_data[n] > 0;
+    o->level.too_short = o->level.undecided && o->undecided[bad] > 0 && o->undecided_short[bad] == o->undecided[bad];
 }
 
 /* Every order condition of order 1..P.  Phi(F) of a forest F is the
@@ -1497,12 +1562,13 @@ static int check_orders(vigen_check_report *rep, ctx_t *cx, int P, vigen_error *
                 int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
                 ctx_shape(cx, n, gamma, n, it.index, c);   /* b Phi has n factors; 1/gamma */
                 int st = decide2(cx, r, exact, val[c], inv);
-                orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, &ts, c, ids, k, val[c], inv);
+                int data = st == HOLDS ? cx->last_within : cx->last_short;
+                orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, data, &ts, c, ids, k, val[c], inv);
                 if (flags & VIGEN_TREE_SEPARABLE)
-                    orders_record(&rep->orders[VIGEN_CHECK_SEPARABLE], n, st, &ts, c, ids, k, val[c], inv);
+                    orders_record(&rep->orders[VIGEN_CHECK_SEPARABLE], n, st, data, &ts, c, ids, k, val[c], inv);
                 if (flags & VIGEN_TREE_MONO)
                     orders_record(&rep->orders[c == VIGEN_TREE_BLACK ? VIGEN_CHECK_A_ALONE : VIGEN_CHECK_AT_ALONE],
-                                  n, st, &ts, c, ids, k, val[c], inv);
+                                  n, st, data, &ts, c, ids, k, val[c], inv);
             }
             arb_clear(val[0]);
             arb_clear(val[1]);
@@ -1536,7 +1602,9 @@ typedef struct {
     const arb_mat_struct *A;
     arb_srcptr b, c;
     arb_ptr cp;                  /* cp[k*s + i] = c_i^k, k = 0..cap */
-    int exact;                   /* every entry of (c, A, b) of the part is exact */
+    int exact;                   /* every entry of (c, A, b) of the part is exact (D) */
+    int exact_B;                 /* ... of (c, b) (B) */
+    int exact_C;                 /* ... of (c, A) (C) */
     int part;                    /* 0: (c, A, b), 1: (ct, At, bt) */
 } part_t;
 
@@ -1590,7 +1658,7 @@ static int assumption_B(part_t *p, int k)
     for (slong i = 0; i < s; i++) mag_addmul3(m, p->b + i, p->cp + (k - 1) * s + i, NULL);
     mag_add_arb(m, q);
     ctx_shape(p->cx, k, (ulong)k, 3 * p->part, k, 0);
-    int st = decide(p->cx, r, p->exact, m);
+    int st = decide(p->cx, r, p->exact_B, m);
     arb_clear(r);
     arb_clear(q);
     mag_clear(m);
@@ -1615,7 +1683,7 @@ static int assumption_C(part_t *p, int k)
         for (slong j = 0; j < s; j++) mag_addmul3(m, arb_mat_entry(p->A, i, j), p->cp + (k - 1) * s + j, NULL);
         mag_add_arb(m, q);
         ctx_shape(p->cx, k, (ulong)k, 3 * p->part + 1, k, i);
-        st = worst_status(st, decide(p->cx, r, p->exact, m));
+        st = worst_status(st, decide(p->cx, r, p->exact_C, m));
     }
     arb_clear(r);
     arb_clear(q);
@@ -1663,17 +1731,34 @@ static int assumption_D(part_t *p, int k)
     return st;
 }
 
-static vigen_check_level level_of(part_t *p, int (*fn)(part_t *, int), int cap)
+/* Bits 0 .. k-1 of a mask of levels (bit k-1 is level k). */
+static unsigned long long levels_upto(int k)
 {
-    vigen_check_level L = {cap, 1, 0};
+    return k >= 64 ? ~0ULL : k <= 0 ? 0ULL : (1ULL << k) - 1;
+}
+
+/* The level of one assumption; *data: bit k-1 set when level k holds with
+ * some condition within the precision of the data (cap <= 64). */
+static vigen_check_level level_of(part_t *p, int (*fn)(part_t *, int), int cap, unsigned long long *data)
+{
+    vigen_check_level L = {cap, 1, 0, 0, 0};
+    const vigen_check_holds *h = p->cx->holds + p->cx->section;
+    *data = 0;
     for (int k = 1; k <= cap; k++) {
+        slong d0 = h->data, u0 = p->cx->n_undecided, s0 = p->cx->n_undecided_short;
         int st = fn(p, k);
-        if (st == HOLDS) continue;
+        if (st == HOLDS) {
+            if (h->data > d0) *data |= 1ULL << (k - 1);
+            continue;
+        }
         L.value = k - 1;
         L.capped = 0;
         L.undecided = st == UNDECIDED;
+        slong u = p->cx->n_undecided - u0, sh = p->cx->n_undecided_short - s0;
+        L.too_short = L.undecided && u > 0 && sh == u;
         break;
     }
+    L.within_data = (*data & levels_upto(L.value)) != 0;
     return L;
 }
 
@@ -1690,6 +1775,19 @@ static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
         p.cx = cx;
         p.part = part;
         p.exact = cx->ex->part_c[part];
+        /* B(k) involves (c, b) only and C(k) (c, A) only: exact when those are */
+        {
+            const exactness *x = cx->ex;
+            const unsigned char *M = part ? x->At : x->A, *w = part ? x->bt : x->b, *cc = part ? x->ct : x->c;
+            int ec = 1, eb = 1, eA = 1;
+            for (slong i = 0; i < s; i++) {
+                ec &= cc[i];
+                eb &= w[i];
+            }
+            for (slong k = 0; k < s * s; k++) eA &= M[k];
+            p.exact_B = ec && eb;
+            p.exact_C = ec && eA;
+        }
         p.A = part ? cx->At : cx->A;
         p.b = part ? cx->bt : cx->b;
         p.c = part ? cx->ct : cx->c;
@@ -1697,9 +1795,10 @@ static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
         for (slong i = 0; i < s; i++) arb_one(p.cp + i);
         for (int k = 1; k <= cap; k++)
             for (slong i = 0; i < s; i++) arb_mul(p.cp + k * s + i, p.cp + (k - 1) * s + i, p.c + i, cx->prec);
-        rep->B[part] = level_of(&p, assumption_B, cap);
-        rep->C[part] = level_of(&p, assumption_C, cap);
-        rep->D[part] = level_of(&p, assumption_D, cap);
+        unsigned long long dB, dC, dD;
+        rep->B[part] = level_of(&p, assumption_B, cap, &dB);
+        rep->C[part] = level_of(&p, assumption_C, cap, &dC);
+        rep->D[part] = level_of(&p, assumption_D, cap, &dD);
         /* stage order: C(q) and B(q) */
         vigen_check_level B = rep->B[part], C = rep->C[part], S;
         S.value = B.value < C.value ? B.value : C.value;
@@ -1707,6 +1806,10 @@ static void check_simplifying(vigen_check_report *rep, ctx_t *cx)
         int fails_next = (B.value == S.value && !B.undecided && !B.capped) ||
                          (C.value == S.value && !C.undecided && !C.capped);
         S.undecided = !S.capped && !fails_next;
+        S.within_data = ((dB | dC) & levels_upto(S.value)) != 0;
+        /* undecided above: every assumption undecided at S.value + 1 is so for short data */
+        S.too_short = S.undecided && (B.value != S.value || !B.undecided || B.too_short) &&
+                      (C.value != S.value || !C.undecided || C.too_short);
         rep->stage_order[part] = S;
         _arb_vec_clear(p.cp, (cap + 1) * s);
     }
@@ -1722,31 +1825,55 @@ static int level_is(const vigen_check_level *L, int p)
     return p == L->value ? 2 : 0;
 }
 
+/* With level_is(L, claim) = 0: is "the order is claim" certainly false?  Yes
+ * when a condition of order <= claim fails (level below claim), or when every
+ * condition of order claim + 1 holds exactly; not when some of these hold
+ * only within the precision of the data (the exact values may fail them). */
+static int order_refutes(const vigen_check_orders *o, int claim)
+{
+    if (o->level.value < claim) return 1;
+    return claim + 1 > VIGEN_TREE_MAX_ORDER || o->hold_data[claim + 1] == 0;
+}
+
 static void check_claims(vigen_check_report *rep)
 {
     if (rep->claim_order >= 0) {
-        const vigen_check_level *g = &rep->orders[VIGEN_CHECK_GENERAL].level;
-        const vigen_check_level *sp = &rep->orders[VIGEN_CHECK_SEPARABLE].level;
+        const vigen_check_orders *go = &rep->orders[VIGEN_CHECK_GENERAL], *so = &rep->orders[VIGEN_CHECK_SEPARABLE];
+        const vigen_check_level *g = &go->level;
+        const vigen_check_level *sp = &so->level;
         int claim = rep->claim_order, st;
+        int data_above = 0;      /* undecided: order claim + 1 holds only within the data's precision */
         /* order = p means the order is p: every condition up to p holds and
          * one of order p + 1 fails (for general H, or for separable H: the
          * separable order is at least the general one) */
         int ig = level_is(g, claim), is = level_is(sp, claim);
         rep->claim_order_separable = 0;
         rep->claim_order_beyond = 0;
-        if (ig == 2) st = VIGEN_CHECK_YES;
-        else if (is == 2) { st = VIGEN_CHECK_YES; rep->claim_order_separable = 1; }
-        else if (ig || is) {
+        rep->claim_order_within_data = 0;
+        rep->claim_order_too_short = 0;
+        if (ig == 2) {
+            st = VIGEN_CHECK_YES;
+            rep->claim_order_within_data = g->within_data;
+        } else if (is == 2) {
+            st = VIGEN_CHECK_YES;
+            rep->claim_order_separable = 1;
+            rep->claim_order_within_data = sp->within_data;
+        } else if (ig || is) {
             st = VIGEN_CHECK_UNDECIDED;
             /* possible only because nothing up to max_order fails and order
              * claim + 1 is beyond what can be evaluated */
             rep->claim_order_beyond = (g->capped || sp->capped) && claim + 1 > rep->max_order &&
                                       !(g->undecided || sp->undecided);
-        } else if (rep->rounded_entries && (g->value > claim || sp->value > claim)) {
+            /* or because the conditions that decide are undecided for short data */
+            rep->claim_order_too_short = !rep->claim_order_beyond && (!ig || (g->undecided && g->too_short)) &&
+                                         (!is || (sp->undecided && sp->too_short)) &&
+                                         ((ig && g->undecided) || (is && sp->undecided));
+        } else if (!(order_refutes(go, claim) && order_refutes(so, claim))) {
             /* the order looks higher than claimed only because conditions of
              * order claim + 1 hold within the precision of rounded data: that
              * does not refute the claim (the exact values may fail them) */
             st = VIGEN_CHECK_UNDECIDED;
+            data_above = 1;
         } else st = VIGEN_CHECK_NO;
         rep->claim_order_status = st;
         if (st != VIGEN_CHECK_YES) {
@@ -1761,6 +1888,18 @@ static void check_claims(vigen_check_report *rep)
                     "order is exactly %d needs the conditions of order %d (at most %d supported%s)",
                     claim, rep->max_order, claim, claim + 1, VIGEN_TREE_MAX_ORDER,
                     rep->max_order < VIGEN_TREE_MAX_ORDER ? "; --max-order 12 looks further for a lower order" : "");
+            else if (data_above) {
+                char *r = mag_str(rep->holds[VIGEN_CHECK_SECT_ORDER].radius);
+                p->message = vigen_strdup_printf(
+                    "claim order = %d: undecided: the conditions of order %d hold within the precision of the data "
+                    "(radius <= %s), so the order looks higher, but their exact values may fail them",
+                    claim, claim + 1, r);
+                free(r);
+            } else if (rep->claim_order_too_short)
+                p->message = vigen_strdup_printf("claim order = %d: undecided, the data are too short to decide "
+                                                 "(order >= %d; the conditions of order %d that are undecided have "
+                                                 "balls containing 0 wider than 2^-%d of their terms)",
+                                                 claim, g->value, g->value + 1, VIGEN_CHECK_DATA_BITS);
             else if (st == VIGEN_CHECK_UNDECIDED)
                 p->message = vigen_strdup_printf("claim order = %d: undecided at this precision (order >= %d, "
                                                  "order %d undecided)", claim, g->value, g->value + 1);
@@ -1788,6 +1927,7 @@ static void check_claims(vigen_check_report *rep)
         } else st = rep->symplectic == VIGEN_CHECK_UNDECIDED ? VIGEN_CHECK_UNDECIDED
                     : rep->symplectic == VIGEN_CHECK_NO ? VIGEN_CHECK_YES : VIGEN_CHECK_NO;
         rep->claim_symplectic_status = st;
+        rep->claim_symplectic_within_data = st == VIGEN_CHECK_YES && want && rep->symplectic_within_data;
         if (st != VIGEN_CHECK_YES) {
             vigen_check_problem *p = problem_new(rep, VIGEN_PROBLEM_CLAIM);
             p->claim = "symplectic";
@@ -1795,9 +1935,11 @@ static void check_claims(vigen_check_report *rep)
             p->value_json = vigen_strdup(rep->symplectic == VIGEN_CHECK_YES ? "true"
                                          : rep->symplectic == VIGEN_CHECK_NO ? "false" : "null");
             p->expected_json = vigen_strdup(want ? "true" : "false");
+            int short_data = rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0;
             p->message = st == VIGEN_CHECK_UNDECIDED
-                             ? vigen_strdup_printf("claim symplectic = %s: undecided at this precision",
-                                                   want ? "true" : "false")
+                             ? vigen_strdup_printf("claim symplectic = %s: undecided%s", want ? "true" : "false",
+                                                   short_data ? ", the data are too short to decide"
+                                                              : " at this precision")
                              : vigen_strdup_printf("claim symplectic = %s is false", want ? "true" : "false");
         }
     }
@@ -1946,9 +2088,25 @@ void vigen_check_report_init(vigen_check_report *rep)
     rep->claim_symplectic = -1;
 }
 
+static void notes_clear(vigen_check_report *rep)
+{
+    for (slong k = 0; k < rep->nnotes; k++) {
+        vigen_check_note *n = rep->notes + k;
+        free(n->entry);
+        free(n->text);
+        free(n->radius);
+        free(n->fraction);
+        free(n->message);
+    }
+    free(rep->notes);
+    rep->notes = NULL;
+    rep->nnotes = 0;
+}
+
 void vigen_check_report_clear(vigen_check_report *rep)
 {
     problems_clear(rep);
+    notes_clear(rep);
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
         free(rep->orders[f].fail_tree);
         free(rep->orders[f].undecided_tree);
@@ -2056,6 +2214,72 @@ static double entries_digits(const vigen_tableau *t)
     return d;
 }
 
+/* Short decimals that look exact: a rounded decimal with at most
+ * VIGEN_CHECK_NOTE_SHORT_DIGITS significant digits in a file whose longest
+ * decimal has at least VIGEN_CHECK_NOTE_LONG_DIGITS.  Three digits is where
+ * the rule for rounded data stops deciding on an entry alone (5 10^-3 of
+ * itself at most, above 2^-10); ten digits says the file meant to be precise,
+ * so a "0.5" among such entries is most likely the exact 1/2 typed as a
+ * decimal.  Zeros written with an exponent ("0e-50", a certified tiny value
+ * of a generated file) are meant as balls and not named. */
+static void collect_notes(vigen_check_report *rep, const vigen_tableau *t)
+{
+    notes_clear(rep);
+    if (!has_texts(t)) return;
+    slong s = t->s;
+    int has_At = t->has_At, has_bt = t->has_At && t->has_bt, has_ct = t->has_At && t->has_ct;
+    /* in the order of the file */
+    char **lists[6] = {t->c_text, t->A_text, t->b_text, has_At ? t->At_text : NULL, has_ct ? t->ct_text : NULL,
+                       has_bt ? t->bt_text : NULL};
+    const char *names[6] = {"c", "A", "b", "At", "ct", "bt"};
+    slong lens[6] = {s, s * s, s, s * s, s, s};
+    int matrix[6] = {0, 1, 0, 1, 0, 0};
+    slong longest = 0;
+    for (int l = 0; l < 6; l++)
+        for (slong k = 0; lists[l] && k < lens[l]; k++)
+            if (lists[l][k] && vigen_decimal_is_rounded(lists[l][k])) {
+                slong d = vigen_decimal_significant_digits(lists[l][k]);
+                if (d > longest) longest = d;
+            }
+    if (longest < VIGEN_CHECK_NOTE_LONG_DIGITS) return;
+    slong alloc = 0;
+    for (int l = 0; l < 6; l++)
+        for (slong k = 0; lists[l] && k < lens[l]; k++) {
+            const char *x = lists[l][k];
+            if (x == NULL || !vigen_decimal_is_rounded(x)) continue;
+            slong d = vigen_decimal_significant_digits(x);
+            if (d > VIGEN_CHECK_NOTE_SHORT_DIGITS) continue;
+            char *fraction = vigen_decimal_exact_fraction(x), *radius = vigen_decimal_half_unit(x);
+            if (fraction == NULL || radius == NULL ||
+                (strcmp(fraction, "0") == 0 && (strchr(x, 'e') != NULL || strchr(x, 'E') != NULL))) {
+                free(fraction);
+                free(radius);
+                continue;
+            }
+            if (rep->nnotes == alloc) {
+                alloc = alloc ? 2 * alloc : 8;
+                rep->notes = realloc(rep->notes, sizeof(vigen_check_note) * (size_t)alloc);
+            }
+            vigen_check_note *n = rep->notes + rep->nnotes++;
+            n->entry = matrix[l] ? vigen_strdup_printf("%s[%ld][%ld]", names[l], (long)(k / s + 1), (long)(k % s + 1))
+                                 : vigen_strdup_printf("%s[%ld]", names[l], (long)(k + 1));
+            /* the text without surrounding blanks */
+            const char *a = x;
+            while (*a == ' ' || *a == '\t') a++;
+            size_t len = strlen(a);
+            while (len > 0 && (a[len - 1] == ' ' || a[len - 1] == '\t')) len--;
+            n->text = malloc(len + 1);
+            memcpy(n->text, a, len);
+            n->text[len] = '\0';
+            n->digits = d;
+            n->radius = radius;
+            n->fraction = fraction;
+            n->message = vigen_strdup_printf("%s = \"%s\" is read as %s +/- %s (%ld significant digit%s); if it is "
+                                             "exact, write \"%s\"", n->entry, n->text, n->text, radius, (long)d,
+                                             d == 1 ? "" : "s", fraction);
+        }
+}
+
 static slong adequate_prec(const vigen_tableau *t)
 {
     double d = entries_digits(t);
@@ -2090,7 +2314,7 @@ static void report_reset_round(vigen_check_report *rep)
     rep->against_differences = 0;
     rep->against_undecided = 0;
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {
-        rep->holds[k].exact = rep->holds[k].data = rep->holds[k].wide = 0;
+        rep->holds[k].exact = rep->holds[k].data = rep->holds[k].too_short = 0;
         mag_zero(rep->holds[k].radius);
     }
 }
@@ -2208,6 +2432,12 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     if (against) exactness_init(&ex_against, against);
     rep->rounded_entries = ex.any_rounded;
     rep->exact_entries = ex.any_exact;
+    collect_notes(rep, t);
+    /* the precision at which the data's radii, not the arithmetic, make the
+     * balls of conditions on rounded entries: only there is a ball too wide
+     * for the rule of rounded data a verdict on the data */
+    slong data_prec = adequate_prec(t);
+    if (against && adequate_prec(against) > data_prec) data_prec = adequate_prec(against);
     flint_free(rep->rational_denominator);
     flint_free(rep->quadratic_d);
     flint_free(rep->quadratic_denominator);
@@ -2268,9 +2498,17 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
          * at min_confirm bits or more */
         int confirmed = cx.n_unconfirmed == 0 || (rep->rounds > 1 && cx.hash == last_hash && prec >= min_confirm);
         rep->undecided_left = cx.n_undecided;
+        rep->undecided_short = cx.n_undecided_short;
         if (cx.n_undecided == 0 && confirmed) break;
         const char *stop = NULL;
-        if (!refinable) stop = "the tableau has no entry texts to re-evaluate";
+        /* every undecided condition is on rounded data whose radii make its
+         * ball too wide: more working precision cannot narrow them */
+        int all_short = cx.n_undecided_exact == 0 && cx.n_undecided > 0 && cx.n_undecided == cx.n_undecided_short;
+        if (all_short && confirmed && (prec >= data_prec || !refinable || 2 * prec > cap))
+            stop = "the data are too short to decide: these conditions involve rounded entries, and their balls "
+                   "contain 0 but are wider than 2^-10 of their terms (more working precision cannot narrow the "
+                   "radii of the data; exact entries, such as \"1/2\" for \"0.5\", or more digits can)";
+        else if (!refinable) stop = "the tableau has no entry texts to re-evaluate";
         else if (2 * prec > cap) stop = "the precision cap was reached";
         else if (cx.n_undecided_exact == 0 && cx.n_undecided > 0 && rep->rounds > 1 &&
                  cx.n_undecided >= last_undecided && confirmed)
@@ -2284,6 +2522,7 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
                 rc = check_round(rep, &cx, t, against, against ? &ex_against : NULL, P, err);
                 if (rc != VIGEN_OK) break;
                 rep->undecided_left = cx.n_undecided;
+                rep->undecided_short = cx.n_undecided_short;
             }
             rep->undecided_reason = stop;
             break;
@@ -2313,11 +2552,17 @@ static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",
     "(ct, At, bt) alone as an RK method"};
 
+static const char *const within_words = "within the precision of the data";
+
 static void print_level_words(FILE *out, const vigen_check_level *L)
 {
     if (L->capped) fprintf(out, "%d or more", L->value);
-    else if (L->undecided) fprintf(out, "at least %d (order %d undecided at this precision)", L->value, L->value + 1);
+    else if (L->undecided) fprintf(out, "at least %d", L->value);
     else fprintf(out, "%d", L->value);
+    if (L->within_data) fprintf(out, " %s", within_words);
+    if (!L->capped && L->undecided)
+        fprintf(out, " (order %d undecided%s)", L->value + 1,
+                L->too_short ? ": the data are too short to decide" : " at this precision");
 }
 
 static void print_ball(FILE *out, const arb_t x, slong digits)
@@ -2356,22 +2601,32 @@ static const char *tri_word(int v, const char *yes, const char *no)
     return v == VIGEN_CHECK_YES ? yes : v == VIGEN_CHECK_NO ? no : "undecided at this precision";
 }
 
+/* tri_word, saying why when undecided for short data */
+static const char *tri_word_data(int v, const char *yes, const char *no, int too_short)
+{
+    if (v == VIGEN_CHECK_UNDECIDED && too_short) return "undecided (the data are too short to decide)";
+    return tri_word(v, yes, no);
+}
+
 /* " within the precision of the data (radius <= X)" when some holding
  * condition of the section was decided on rounded entries. */
 static void print_within(FILE *out, const vigen_check_holds *h)
 {
     if (h->data == 0) return;
     char *r = mag_str(h->radius);
-    fprintf(out, " within the precision of the data (radius <= %s%s)", r,
-            h->wide ? "; some balls are wider than their terms" : "");
+    fprintf(out, " %s (radius <= %s)", within_words, r);
     free(r);
 }
 
-static void print_assumption(FILE *out, const char *name, const vigen_check_level *L)
+/* B(4), B(4)* when it holds within the precision of the data (returns 1 then) */
+static int print_assumption(FILE *out, const char *name, const vigen_check_level *L)
 {
     if (L->capped) fprintf(out, "%s(>=%d)", name, L->value);
-    else if (L->undecided) fprintf(out, "%s(%d, %d undecided)", name, L->value, L->value + 1);
+    else if (L->undecided) fprintf(out, "%s(%d, %d undecided%s)", name, L->value, L->value + 1,
+                                   L->too_short ? ": data too short" : "");
     else fprintf(out, "%s(%d)", name, L->value);
+    if (L->within_data) fputc('*', out);
+    return L->within_data;
 }
 
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
@@ -2407,23 +2662,30 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                 rep->quadratic_d, rep->quadratic_d, rep->quadratic_d);
     else if (!rep->exact_entries)
         fputs("  a condition fails when its ball excludes 0 and holds, within the precision of the data, when it\n"
-              "  contains 0\n", out);
+              "  contains 0 with a radius at most 2^-10 of its terms; a wider ball is undecided (the data are too\n"
+              "  short to decide)\n", out);
     else if (!rep->rounded_entries)
         fputs("  a condition fails when its ball excludes 0; it holds when its ball contains 0 with a radius below\n"
               "  2^-(prec/2) of its terms, with the same verdicts at two precisions; otherwise it is undecided\n", out);
     else
         fputs("  a condition fails when its ball excludes 0 and holds when it contains 0: within the precision of\n"
-              "  the data when it involves a rounded entry; on exact entries only with a radius below 2^-(prec/2)\n"
-              "  of its terms and the same verdicts at two precisions; otherwise it is undecided\n", out);
+              "  the data when it involves a rounded entry and its radius is at most 2^-10 of its terms; on exact\n"
+              "  entries only with a radius below 2^-(prec/2) of its terms and the same verdicts at two precisions;\n"
+              "  otherwise it is undecided\n", out);
+    for (slong k = 0; k < rep->nnotes && k < 10; k++) fprintf(out, "  note: %s\n", rep->notes[k].message);
+    if (rep->nnotes > 10)
+        fprintf(out, "  note: ... and %ld more short decimals (all of them with --json)\n", (long)(rep->nnotes - 10));
 
-    fprintf(out, "row sums      %s", tri_word(rep->consistent, "hold", "FAIL"));
+    fprintf(out, "row sums      %s", tri_word_data(rep->consistent, "hold", "FAIL",
+                                                  rep->holds[VIGEN_CHECK_SECT_ROWSUM].too_short > 0));
     if (rep->consistent == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_ROWSUM]);
     fprintf(out, " (%ld conditions: c_i = sum_j a_ij%s, sum b = 1", (long)rep->row_total,
             rep->has_ct ? ", ct_i = sum_j at_ij" : "");
     if (rep->row_fail) fprintf(out, "; %ld fail", (long)rep->row_fail);
     if (rep->row_undecided) fprintf(out, "; %ld undecided", (long)rep->row_undecided);
     fputs(")\n", out);
-    fprintf(out, "symplectic    %s", tri_word(rep->symplectic, "yes", "no"));
+    fprintf(out, "symplectic    %s", tri_word_data(rep->symplectic, "yes", "no",
+                                                  rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0));
     if (rep->symplectic == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC]);
     fprintf(out, " (%ld condition%s: %sb_i %s_ij + b_j a_ji - b_i b_j = 0", (long)rep->sym_total,
             rep->sym_total == 1 ? "" : "s", rep->has_bt ? "bt = b, " : "", rep->has_At ? "at" : "a");
@@ -2432,7 +2694,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     fputs(")\n", out);
     if (rep->has_bt && rep->symplectic != VIGEN_CHECK_YES)
         fprintf(out, "              for separable H (b_i at_ij + bt_j a_ji - b_i bt_j = 0 suffices): %s\n",
-                tri_word(rep->symplectic_separable, "yes", "no"));
+                tri_word_data(rep->symplectic_separable, "yes", "no",
+                              rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0));
 
     const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
     fputs("order         ", out);
@@ -2443,11 +2706,12 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         char *r = mag_str(rep->holds[VIGEN_CHECK_SECT_ORDER].radius);
         fprintf(out, "              (%ld conditions hold within the precision of the data: radius <= %s)\n",
                 (long)rep->holds[VIGEN_CHECK_SECT_ORDER].data, r);
-        if (rep->holds[VIGEN_CHECK_SECT_ORDER].wide)
-            fprintf(out, "              (%ld of them have balls wider than their terms: the data hardly determine "
-                         "them)\n", (long)rep->holds[VIGEN_CHECK_SECT_ORDER].wide);
         free(r);
     }
+    if (rep->holds[VIGEN_CHECK_SECT_ORDER].too_short > 0)
+        fprintf(out, "              (%ld conditions undecided: the data are too short to decide, their balls contain 0 "
+                     "but are wider than 2^-%d of their terms)\n",
+                (long)rep->holds[VIGEN_CHECK_SECT_ORDER].too_short, VIGEN_CHECK_DATA_BITS);
 
     fputs("  order  conditions   hold   fail  undecided |  separable     A alone    At alone\n", out);
     for (int n = 1; n <= g->evaluated_to; n++) {
@@ -2460,7 +2724,9 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         }
         fputc('\n', out);
     }
-    if (g->evaluated_to < rep->max_order)
+    if (g->evaluated_to + 1 == rep->max_order)
+        fprintf(out, "  (order %d not evaluated: every family already fails)\n", rep->max_order);
+    else if (g->evaluated_to < rep->max_order)
         fprintf(out, "  (orders %d..%d not evaluated: every family already fails)\n", g->evaluated_to + 1,
                 rep->max_order);
     fputs("  (x/y: conditions holding / conditions of that family)\n", out);
@@ -2474,7 +2740,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "%s: ", family_title[f]);
         print_level_words(out, &o->level);
         if (f == VIGEN_CHECK_SEPARABLE && o->level.value == g->level.value && o->level.capped == g->level.capped &&
-            o->level.undecided == g->level.undecided) {
+            o->level.undecided == g->level.undecided && o->level.within_data == g->level.within_data &&
+            o->level.too_short == g->level.too_short) {
             fputs(" (same)\n", out);
             continue;
         }
@@ -2486,31 +2753,45 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     }
 
     fputs("simplifying assumptions\n", out);
+    int starred = 0;
     for (int part = 0; part < (rep->has_At ? 2 : 1); part++) {
         fprintf(out, "  %-13s ", part ? "(ct, At, bt):" : "(c, A, b):");
-        print_assumption(out, "B", &rep->B[part]);
+        starred |= print_assumption(out, "B", &rep->B[part]);
         fputc(' ', out);
-        print_assumption(out, "C", &rep->C[part]);
+        starred |= print_assumption(out, "C", &rep->C[part]);
         fputc(' ', out);
-        print_assumption(out, "D", &rep->D[part]);
+        starred |= print_assumption(out, "D", &rep->D[part]);
         fputs(", stage order ", out);
         const vigen_check_level *S = &rep->stage_order[part];
         if (S->capped) fprintf(out, ">= %d", S->value);
-        else fprintf(out, "%d%s", S->value, S->undecided ? " (undecided above)" : "");
+        else fprintf(out, "%d", S->value);
+        if (S->within_data) fputc('*', out);
+        starred |= S->within_data;
+        if (!S->capped && S->undecided) fputs(S->too_short ? " (undecided above: data too short)" : " (undecided above)", out);
         fputc('\n', out);
     }
     if (!rep->has_At) fputs("  (ct, At, bt):  same (At = A)\n", out);
+    if (starred) {
+        char *r = mag_str(rep->holds[VIGEN_CHECK_SECT_SIMPLIFYING].radius);
+        fprintf(out, "  (*: holds %s, radius <= %s)\n", within_words, r);
+        free(r);
+    }
 
     if (rep->claim_order >= 0 || rep->claim_symplectic >= 0) {
         fputs("claims       ", out);
         if (rep->claim_order >= 0)
-            fprintf(out, " order = %d: %s%s;", rep->claim_order,
+            fprintf(out, " order = %d: %s%s%s%s;", rep->claim_order,
                     rep->claim_order_beyond ? "undecided (beyond the orders that can be evaluated)"
-                                            : tri_word(rep->claim_order_status, "holds", "FALSE"),
+                                            : tri_word_data(rep->claim_order_status, "holds", "FALSE",
+                                                            rep->claim_order_too_short),
+                    rep->claim_order_within_data ? " " : "", rep->claim_order_within_data ? within_words : "",
                     rep->claim_order_separable ? " (for separable H)" : "");
         if (rep->claim_symplectic >= 0)
-            fprintf(out, " symplectic = %s: %s%s;", rep->claim_symplectic ? "true" : "false",
-                    tri_word(rep->claim_symplectic_status, "holds", "FALSE"),
+            fprintf(out, " symplectic = %s: %s%s%s%s;", rep->claim_symplectic ? "true" : "false",
+                    tri_word_data(rep->claim_symplectic_status, "holds", "FALSE",
+                                  rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0),
+                    rep->claim_symplectic_within_data ? " " : "",
+                    rep->claim_symplectic_within_data ? within_words : "",
                     rep->claim_symplectic_separable ? " (for separable H)" : "");
         fputc('\n', out);
     }
@@ -2564,9 +2845,12 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         if (other_hidden) fprintf(out, "  ... and %ld more problems (all of them with --json)\n", (long)other_hidden);
     } else fputs("problems      none\n", out);
     fprintf(out, "trees: %s\n", vigen_tree_notation_help());
+    int within = rep->consistent_within_data || rep->claim_order_within_data || rep->claim_symplectic_within_data;
     fprintf(out, "result        %s (exit %d)\n",
-            rep->exit_code == 0 ? "consistent; every stated claim holds"
-                                : "FAILED: see the problems above", rep->exit_code);
+            rep->exit_code != 0 ? "FAILED: see the problems above"
+            : within ? "consistent; every stated claim holds (some only within the precision of the data)"
+                     : "consistent; every stated claim holds",
+            rep->exit_code);
 }
 
 /* --------------------------------------------------------------- JSON */
@@ -2598,14 +2882,21 @@ static void json_tri(FILE *out, int v)
     fputs(v == VIGEN_CHECK_YES ? "true" : v == VIGEN_CHECK_NO ? "false" : "null", out);
 }
 
+/* "exact": the level is certainly value; "within_data": it is value, resting
+ * on conditions that hold within the precision of the data; "at_least" and
+ * "at_least_within_data": everything up to the cap holds; "undecided":
+ * value + 1 is undecided. */
 static const char *level_status(const vigen_check_level *L)
 {
-    return L->capped ? "at_least" : L->undecided ? "undecided" : "exact";
+    if (L->capped) return L->within_data ? "at_least_within_data" : "at_least";
+    if (L->undecided) return "undecided";
+    return L->within_data ? "within_data" : "exact";
 }
 
 static void json_level(FILE *out, const vigen_check_level *L)
 {
-    fprintf(out, "{\"value\": %d, \"status\": \"%s\"}", L->value, level_status(L));
+    fprintf(out, "{\"value\": %d, \"status\": \"%s\", \"within_data\": %s, \"data_too_short\": %s}", L->value,
+            level_status(L), L->within_data ? "true" : "false", L->undecided && L->too_short ? "true" : "false");
 }
 
 static void json_bad_tree(FILE *out, const vigen_check_orders *o, slong prec)
@@ -2644,14 +2935,33 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         fprintf(out, " \"quadratic_field\": \"sqrt(%s)\", \"denominator\": \"%s\", \"proved\": %ld,\n",
                 rep->quadratic_d, rep->quadratic_denominator, (long)rep->proved);
     fputs(" \"rule\": \"a condition fails when its ball excludes 0 and holds when it contains 0: on rounded entries "
-          "within the precision of the data; on exact entries with a radius below 2^-(prec/2) of its terms and the "
-          "same verdicts at two precisions; otherwise it is undecided\",\n", out);
+          "within the precision of the data, with a radius at most 2^-10 of its terms; on exact entries with a radius "
+          "below 2^-(prec/2) of its terms and the same verdicts at two precisions; otherwise it is undecided\",\n",
+          out);
+    fprintf(out, " \"data_threshold_bits\": %d,\n", VIGEN_CHECK_DATA_BITS);
+    fputs(" \"notes\": [", out);
+    for (slong k = 0; k < rep->nnotes; k++) {
+        const vigen_check_note *n = rep->notes + k;
+        fputs(k ? ",\n  {\"entry\": " : "\n  {\"entry\": ", out);
+        json_string(out, n->entry);
+        fputs(", \"text\": ", out);
+        json_string(out, n->text);
+        fprintf(out, ", \"significant_digits\": %ld, \"radius\": ", (long)n->digits);
+        json_string(out, n->radius);
+        fputs(", \"exact_value\": ", out);
+        json_string(out, n->fraction);
+        fputs(", \"message\": ", out);
+        json_string(out, n->message);
+        fputc('}', out);
+    }
+    fputs(rep->nnotes ? "\n ],\n" : "],\n", out);
     static const char *const sect_keys[] = {"rowsum", "symplectic", "order", "simplifying", "against"};
     fputs(" \"holding\": {", out);
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {
         const vigen_check_holds *h = rep->holds + k;
-        fprintf(out, "%s\"%s\": {\"exact\": %ld, \"within_data_precision\": %ld, \"wider_than_terms\": %ld, "
-                     "\"radius\": ", k ? ", " : "", sect_keys[k], (long)h->exact, (long)h->data, (long)h->wide);
+        if (k == VIGEN_CHECK_SECT_AGAINST && !rep->against_checked) continue;
+        fprintf(out, "%s\"%s\": {\"exact\": %ld, \"within_data_precision\": %ld, \"undecided_too_short\": %ld, "
+                     "\"radius\": ", k ? ", " : "", sect_keys[k], (long)h->exact, (long)h->data, (long)h->too_short);
         if (h->data) {
             char *r = mag_str(h->radius);
             json_string(out, r);
@@ -2666,10 +2976,12 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     json_tri(out, rep->symplectic);
     fputs(", \"symplectic_separable\": ", out);
     json_tri(out, rep->symplectic_separable);
-    fprintf(out, ",\n \"order\": %d, \"order_status\": \"%s\", \"order_separable\": %d, "
+    fprintf(out, ",\n \"consistent_within_data\": %s, \"symplectic_within_data\": %s",
+            rep->consistent_within_data ? "true" : "false", rep->symplectic_within_data ? "true" : "false");
+    fprintf(out, ",\n \"order\": %d, \"order_status\": \"%s\", \"order_within_data\": %s, \"order_separable\": %d, "
                  "\"order_separable_status\": \"%s\",\n",
-            g->level.value, level_status(&g->level), rep->orders[VIGEN_CHECK_SEPARABLE].level.value,
-            level_status(&rep->orders[VIGEN_CHECK_SEPARABLE].level));
+            g->level.value, level_status(&g->level), g->level.within_data ? "true" : "false",
+            rep->orders[VIGEN_CHECK_SEPARABLE].level.value, level_status(&rep->orders[VIGEN_CHECK_SEPARABLE].level));
     fprintf(out, " \"order_A\": %d, \"order_At\": %d,\n", rep->orders[VIGEN_CHECK_A_ALONE].level.value,
             rep->orders[VIGEN_CHECK_AT_ALONE].level.value);
     fputs(" \"orders\": {", out);
@@ -2703,15 +3015,17 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     if (rep->claim_order >= 0) {
         fprintf(out, "\"order\": {\"claimed\": %d, \"holds\": ", rep->claim_order);
         json_tri(out, rep->claim_order_status);
-        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s}",
-                rep->claim_order_separable ? "true" : "false", rep->claim_order_beyond ? "true" : "false");
+        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s, \"within_data\": %s, \"data_too_short\": %s}",
+                rep->claim_order_separable ? "true" : "false", rep->claim_order_beyond ? "true" : "false",
+                rep->claim_order_within_data ? "true" : "false", rep->claim_order_too_short ? "true" : "false");
         first = 0;
     }
     if (rep->claim_symplectic >= 0) {
         fprintf(out, "%s\"symplectic\": {\"claimed\": %s, \"holds\": ", first ? "" : ", ",
                 rep->claim_symplectic ? "true" : "false");
         json_tri(out, rep->claim_symplectic_status);
-        fprintf(out, ", \"separable_only\": %s}", rep->claim_symplectic_separable ? "true" : "false");
+        fprintf(out, ", \"separable_only\": %s, \"within_data\": %s}", rep->claim_symplectic_separable ? "true" : "false",
+                rep->claim_symplectic_within_data ? "true" : "false");
     }
     fputs("},\n \"problems\": [", out);
     for (slong k = 0; k < rep->nproblems; k++) {
@@ -2737,7 +3051,8 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     if (rep->against_checked)
         fprintf(out, ",\n \"against\": {\"differences\": %ld, \"undecided\": %ld}", (long)rep->against_differences,
                 (long)rep->against_undecided);
-    fprintf(out, ",\n \"undecided_conditions\": %ld, \"undecided_reason\": ", (long)rep->undecided_left);
+    fprintf(out, ",\n \"undecided_conditions\": %ld, \"undecided_too_short\": %ld, \"undecided_reason\": ",
+            (long)rep->undecided_left, (long)rep->undecided_short);
     if (rep->undecided_reason) json_string(out, rep->undecided_reason); else fputs("null", out);
     fprintf(out, ",\n \"exit\": %d}\n", rep->exit_code);
 }

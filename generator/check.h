@@ -6,12 +6,18 @@
  *   fails      the ball excludes 0 (certain);
  *   holds      the ball contains 0, and
  *                - when some entry the condition involves is a rounded decimal
- *                  (a half-ulp ball) or a ball given by a caller: nothing more;
- *                  the condition holds "within the precision of the data" and
- *                  the report shows the largest radius of such balls (row
+ *                  (a half-ulp ball) or a ball given by a caller: its radius
+ *                  is at most 2^-VIGEN_CHECK_DATA_BITS = 2^-10 times the size
+ *                  of the terms it compares; the condition then holds "within
+ *                  the precision of the data" (its exact value may differ
+ *                  from 0 by less than that radius) and the report shows the
+ *                  largest radius of such balls.  A wider ball containing 0 is
+ *                  undecided: the data are too short to decide (a 1-digit
+ *                  "0.5" is 0.5 +/- 0.05, 10% of itself, wide enough to
+ *                  "satisfy" conditions that fail by a few per cent).  Row
  *                  sums and symplecticity pairs are intersected with an
  *                  enclosure to second order around the midpoints, in which
- *                  an entry that occurs twice varies once);
+ *                  an entry that occurs twice varies once;
  *                - when every entry it involves is an exact expression: the
  *                  radius is at most 2^-(prec/2) times the size of the terms
  *                  (the ball is as tight as the working precision makes it, not
@@ -27,7 +33,20 @@
  *                  -sqrt(d)), since v v' (D^k g)^2 = m^2 - d n^2 is an integer
  *                  and m = n = 0 is the only way to make it 0;
  *   undecided  anything else (an exact condition whose ball is still wide or
- *              unconfirmed at the precision cap, or a non-finite ball).
+ *              unconfirmed at the precision cap, a condition on rounded data
+ *              whose ball contains 0 but is wider than 2^-10 of its terms, or
+ *              a non-finite ball).
+ * An order, a simplifying assumption, consistency, symplecticity or a claim
+ * that rests on at least one hold within the precision of the data is
+ * reported as such ("order 4 within the precision of the data"; JSON status
+ * "within_data"), never as certain.  Such a claim still counts as holding for
+ * the exit status (0): the threshold makes its radius meaningful, at most
+ * 2^-10 of the terms compared.
+ *
+ * Notes: a rounded decimal with at most VIGEN_CHECK_NOTE_SHORT_DIGITS = 3
+ * significant digits in a file whose longest decimals have at least
+ * VIGEN_CHECK_NOTE_LONG_DIGITS = 10 is named, with its radius and the exact
+ * fraction to write if it is exact ("0.5" -> "1/2").
  * The starting precision is adequate to the entries: enough bits for the
  * digits of every rounded decimal and of every exact literal (a number's
  * digits, and |k| log10 B for a power B^k), plus 64, at least 128.  When an
@@ -60,6 +79,14 @@
 #ifndef VIGEN_CHECK_H
 #define VIGEN_CHECK_H
 
+/* A condition on rounded data holds when its ball contains 0 with a radius at
+ * most 2^-VIGEN_CHECK_DATA_BITS of the size of its terms. */
+#define VIGEN_CHECK_DATA_BITS 10
+/* Short decimals that look exact: at most this many significant digits ... */
+#define VIGEN_CHECK_NOTE_SHORT_DIGITS 3
+/* ... in a file whose longest decimal has at least this many. */
+#define VIGEN_CHECK_NOTE_LONG_DIGITS 10
+
 #include <stdio.h>
 #include <arb.h>
 #include "error.h"
@@ -91,11 +118,17 @@ enum { VIGEN_CHECK_NO = 0, VIGEN_CHECK_YES = 1, VIGEN_CHECK_UNDECIDED = 2 };
 
 /* A level such as an order or B(p): the largest p such that everything up to
  * p holds.  capped: everything up to the cap held (the true level may be
- * higher).  undecided: level + 1 is undecided rather than failing. */
+ * higher).  undecided: level + 1 is undecided rather than failing.
+ * within_data: some condition up to the level holds only within the
+ * precision of the data (the level is not certain).  too_short: level + 1 is
+ * undecided because the rounded data are too short (every undecided condition
+ * there has a ball containing 0 wider than 2^-10 of its terms). */
 typedef struct {
     int value;
     int capped;
     int undecided;
+    int within_data;
+    int too_short;
 } vigen_check_level;
 
 /* Order conditions of one family of trees. */
@@ -112,6 +145,8 @@ typedef struct {
     int evaluated_to;            /* highest order whose conditions were all evaluated */
     slong count[VIGEN_TREE_MAX_ORDER + 1], hold[VIGEN_TREE_MAX_ORDER + 1],
           fail[VIGEN_TREE_MAX_ORDER + 1], undecided[VIGEN_TREE_MAX_ORDER + 1];
+    slong hold_data[VIGEN_TREE_MAX_ORDER + 1];        /* of hold: within the precision of the data */
+    slong undecided_short[VIGEN_TREE_MAX_ORDER + 1];  /* of undecided: the data are too short */
     /* The first tree (lowest order, enumeration order) that fails, and the
      * first that is undecided; order 0 when there is none. */
     int fail_order, undecided_order;
@@ -135,9 +170,20 @@ typedef struct {
     slong exact;                 /* on exact entries (confirmed at two precisions, or exactly 0) */
     slong data;                  /* within the precision of the data (rounded decimals, balls) */
     mag_t radius;                /* the largest radius among the latter */
-    slong wide;                  /* of the latter, balls wider than the size of their terms:
-                                    they contain 0, but the data hardly determine them */
+    slong too_short;             /* undecided (not holding): balls on rounded data that contain 0
+                                    but are wider than 2^-10 of their terms */
 } vigen_check_holds;
+
+/* A short decimal in a file of long ones: it may be an exact value typed as
+ * a decimal ("0.5" for 1/2), read as a wide ball. */
+typedef struct {
+    char *entry;                 /* "b[1]", "A[2][1]" */
+    char *text;                  /* the decimal as written */
+    slong digits;                /* its significant digits */
+    char *radius;                /* half a unit in its last digit ("0.05") */
+    char *fraction;              /* its exact value ("1/2") */
+    char *message;
+} vigen_check_note;
 
 enum { VIGEN_PROBLEM_ROWSUM, VIGEN_PROBLEM_SYMPLECTIC, VIGEN_PROBLEM_CLAIM, VIGEN_PROBLEM_AGAINST };
 
@@ -160,6 +206,7 @@ typedef struct {
     slong prec_first;            /* precision of the first round */
     slong rounds;                /* evaluations done (1 + refinements and confirmations) */
     slong undecided_left;        /* undecided balls in the final round */
+    slong undecided_short;       /* ... of which on rounded data too short to decide them */
     const char *undecided_reason;/* why refining stopped with undecided balls (static string) */
     int max_order;
     int has_At, has_bt, has_ct;
@@ -174,6 +221,8 @@ typedef struct {
     vigen_check_holds holds[VIGEN_CHECK_SECTIONS];
 
     int consistent;              /* row sums and sum b = 1 (tri-state) */
+    int consistent_within_data;  /* consistent, some condition only within the precision of the data */
+    int symplectic_within_data;  /* symplectic (or for separable H), likewise */
     int symplectic;              /* tri-state: bt = b and b_i at_ij + b_j a_ji = b_i b_j */
     int symplectic_separable;    /* tri-state: b_i at_ij + bt_j a_ji = b_i bt_j, which suffices
                                     for separable H (GNI Thm VI.4.6); bt may differ from b */
@@ -190,9 +239,12 @@ typedef struct {
     int claim_order_status;      /* tri-state */
     int claim_order_separable;   /* the claim matches the separable order only */
     int claim_order_beyond;      /* undecided because order claim + 1 exceeds VIGEN_TREE_MAX_ORDER */
+    int claim_order_within_data; /* holds, resting on conditions that hold within the precision of the data */
+    int claim_order_too_short;   /* undecided because the data are too short */
     int claim_symplectic;        /* -1, 0, 1 */
     int claim_symplectic_status;
     int claim_symplectic_separable;  /* the claim holds for separable H only */
+    int claim_symplectic_within_data;
 
     int against_checked;
     slong against_differences;
@@ -202,8 +254,12 @@ typedef struct {
     slong nproblems, alloc_problems;
     vigen_check_problem *problems;
 
-    int exit_code;               /* 0 consistent, every claim holds and (--against) no entry
-                                    differs or is undecided; 1 otherwise */
+    slong nnotes;
+    vigen_check_note *notes;     /* short decimals that look exact */
+
+    int exit_code;               /* 0 consistent, every claim holds (within the precision of the
+                                    data counts) and (--against) no entry differs or is
+                                    undecided; 1 otherwise */
 } vigen_check_report;
 
 void vigen_check_report_init(vigen_check_report *rep);

@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <flint/fmpq.h>
 #include <flint/fmpz.h>
 #include "decimal.h"
 #include "error.h"
@@ -188,14 +189,20 @@ static int split_decimal(const char *text, int *negative, char **digits_out, slo
     return 1;
 }
 
-int vigen_decimal_is_rounded(const char *text)
+/* The power of ten of the last digit of a plain decimal; 0 if text is not one. */
+static int decimal_last_exponent(const char *text, slong *e)
 {
     int neg;
     char *digits;
-    slong e;
-    if (!split_decimal(text, &neg, &digits, &e)) return 0;
+    if (!split_decimal(text, &neg, &digits, e)) return 0;
     free(digits);
     return 1;
+}
+
+int vigen_decimal_is_rounded(const char *text)
+{
+    slong e;
+    return decimal_last_exponent(text, &e);
 }
 
 int vigen_decimal_parse_rounded(arb_t res, const char *text, slong prec)
@@ -237,4 +244,70 @@ slong vigen_decimal_significant_digits(const char *text)
     slong n = (slong)strlen(p);
     free(digits);
     return n;
+}
+
+/* A string from flint (fmpz_get_str, fmpq_get_str) as a heap string of ours. */
+static char *own_flint_str(char *s)
+{
+    char *r = vigen_strdup(s);
+    flint_free(s);
+    return r;
+}
+
+char *vigen_decimal_format_integer(const arb_t x)
+{
+    if (!arb_is_exact(x) || !arf_is_int(arb_midref(x))) return NULL;
+    if (!arf_is_zero(arb_midref(x)) && arf_cmpabs_2exp_si(arb_midref(x), 256) >= 0) return NULL;
+    fmpz_t m;
+    fmpz_init(m);
+    arf_get_fmpz(m, arb_midref(x), ARF_RND_DOWN);   /* exact: the midpoint is an integer */
+    char *r = own_flint_str(fmpz_get_str(NULL, 10, m));
+    fmpz_clear(m);
+    return r;
+}
+
+char *vigen_decimal_exact_fraction(const char *text)
+{
+    int neg;
+    char *digits;
+    slong e;
+    if (!split_decimal(text, &neg, &digits, &e)) return NULL;
+    if (e > 1000 || e < -1000) {
+        free(digits);
+        return NULL;
+    }
+    fmpq_t q;
+    fmpz_t p;
+    fmpq_init(q);
+    fmpz_init(p);
+    fmpz_set_str(fmpq_numref(q), digits, 10);
+    free(digits);
+    if (neg) fmpz_neg(fmpq_numref(q), fmpq_numref(q));
+    fmpz_ui_pow_ui(p, 10, (ulong)(e >= 0 ? e : -e));
+    if (e >= 0) fmpz_mul(fmpq_numref(q), fmpq_numref(q), p);
+    else fmpz_set(fmpq_denref(q), p);
+    fmpq_canonicalise(q);
+    char *r = own_flint_str(fmpq_get_str(NULL, 10, q));
+    fmpz_clear(p);
+    fmpq_clear(q);
+    return r;
+}
+
+char *vigen_decimal_half_unit(const char *text)
+{
+    slong e;
+    if (!decimal_last_exponent(text, &e)) return NULL;
+    /* a unit in the last digit is 10^e, half of it 5 10^(e-1) */
+    slong k = e - 1;
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    if (k >= 0 && k <= 6) {
+        vigen_strbuf_append(&sb, "5");
+        for (slong i = 0; i < k; i++) vigen_strbuf_append(&sb, "0");
+    } else if (k < 0 && k >= -8) {
+        vigen_strbuf_append(&sb, "0.");
+        for (slong i = 0; i < -k - 1; i++) vigen_strbuf_append(&sb, "0");
+        vigen_strbuf_append(&sb, "5");
+    } else vigen_strbuf_printf(&sb, "5e%ld", (long)k);
+    return sb.data;
 }

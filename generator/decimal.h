@@ -29,4 +29,18 @@ int vigen_decimal_parse_rounded(arb_t res, const char *text, slong prec);
 /* Number of significant digits of a plain decimal ("0.0012300" -> 5). */
 slong vigen_decimal_significant_digits(const char *text);
 
+/* For an exact integer ball (radius 0, integral midpoint, |x| < 2^256): its
+ * decimal digits ("1", "-3", "0"), an exact literal.  NULL otherwise. */
+char *vigen_decimal_format_integer(const arb_t x);
+
+/* The exact value of a plain decimal as a fraction in lowest terms ("0.25" ->
+ * "1/4", "-1.50" -> "-3/2", "2.0" -> "2", "5e-1" -> "1/2"), or NULL when text
+ * is not a plain decimal or its exponent is beyond +-1000. */
+char *vigen_decimal_exact_fraction(const char *text);
+
+/* Half a unit in the last digit of a plain decimal, the radius it is read
+ * with, as a decimal ("0.5" -> "0.05", "0.25" -> "0.005", "1.5e-8" ->
+ * "5e-10", "12" is not a plain decimal), or NULL. */
+char *vigen_decimal_half_unit(const char *text);
+
 #endif

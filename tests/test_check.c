@@ -18,6 +18,12 @@
  *    (Legendre roots from arb, Lagrange polynomials integrated exactly);
  *  - the symplecticity defect of a pair is b_i a~_ij + b~_j a_ji - b_i b~_j by
  *    definition (GNI Thm VI.4.6), computed here from the exact entries.
+ *  - an s-stage Runge-Kutta method has order <= 2s: its weights and nodes
+ *    form an s-point quadrature rule (the bushy trees), exact at most up to
+ *    degree 2s - 1 (Hairer, Norsett, Wanner I, sec. II.7);
+ *  - a decimal with k digits after the point is read as the ball of radius
+ *    10^-k / 2 (README, "Tableau files"), and the rule for rounded data holds
+ *    a condition only with a radius at most 2^-10 of its terms (check.h).
  * Deliberately broken copies change an entry by a known exact amount (1/10^45,
  * e^-110, 1/5 for 1/6, 0.51 for 1/2): the defects they cause follow.
  */
@@ -982,6 +988,11 @@ static void test_rounded_data(void)
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 4, 0, 0);
     CHECK(rep.claim_order_status == VIGEN_CHECK_YES && rep.claim_symplectic_status == VIGEN_CHECK_YES);
     CHECK(rep.exit_code == 0 && rep.rounds == 1 && rep.rounded_entries && !rep.exact_entries);
+    /* ... and every verdict resting on such holds says so */
+    CHECK(order_of(&rep, VIGEN_CHECK_GENERAL)->within_data && order_of(&rep, VIGEN_CHECK_SEPARABLE)->within_data);
+    CHECK(rep.claim_order_within_data && rep.claim_symplectic_within_data);
+    CHECK(rep.consistent_within_data && rep.symplectic_within_data);
+    CHECK(rep.B[0].within_data && rep.stage_order[0].within_data && rep.nnotes == 0);
     /* decided within the data; the largest radius is at least the half-ulp
      * 5e-7 of c_1, which the row sum c_1 = a_11 + a_12 carries */
     CHECK(rep.holds[VIGEN_CHECK_SECT_ROWSUM].data == 3 && rep.holds[VIGEN_CHECK_SECT_ROWSUM].exact == 0);
@@ -992,6 +1003,8 @@ static void test_rounded_data(void)
     free(text);
     char *json = render(&rep, 1);
     CHECK(strstr(json, "\"within_data_precision\": 3") != NULL);
+    CHECK(strstr(json, "\"order_status\": \"within_data\"") != NULL);
+    CHECK(strstr(json, "\"order_status\": \"exact\"") == NULL);
     free(json);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
@@ -1027,6 +1040,87 @@ static void test_rounded_data(void)
     for (int k = 0; k < 3; k++) { free(c9[k]); free(b9[k]); }
     for (int k = 0; k < 9; k++) free(A9[k]);
     arb_clear(x);
+}
+
+/* Short data: a ball containing 0 holds within the precision of the data
+ * only with a radius at most 2^-10 of its terms; wider, the data are too
+ * short to decide. */
+static void test_short_data(void)
+{
+    vigen_check_report rep;
+    vigen_tableau t;
+    /* the threshold: one stage, b = 1 written with 3 and 4 decimals.  sum b =
+     * 1 compares terms of size |b| + 1 = 2; "1.000" is 1 +/- 5e-4, a radius
+     * of 2.5e-4 of the terms (below 2^-10 = 9.8e-4): it holds within the data;
+     * "1.00" is 1 +/- 5e-3, 2.5e-3 of the terms: undecided */
+    const char *c1[] = {"1/2"}, *A1[] = {"1/2"}, *b4[] = {"1.000"}, *b3[] = {"1.00"};
+    make(&t, "midpoint, b with 3 decimals", 1, c1, A1, b4, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
+    CHECK(rep.consistent == VIGEN_CHECK_YES && rep.consistent_within_data);
+    CHECK(rep.holds[VIGEN_CHECK_SECT_ROWSUM].too_short == 0);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    make(&t, "midpoint, b with 2 decimals", 1, c1, A1, b3, NULL, NULL, NULL);
+    CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
+    CHECK(rep.consistent == VIGEN_CHECK_UNDECIDED && !rep.consistent_within_data && rep.exit_code == 1);
+    CHECK(rep.holds[VIGEN_CHECK_SECT_ROWSUM].too_short == 1 && rep.undecided_short > 0);
+    CHECK(rep.undecided_reason != NULL && strstr(rep.undecided_reason, "too short") != NULL);
+    const vigen_check_problem *p = find_listed(&rep, VIGEN_PROBLEM_ROWSUM, "b", 0, 0);
+    CHECK(p != NULL && p->undecided && strstr(p->message, "too short") != NULL);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
+    /* Gauss-2 with b = "0.5" (0.5 +/- 0.05) and a11 = a22 = "0.25" among
+     * 16-digit entries: no 2-stage method has order 5, so neither the order 5
+     * nor the claim order = 5 may be reported; the true claim order = 4 may
+     * not be refuted; the short entries are named with their fractions */
+    const char *c[] = {"0.2113248654051871", "0.7886751345948129"};
+    const char *A[] = {"0.25", "-0.03867513459481288", "0.5386751345948129", "0.25"};
+    const char *b[] = {"0.5", "0.5"};
+    make(&t, "gauss2, short b", 2, c, A, b, NULL, NULL, NULL);
+    t.claim_order = 5;
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK(rep.claim_order_status != VIGEN_CHECK_YES && rep.exit_code == 1);
+    CHECK(order_of(&rep, VIGEN_CHECK_GENERAL)->value < 5 && order_of(&rep, VIGEN_CHECK_A_ALONE)->value < 5);
+    CHECK(rep.B[0].value < 5);
+    /* sum b = 1 has terms of size 2 and a radius of 0.1: 5%, too short */
+    CHECK(rep.consistent == VIGEN_CHECK_UNDECIDED && rep.claim_order_too_short);
+    CHECK(rep.nnotes == 4);
+    if (rep.nnotes == 4) {
+        CHECK(strcmp(rep.notes[0].entry, "A[1][1]") == 0 && strcmp(rep.notes[0].fraction, "1/4") == 0 &&
+              strcmp(rep.notes[0].radius, "0.005") == 0 && rep.notes[0].digits == 2);
+        CHECK(strcmp(rep.notes[2].entry, "b[1]") == 0 && strcmp(rep.notes[2].fraction, "1/2") == 0 &&
+              strcmp(rep.notes[2].radius, "0.05") == 0 && rep.notes[2].digits == 1);
+        CHECK(strstr(rep.notes[2].message, "b[1] = \"0.5\"") != NULL &&
+              strstr(rep.notes[2].message, "write \"1/2\"") != NULL);
+    }
+    char *text = render(&rep, 0);
+    CHECK(strstr(text, "order = 5: holds") == NULL && strstr(text, "note: b[1] = \"0.5\" is read as 0.5 +/- 0.05") != NULL);
+    free(text);
+    char *json = render(&rep, 1);
+    CHECK(strstr(json, "\"exact_value\": \"1/2\"") != NULL);
+    free(json);
+    vigen_check_report_clear(&rep);
+    t.claim_order = 4;
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_UNDECIDED && rep.exit_code == 1);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+
+    /* the same with b and the diagonal exact: order 4 within the precision of
+     * the 16-digit data (order 5 fails: sum b c^4 = 7/36, not 1/5), the claim
+     * holds, within the data, exit 0; nothing short is left to name */
+    const char *Ae[] = {"1/4", "-0.03867513459481288", "0.5386751345948129", "1/4"};
+    const char *be[] = {"1/2", "1/2"};
+    make(&t, "gauss2, exact b", 2, c, Ae, be, NULL, NULL, NULL);
+    t.claim_order = 4;
+    CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 4, 0, 0);
+    CHECK(order_of(&rep, VIGEN_CHECK_GENERAL)->within_data);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_YES && rep.claim_order_within_data && rep.exit_code == 0);
+    CHECK(rep.nnotes == 0);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
 }
 
 /* Exact entries: a condition holds only when its ball is tight and the same
@@ -1133,6 +1227,8 @@ static void test_claims(void)
     CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);   /* max_order raised to 5 for the claim */
     CHECK(rep.max_order == 5);
     CHECK(rep.claim_order_status == VIGEN_CHECK_YES && rep.exit_code == 0);
+    /* exact entries: certain, nothing within the precision of data */
+    CHECK(!rep.claim_order_within_data && !order_of(&rep, VIGEN_CHECK_GENERAL)->within_data);
     vigen_check_report_clear(&rep);
     t.claim_order = 5;   /* Gauss-2 has order 4 */
     CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
@@ -1236,6 +1332,7 @@ int main(void)
     test_perturbed_gauss3();
     test_other_typos();
     test_rounded_data();
+    test_short_data();
     test_exact_refinement();
     test_claims();
     test_collocation_and_speed();

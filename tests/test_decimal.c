@@ -110,6 +110,70 @@ int main(void)
     CHECK(vigen_decimal_significant_digits("0.0012300") == 5);
     CHECK(vigen_decimal_significant_digits("1.000") == 4);
 
+    /* the exact value of a decimal, as a fraction in lowest terms */
+    {
+        static const char *const cases[][2] = {
+            {"0.5", "1/2"}, {"0.25", "1/4"}, {"0.125", "1/8"}, {"0.375", "3/8"}, {"-1.50", "-3/2"}, {"2.0", "2"},
+            {"5e-1", "1/2"}, {"1.2e2", "120"}, {"0.0", "0"}, {"0e-50", "0"}, {"0.33", "33/100"}};
+        for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+            char *f = vigen_decimal_exact_fraction(cases[k][0]);
+            CHECK_MSG(f != NULL && strcmp(f, cases[k][1]) == 0, "%s: got %s, want %s", cases[k][0], f ? f : "NULL",
+                      cases[k][1]);
+            free(f);
+        }
+        CHECK(vigen_decimal_exact_fraction("1/2") == NULL && vigen_decimal_exact_fraction("1") == NULL);
+        /* half a unit in the last digit: the radius the decimal is read with */
+        static const char *const radii[][2] = {
+            {"0.5", "0.05"}, {"0.25", "0.005"}, {"-0.125", "0.0005"}, {"3.0", "0.05"}, {"1.5e-8", "5e-10"},
+            {"1e2", "50"}, {"0e-50", "5e-51"}};
+        for (size_t k = 0; k < sizeof radii / sizeof radii[0]; k++) {
+            char *r = vigen_decimal_half_unit(radii[k][0]);
+            CHECK_MSG(r != NULL && strcmp(r, radii[k][1]) == 0, "%s: got %s, want %s", radii[k][0], r ? r : "NULL",
+                      radii[k][1]);
+            /* and it is the radius vigen_decimal_parse_rounded reads (a mag_t
+             * upper bound: equal to about 2^-25 relative) */
+            arb_t b, rr, q;
+            arb_init(b);
+            arb_init(rr);
+            arb_init(q);
+            CHECK(vigen_decimal_parse_rounded(b, radii[k][0], 256));
+            if (r) arb_set_str(rr, r, 256);
+            arf_t rad;
+            arf_init(rad);
+            arf_set_mag(rad, arb_radref(b));
+            arb_set_arf(q, rad);
+            arb_div(q, q, rr, 256);
+            arb_sub_ui(q, q, 1, 256);
+            CHECK_MSG(arf_cmpabs_2exp_si(arb_midref(q), -20) < 0, "%s: radius %s", radii[k][0], r ? r : "NULL");
+            arf_clear(rad);
+            arb_clear(b);
+            arb_clear(rr);
+            arb_clear(q);
+            free(r);
+        }
+    }
+
+    /* exact integers are written as integers (exact literals); anything
+     * else is not an integer literal */
+    arb_set_si(x, 1);
+    s = vigen_decimal_format_integer(x);
+    CHECK(s != NULL && strcmp(s, "1") == 0);
+    free(s);
+    arb_set_si(x, -12);
+    s = vigen_decimal_format_integer(x);
+    CHECK(s != NULL && strcmp(s, "-12") == 0);
+    free(s);
+    arb_zero(x);
+    s = vigen_decimal_format_integer(x);
+    CHECK(s != NULL && strcmp(s, "0") == 0);
+    free(s);
+    arb_set_si(x, 1);
+    mag_set_ui_2exp_si(arb_radref(x), 1, -300);     /* 1 +/- 2^-300: not known to be an integer */
+    CHECK(vigen_decimal_format_integer(x) == NULL);
+    arb_set_si(x, 1);
+    arb_mul_2exp_si(x, x, -1);                       /* exactly 1/2 */
+    CHECK(vigen_decimal_format_integer(x) == NULL);
+
     /* property: for many rationals and digit counts, the printed string is a
      * correct rounding (exact check), and has exactly `digits` significant digits */
     flint_rand_t state;
