@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include "error.h"
 
 static void *xrealloc(void *p, size_t n)
@@ -189,6 +190,9 @@ const char *vigen_nearest_name(const char *key, const char *const *names, size_t
 {
     const char *near = NULL;
     size_t nearest = max_edits + 1;
+    /* a different case is the likeliest typo ("AT" for "At", not "A") */
+    for (int i = 0; names[i]; i++)
+        if (strcasecmp(key, names[i]) == 0) return names[i];
     for (int i = 0; names[i]; i++) {
         size_t d = edit_distance(key, names[i]);
         if (d < nearest && d < strlen(key)) {

@@ -237,8 +237,10 @@ int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_l
             for (int k = 0; known_fields[k]; k++) known |= strcmp(lua_tostring(L, -1), known_fields[k]) == 0;
         if (!known) {
             const char *key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "(a non-string key)";
-            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: unknown field '%s' (known: name, s, c, A, b, At, ct, bt, "
-                                 "digits, source, description, basis, nodes, generator, order, symplectic)", path, key);
+            const char *near = lua_type(L, -1) == LUA_TSTRING ? vigen_nearest_name(key, known_fields, 2) : NULL;
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: unknown field '%s'%s%s%s (known: name, s, c, A, b, At, ct, bt, "
+                                 "digits, source, description, basis, nodes, generator, order, symplectic)", path, key,
+                                 near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "");
             lua_pop(L, 1);
             vigen_sandbox_free(sb);
             return rc;
