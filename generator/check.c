@@ -2208,6 +2208,19 @@ static double entries_digits(const vigen_tableau *t)
             const char *x = lists[l][k];
             if (x == NULL) continue;
             double n = vigen_decimal_is_rounded(x) ? (double)vigen_decimal_significant_digits(x) : literal_digits(x);
+            if (!vigen_decimal_is_rounded(x)) {
+                /* an exact part far smaller than the rest (1/2 + exp(-2000)) must
+                 * be visible at the starting precision, literal or not */
+                vigen_expr *e = NULL;
+                vigen_error err;
+                vigen_error_init(&err);
+                if (vigen_expr_parse(&e, x, 0, &err) == VIGEN_OK) {
+                    double span = vigen_expr_magnitude_span_bits(e) * 0.30102999566398120;
+                    if (span > n) n = span;
+                }
+                vigen_expr_free(e);
+                vigen_error_clear(&err);
+            }
             if (n > d) d = n;
         }
     }
@@ -2666,7 +2679,10 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
               "  short to decide)\n", out);
     else if (!rep->rounded_entries)
         fputs("  a condition fails when its ball excludes 0; it holds when its ball contains 0 with a radius below\n"
-              "  2^-(prec/2) of its terms, with the same verdicts at two precisions; otherwise it is undecided\n", out);
+              "  2^-(prec/2) of its terms, with the same verdicts at two precisions; otherwise it is undecided.\n"
+              "  These holds are numerical confirmations, not proofs (entries outside Q and one Q(sqrt d): only\n"
+              "  rational and real quadratic tableaux are proved); the precision starts above the span of the\n"
+              "  entries' parts, so that a part like exp(-2000) is seen\n", out);
     else
         fputs("  a condition fails when its ball excludes 0 and holds when it contains 0: within the precision of\n"
               "  the data when it involves a rounded entry and its radius is at most 2^-10 of its terms; on exact\n"
@@ -2934,6 +2950,9 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     else if (rep->quadratic_d)
         fprintf(out, " \"quadratic_field\": \"sqrt(%s)\", \"denominator\": \"%s\", \"proved\": %ld,\n",
                 rep->quadratic_d, rep->quadratic_denominator, (long)rep->proved);
+    /* holds on exact entries are proofs only in the two cases above */
+    fprintf(out, " \"exact_holds_are_proofs\": %s,\n",
+            rep->rational_denominator || rep->quadratic_d ? "true" : "false");
     fputs(" \"rule\": \"a condition fails when its ball excludes 0 and holds when it contains 0: on rounded entries "
           "within the precision of the data, with a radius at most 2^-10 of its terms; on exact entries with a radius "
           "below 2^-(prec/2) of its terms and the same verdicts at two precisions; otherwise it is undecided\",\n",

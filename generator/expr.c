@@ -1079,6 +1079,40 @@ int vigen_expr_depends_on_t(const vigen_expr *e) { return e->root->has_t; }
 const char *vigen_expr_text(const vigen_expr *e) { return e->text; }
 
 /* ------------------------------------------------------------------------ */
+/* Magnitude span                                                             */
+
+/* Walks the constant subtrees, evaluated at 64 bits, keeping the largest and
+ * smallest exponent of a value certainly nonzero. */
+static void span_node(const node *n, slong *lo, slong *hi, int *any)
+{
+    if (n == NULL || n->has_t) {
+        if (n) { span_node(n->a, lo, hi, any); span_node(n->b, lo, hi, any); }
+        return;
+    }
+    arb_t v;
+    arb_init(v);
+    arb_ctx c = { NULL, NULL, NULL, 64 };
+    if (eval_arb_node(v, n, &c) == VIGEN_OK && arb_is_finite(v) && !arb_contains_zero(v)) {
+        /* |v| lies in [2^(e-1), 2^e) up to the ball's tiny radius */
+        slong e = fmpz_get_si(ARF_EXPREF(arb_midref(v)));
+        if (!*any || e < *lo) *lo = e;
+        if (!*any || e > *hi) *hi = e;
+        *any = 1;
+    }
+    arb_clear(v);
+    span_node(n->a, lo, hi, any);
+    span_node(n->b, lo, hi, any);
+}
+
+double vigen_expr_magnitude_span_bits(const vigen_expr *e)
+{
+    slong lo = 0, hi = 0;
+    int any = 0;
+    span_node(e->root, &lo, &hi, &any);
+    return any ? (double)(hi - lo) : 0.0;
+}
+
+/* ------------------------------------------------------------------------ */
 /* Rational and real quadratic values                                         */
 
 /* Sizes beyond which a "rational" expression is not worth treating as one. */

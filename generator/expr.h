@@ -65,6 +65,12 @@ int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec);
  * 1; else returns 0 (use rigorous quadrature). */
 int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t x, slong prec);
 
+/* log2 of the ratio of the largest to the smallest magnitude among the
+ * certainly nonzero constant subexpressions of e (each evaluated at 64 bits):
+ * in "1/2 + exp(-2000)" about 2890 bits.  Checking a condition on such an
+ * entry needs at least that many bits to see the small part at all. */
+double vigen_expr_magnitude_span_bits(const vigen_expr *e);
+
 /* If the constant expression is built from numbers with + - * / and
  * integer powers (so that its value is rational), writes the value to res
  * and returns 1; else returns 0 (sqrt(4) counts as not rational). */

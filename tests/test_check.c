@@ -1183,12 +1183,12 @@ static void test_exact_refinement(void)
     vigen_tableau_clear(&ref2);
 
     /* a_11 = 1/4 + e^-110 (about 1.7e-48 = 2^-158.7): no literal shows the
-     * size, so 128 bits see every ball contain 0; doubling the precision to
-     * confirm finds the defect */
+     * size, but the starting precision covers the span of the entry's parts
+     * (2^2 down to 2^-159), so the first round already sees the defect */
     const char *Ae[] = {"1/4 + exp(-110)", "1/4 - sqrt(3)/6", "1/4 + sqrt(3)/6", "1/4"};
     make(&t, "gauss2, a11 + exp(-110)", 2, gauss2_c, Ae, gauss2_b, NULL, NULL, NULL);
     CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
-    CHECK(rep.prec_first == 128 && rep.rounds >= 3);
+    CHECK(rep.prec_first >= 160 + 64);
     CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO);
     eval_text(eps, "exp(-110)", 1024);
     check_rowsum_defect(&rep, "A", 1, eps);
@@ -1212,6 +1212,25 @@ static void test_exact_refinement(void)
     vigen_tableau_clear(&t);
     vigen_tableau_clear(&ref);
     arb_clear(eps);
+}
+
+/* b = 1/2 +- exp(-2000) (about 2^-2886): the starting precision covers the
+ * span of the entries' parts, so the defects of sum b c = 1/2 and of
+ * symplecticity (~1e-869) are found instead of being taken for holds at the
+ * 1024-bit confirmation (which a reviewer showed happened before). */
+static void test_hidden_small_part(void)
+{
+    const char *b[] = {"1/2 + exp(-2000)", "1/2 - exp(-2000)"};
+    vigen_tableau t;
+    make(&t, "gauss2, b +- exp(-2000)", 2, gauss2_c, gauss2_A, b, NULL, NULL, NULL);
+    t.claim_symplectic = 1;   /* refuted: exit status 1 */
+    vigen_check_report rep;
+    CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
+    CHECK(rep.prec_first >= 2886);
+    CHECK(rep.symplectic == VIGEN_CHECK_NO && rep.exit_code == 1);
+    CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 1, 0, 0);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
 }
 
 static void test_claims(void)
@@ -1334,6 +1353,7 @@ int main(void)
     test_rounded_data();
     test_short_data();
     test_exact_refinement();
+    test_hidden_small_part();
     test_claims();
     test_collocation_and_speed();
     TEST_MAIN_END();
