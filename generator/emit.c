@@ -869,6 +869,16 @@ static int build_data(vigen_strbuf *sb, emit_ctx *E, const vigen_emit_options *o
     if (opt->real == VIGEN_REAL_LONG_DOUBLE) put_str(sb, "real_check", "!defined(LDBL_MANT_DIG) || LDBL_MANT_DIG != 64");
     else put_bool(sb, "real_check", 0);
     put_str(sb, "tableau_name", tname);
+    /* what the coefficient comments may promise */
+    {
+        char *head = E->inexact_done
+                         ? vigen_strdup_printf("rounded to %s from the decimals as written (--allow-inexact: some "
+                                               "entries have too few digits to round correctly, so the coefficients "
+                                               "are only as good as those decimals)", reals[opt->real])
+                         : vigen_strdup_printf("correctly rounded to %s", reals[opt->real]);
+        put_str(sb, "coef_head", head);
+        free(head);
+    }
     put_int(sb, "s", (long)s);
     put_int(sb, "order", t->claim_order);
 

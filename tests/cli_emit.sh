@@ -36,6 +36,7 @@ check 'grep -q "^vigen emit: $T/g3_34.lua: c\[1\] = 0.11270166537925831148207346
 check 'grep -q "vigen generate SPEC --digits 60. (or more)" "$T/err.txt" && grep -q "emit the spec itself" "$T/err.txt" && grep -q "give the entry exactly" "$T/err.txt" && grep -q "pass --allow-inexact to round the decimals as written" "$T/err.txt"' "34 digits as float128: says what to do"
 "$VIGEN" emit "$T/g3_34.lua" --name q --real float128 -o "$T" -q --allow-inexact 2>"$T/err.txt"
 check '[ $? -eq 0 ] && [ -f "$T/q.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ]' "--allow-inexact: exactly one warning line"
+check '! grep -q "correctly rounded" "$T/q.c" && grep -q "from the decimals as written" "$T/q.c"' "--allow-inexact: the header does not promise correct rounding"
 check 'grep -q "g3_34.lua: --allow-inexact: rounded 24 entries to float128 (113 bits) from their decimals as written (c\[1\], c\[2\], c\[3\], A\[1\]\[1\], A\[1\]\[2\] and 19 more; and 6 coefficients computed from them).*only as good as these decimals" "$T/err.txt"' "--allow-inexact: the summary counts and names entries"
 check '[ "$(grep -o "b\[1\]" "$T/err.txt" | wc -l)" -le 1 ] && ! grep -q "rounding the value as written" "$T/err.txt"' "--allow-inexact: no entry twice, no per-entry warnings"
 check 'grep -q "vigen emit g3_34.lua --name q --real float128 --allow-inexact" "$T/q.c"' "--allow-inexact recorded in the header"
