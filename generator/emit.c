@@ -1212,6 +1212,16 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
 {
     *warnings = 0;
     const char *label = path ? path : (t->name ? t->name : "tableau");
+    /* The claimed order becomes NAME_ORDER and the type's order field, which
+     * programs print; one claim is certainly false without any evaluation:
+     * an s-stage (P)RK method has order at most 2s (its q part alone is an
+     * s-stage Runge-Kutta method). */
+    if (t->claim_order > 2 * t->s) {
+        vigen_warn("%s: the file claims order %d, but a %ld-stage method has order at most %ld; the stepper's order "
+                   "field repeats the claim: run 'vigen check %s'", label, t->claim_order, (long)t->s,
+                   (long)(2 * t->s), label);
+        (*warnings)++;
+    }
     vigen_check_options copt;
     vigen_check_options_init(&copt);
     /* Row sums and symplecticity do not depend on the order conditions; order

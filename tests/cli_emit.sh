@@ -115,5 +115,10 @@ check '[ $? -eq 0 ]' "--help"
 "$VIGEN" emit "$SRC/tests/data/emit/none.lua" --name z -o "$T" 2>/dev/null
 check '[ $? -eq 2 ]' "unreadable input"
 
+# a claim beyond the 2s bound of an s-stage method is warned about
+printf 'return { name = "g2", s = 2, order = 6, c = { "1/2 - sqrt(3)/6", "1/2 + sqrt(3)/6" },\n  A = { { "1/4", "1/4 - sqrt(3)/6" }, { "1/4 + sqrt(3)/6", "1/4" } }, b = { "1/2", "1/2" } }\n' >"$T/g2_order6.lua"
+"$VIGEN" emit "$T/g2_order6.lua" --name g6 -o "$T" -q 2>"$T/err.txt"
+check '[ $? -eq 0 ] && grep -q "claims order 6, but a 2-stage method has order at most 4" "$T/err.txt"' "impossible order claim warned"
+
 rm -rf "$T"
 exit $fail
