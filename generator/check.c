@@ -2862,8 +2862,14 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     } else fputs("problems      none\n", out);
     fprintf(out, "trees: %s\n", vigen_tree_notation_help());
     int within = rep->consistent_within_data || rep->claim_order_within_data || rep->claim_symplectic_within_data;
+    /* exit 1 with nothing certainly false: undecided, not failed */
+    int failed = rep->consistent == VIGEN_CHECK_NO || (rep->claim_order >= 0 && rep->claim_order_status == VIGEN_CHECK_NO) ||
+                 (rep->claim_symplectic >= 0 && rep->claim_symplectic_status == VIGEN_CHECK_NO) ||
+                 rep->against_differences > 0;
     fprintf(out, "result        %s (exit %d)\n",
-            rep->exit_code != 0 ? "FAILED: see the problems above"
+            rep->exit_code != 0 && !failed ? "NOT DECIDED: nothing is certainly false, but not everything could be "
+                                             "decided (see the undecided conditions above)"
+            : rep->exit_code != 0 ? "FAILED: see the problems above"
             : within ? "consistent; every stated claim holds (some only within the precision of the data)"
                      : "consistent; every stated claim holds",
             rep->exit_code);

@@ -1257,7 +1257,8 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
         vigen_warn("%s: the tableau is symplectic only for separable H = T(p) + V(t, q) (bt != b); "
                    "for other H the stepper is not symplectic", label);
         (*warnings)++;
-    } else if (rep.symplectic == VIGEN_CHECK_NO) {
+    } else if (rep.symplectic == VIGEN_CHECK_NO && claim_symplectic != 0) {
+        /* (a file that says symplectic = false knows: no warning) */
         const vigen_check_problem *p = first_failing(&rep, VIGEN_PROBLEM_SYMPLECTIC, 0);
         vigen_warn("%s: the tableau is not symplectic (%ld of %ld conditions b_i at_ij + b_j a_ji - b_i b_j = 0%s "
                    "fail%s%s)",

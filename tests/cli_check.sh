@@ -137,6 +137,7 @@ if grep -q "order = 5: holds\|^order         5" "$work/stdout"; then fail "order
 grep_out 'note: b\[1\] = "0.5" is read as 0.5 +/- 0.05 (1 significant digit); if it is exact, write "1/2"'
 grep_out 'note: A\[1\]\[1\] = "0.25" is read as 0.25 +/- 0.005 (2 significant digits); if it is exact, write "1/4"'
 grep_out "the data are too short to decide"
+grep_out "^result        NOT DECIDED"
 sed 's/^  order = 5,$/  order = 4,/' "$data/gauss2_short_exact_values.lua" >"$work/g2_short_4.lua"
 run 1 "$work/g2_short_4.lua" --json
 json "d['claims']['order']['holds'] is None"

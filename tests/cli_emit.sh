@@ -78,6 +78,10 @@ check '[ $? -eq 0 ] && gcc -std=c11 -Wall -Wextra -Wpedantic -Werror -I"$SRC/run
 check '[ $? -eq 0 ] && [ -f "$T/rk4.c" ] && [ -f "$T/rk4.h" ]' "non-symplectic tableau still emitted, exit 0"
 check 'grep -q "warning: .*rk4.lua: the tableau is not symplectic (10 of 10 conditions" "$T/err.txt"' "RK4: warns 'not symplectic' despite -q"
 check 'grep -q "run .vigen check .*rk4.lua. for details" "$T/err.txt"' "RK4: points to vigen check"
+# the same tableau saying symplectic = false: the user knows, no warning
+sed 's/^return {/return { symplectic = false,/' "$SRC/tests/data/check/rk4.lua" >"$T/rk4_known.lua"
+"$VIGEN" emit "$T/rk4_known.lua" --name rk4k -o "$T" -q 2>"$T/err.txt"
+check '[ $? -eq 0 ] && ! grep -q "not symplectic" "$T/err.txt"' "RK4 claimed non-symplectic: no warning"
 check '! grep -q "not consistent" "$T/err.txt"' "RK4: its row sums hold, no consistency warning"
 check 'gcc -std=c11 -Wall -Wextra -Wpedantic -Werror -I"$SRC/runtime/include" -I"$T" -c "$T/rk4.c" -o "$T/rk4.o"' "RK4 stepper compiles"
 # Leok-Zhang Ex. 5 (iii) as printed: a_33 misprinted, so row 3 of A does not
