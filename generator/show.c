@@ -28,7 +28,10 @@ static char *display(const char *text, const arb_t x, slong digits)
 {
     if (text != NULL && vigen_decimal_is_rounded(text)) return vigen_strdup(text);
     if (arb_is_zero(x)) return vigen_strdup("0");
-    char *d = vigen_decimal_format(x, digits);
+    /* an exact integer stays one ("1", as generated files write it) */
+    char *d = vigen_decimal_format_integer(x);
+    if (d != NULL) return d;
+    d = vigen_decimal_format(x, digits);
     if (d == NULL && arb_contains_zero(x)) {
         /* an exact expression whose value is 0 (sin(pi), sqrt(2)^2 - 2) never
          * gives a ball excluding 0: certify |x| <= 0.5e-digits, as generate does */
