@@ -1266,6 +1266,29 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
                    p ? "; first: " : "", p ? p->message : "");
         (*warnings)++;
     }
+    /* A claimed order up to 7 is cheap to test (orders <= claim + 1 <= 8:
+     * milliseconds even for 10 stages); a certainly false one is warned
+     * about, since it becomes NAME_ORDER and the type's order field. */
+    if (claim_order >= 0 && claim_order <= 2 * t->s && claim_order + 1 <= 8) {
+        vigen_check_options oopt;
+        vigen_check_options_init(&oopt);
+        oopt.max_order = claim_order + 1;
+        oopt.path = label;
+        vigen_check_report orep;
+        vigen_check_report_init(&orep);
+        vigen_error oerr;
+        vigen_error_init(&oerr);
+        if (vigen_check_tableau(&orep, t, NULL, &oopt, &oerr) == VIGEN_OK &&
+            orep.claim_order_status == VIGEN_CHECK_NO) {
+            const vigen_check_level *L = &orep.orders[VIGEN_CHECK_GENERAL].level;
+            vigen_warn("%s: the file claims order %d, which is false (%s %d); the stepper's order field repeats "
+                       "the claim: run 'vigen check %s'", label, claim_order,
+                       L->capped ? "the order conditions hold up to order" : "the order is", L->value, label);
+            (*warnings)++;
+        }
+        vigen_error_clear(&oerr);
+        vigen_check_report_clear(&orep);
+    }
     if (*warnings > 0) {
         const vigen_check_problem *d = first_failing(&rep, VIGEN_PROBLEM_ROWSUM, 1);
         if (d == NULL) d = first_failing(&rep, VIGEN_PROBLEM_SYMPLECTIC, 1);

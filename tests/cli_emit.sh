@@ -123,6 +123,12 @@ check '[ $? -eq 2 ]' "unreadable input"
 printf 'return { name = "g2", s = 2, order = 6, c = { "1/2 - sqrt(3)/6", "1/2 + sqrt(3)/6" },\n  A = { { "1/4", "1/4 - sqrt(3)/6" }, { "1/4 + sqrt(3)/6", "1/4" } }, b = { "1/2", "1/2" } }\n' >"$T/g2_order6.lua"
 "$VIGEN" emit "$T/g2_order6.lua" --name g6 -o "$T" -q 2>"$T/err.txt"
 check '[ $? -eq 0 ] && grep -q "claims order 6, but a 2-stage method has order at most 4" "$T/err.txt"' "impossible order claim warned"
+sed 's/order = 6/order = 3/' "$T/g2_order6.lua" >"$T/g2_order3.lua"
+"$VIGEN" emit "$T/g2_order3.lua" --name g3c -o "$T" -q 2>"$T/err.txt"
+check '[ $? -eq 0 ] && grep -q "claims order 3, which is false (the order conditions hold up to order 4)" "$T/err.txt"' "false order claim warned"
+sed 's/order = 6/order = 4/' "$T/g2_order6.lua" >"$T/g2_order4.lua"
+"$VIGEN" emit "$T/g2_order4.lua" --name g4c -o "$T" -q 2>"$T/err.txt"
+check '[ $? -eq 0 ] && [ ! -s "$T/err.txt" ]' "true order claim: no warning"
 
 rm -rf "$T"
 exit $fail

@@ -437,9 +437,10 @@ static void test_audit(void)
     CHECK(strstr(audit_text.data, "not symplectic (10 of 10 conditions") != NULL);
     CHECK(strstr(audit_text.data, "not consistent") == NULL);
     CHECK(strstr(audit_text.data, "vigen check tests/data/check/rk4.lua") != NULL);
-    /* Leok-Zhang Ex. 5 (iii) as printed: a_33 misprinted; both fail and the
-     * entry is named */
-    CHECK(audit("tableaux/published/leok_zhang_ex5_iii.lua", &failures) == 4 && failures == 2);
+    /* Leok-Zhang Ex. 5 (iii) as printed: a_33 misprinted; both fail, the
+     * entry is named, and the paper's order 4 is false for the printed table */
+    CHECK(audit("tableaux/published/leok_zhang_ex5_iii.lua", &failures) == 5 && failures == 3);
+    CHECK(strstr(audit_text.data, "claims order 4, which is false (the order is 1)") != NULL);
     CHECK(strstr(audit_text.data, "not consistent") != NULL && strstr(audit_text.data, "row 3 of A") != NULL);
     CHECK(strstr(audit_text.data, "A[3][3]") != NULL);
     /* sum b = 0.51 + 1/2: the rounded 0.51 is [0.505, 0.515], sum b != 1 for certain */
