@@ -2642,18 +2642,31 @@ static int print_assumption(FILE *out, const char *name, const vigen_check_level
     return L->within_data;
 }
 
+/* A long integer for the text report: its first and last digits and its
+ * length ("30000...0000 (870 digits)"); short ones whole.  JSON has them whole. */
+static char *short_integer(const char *digits)
+{
+    size_t n = strlen(digits);
+    if (n <= 40) return vigen_strdup(digits);
+    return vigen_strdup_printf("%.12s...%s (%lu digits)", digits, digits + n - 8, (unsigned long)n);
+}
+
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
 {
     fputs(rep->path ? rep->path : "tableau", out);
     if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
     fprintf(out, ": %ld stage%s, %s\n", (long)rep->s, rep->s == 1 ? "" : "s",
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
-    if (rep->rational_denominator)
-        fprintf(out, "  entries: exact rationals, common denominator D = %s; ", rep->rational_denominator);
-    else if (rep->quadratic_d)
+    if (rep->rational_denominator) {
+        char *D = short_integer(rep->rational_denominator);
+        fprintf(out, "  entries: exact rationals, common denominator D = %s; ", D);
+        free(D);
+    } else if (rep->quadratic_d) {
+        char *D = short_integer(rep->quadratic_denominator);
         fprintf(out, "  entries: exact, in Q(sqrt(%s)): a + b sqrt(%s), common denominator D = %s; ", rep->quadratic_d,
-                rep->quadratic_d, rep->quadratic_denominator);
-    else
+                rep->quadratic_d, D);
+        free(D);
+    } else
         fprintf(out, "  entries: %s; ",
                 rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
                 : rep->rounded_entries ? "rounded decimals (half-ulp balls) or balls"
