@@ -8,8 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
-#include "check.h"
-#include "source.h"
+#include "vigen/check.h"
+#include "vigen/method.h"
 
 static double now(void)
 {

@@ -7,8 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
-#include "galerkin.h"
-#include "spec.h"
+#include "method/galerkin.h"
+#include "lua/spec.h"
 
 static double now(void)
 {

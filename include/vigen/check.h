@@ -1,0 +1,286 @@
+/* check.h — `vigen check`: certify what a PRK tableau is (MATH.md section 1).
+ *
+ * Everything is decided in ball arithmetic.  Each condition is a ball r = left
+ * side - right side, with three outcomes (issue 3: a condition holds only when
+ * its ball contains 0 and fails only when the ball excludes 0):
+ *   fails      the ball excludes 0 (certain);
+ *   holds      the ball contains 0, and
+ *                - when some entry the condition involves is a rounded decimal
+ *                  (a half-ulp ball) or a ball given by a caller: its radius
+ *                  is at most 2^-VIGEN_CHECK_DATA_BITS = 2^-10 times the size
+ *                  of the terms it compares; the condition then holds "within
+ *                  the precision of the data" (its exact value may differ
+ *                  from 0 by less than that radius) and the report shows the
+ *                  largest radius of such balls.  A wider ball containing 0 is
+ *                  undecided: the data are too short to decide (a 1-digit
+ *                  "0.5" is 0.5 +/- 0.05, 10% of itself, wide enough to
+ *                  "satisfy" conditions that fail by a few per cent).  Row
+ *                  sums and symplecticity pairs are intersected with an
+ *                  enclosure to second order around the midpoints, in which
+ *                  an entry that occurs twice varies once;
+ *                - when every entry it involves is an exact expression: the
+ *                  radius is at most 2^-(prec/2) times the size of the terms
+ *                  (the ball is as tight as the working precision makes it, not
+ *                  wide from cancellation), and the same verdicts came out at
+ *                  two successive precisions p and 2p (or the ball is exactly
+ *                  0);
+ *                - or, proved, when every entry of the tableau is rational
+ *                  with common denominator D: |v| D^k g < 1 (k entries per
+ *                  term, g the denominator of the constant); or every entry
+ *                  is a + b sqrt(d) for one squarefree d > 1, a and b rational
+ *                  with common denominator D: |v| |v'| (D^k g)^2 < 1, v' the
+ *                  same condition on the conjugate tableau (sqrt(d) ->
+ *                  -sqrt(d)), since v v' (D^k g)^2 = m^2 - d n^2 is an integer
+ *                  and m = n = 0 is the only way to make it 0;
+ *   undecided  anything else (an exact condition whose ball is still wide or
+ *              unconfirmed at the precision cap, a condition on rounded data
+ *              whose ball contains 0 but is wider than 2^-10 of its terms, or
+ *              a non-finite ball).
+ * An order, a simplifying assumption, consistency, symplecticity or a claim
+ * that rests on at least one hold within the precision of the data is
+ * reported as such ("order 4 within the precision of the data"; JSON status
+ * "within_data"), never as certain.  Such a claim still counts as holding for
+ * the exit status (0): the threshold makes its radius meaningful, at most
+ * 2^-10 of the terms compared.
+ *
+ * Notes: a rounded decimal with at most VIGEN_CHECK_NOTE_SHORT_DIGITS = 3
+ * significant digits in a file whose longest decimals have at least
+ * VIGEN_CHECK_NOTE_LONG_DIGITS = 10 is named, with its radius and the exact
+ * fraction to write if it is exact ("0.5" -> "1/2").
+ * The starting precision is adequate to the entries: enough bits for the
+ * digits of every rounded decimal and of every exact literal (a number's
+ * digits, and |k| log10 B for a power B^k), plus 64, at least 128.  When an
+ * exact condition is undecided or unconfirmed the tableau is re-evaluated at
+ * twice the precision, up to max(max_prec, twice the start).  An exact
+ * difference smaller than about 2^-(final precision) of the terms is below
+ * what any finite precision can see; the literal digits keep the visible ones
+ * (such as 1/10^45) inside the starting precision.
+ *
+ * Checks: row sums (c_i = sum_j a_ij, ct_i = sum_j at_ij when ct is given,
+ * sum b = 1, sum bt = 1), symplecticity (bt = b, b_i at_ij + b_j a_ji - b_i b_j
+ * = 0; for separable H the pair conditions b_i at_ij + bt_j a_ji - b_i bt_j = 0
+ * suffice, so splitting methods written with bt != b are reported as
+ * "symplectic for separable H" and a claim symplectic = true holds for them),
+ * order conditions of every bicoloured tree up to max_order (general H,
+ * separable H, each part alone as an RK method), simplifying assumptions B, C,
+ * D and stage order of each part, claims of the file, and --against.  A
+ * tableau without At is one RK method used for both parts (At = A, bt = b,
+ * ct = c).  Every failed or undecided row sum and symplecticity pair is a
+ * problem of the report.  Failed row-sum and symplecticity conditions that all
+ * involve one entry are traced back to it: the entry is named (1-based) with
+ * the value that satisfies them, solved for with the entry as an exact unknown.
+ *
+ * A claim order = p means the order is p: it holds when every condition up to
+ * order p holds and some condition of order p + 1 fails (for general H, or for
+ * separable H), so orders up to p + 1 are evaluated (p + 1 <= 12); when p + 1
+ * exceeds VIGEN_TREE_MAX_ORDER and no condition up to max_order fails, the
+ * claim is undecided.
+ */
+#ifndef VIGEN_CHECK_H
+#define VIGEN_CHECK_H
+
+/* A condition on rounded data holds when its ball contains 0 with a radius at
+ * most 2^-VIGEN_CHECK_DATA_BITS of the size of its terms. */
+#define VIGEN_CHECK_DATA_BITS 10
+/* Short decimals that look exact: at most this many significant digits ... */
+#define VIGEN_CHECK_NOTE_SHORT_DIGITS 3
+/* ... in a file whose longest decimal has at least this many. */
+#define VIGEN_CHECK_NOTE_LONG_DIGITS 10
+
+#include <stdio.h>
+#include <arb.h>
+#include "vigen/error.h"
+#include "vigen/tableau.h"
+#include "vigen/trees.h"
+
+/* Hook for files that are not tableau files: loads path into t (uninitialised
+ * on entry, initialised on success), generating the tableau when path is a
+ * spec file.  vigen_source_load (source.h) has exactly this signature; with
+ * NULL the checker reads tableau files only (vigen_tableau_load). */
+typedef int (*vigen_check_loader_fn)(vigen_tableau *t, const char *path, slong digits, vigen_error *err);
+
+typedef struct {
+    const char *path;            /* FILE */
+    const char *against;         /* FILE2 or NULL */
+    int max_order;               /* P: orders 1..P are checked; default 8, at most VIGEN_TREE_MAX_ORDER */
+    int json;                    /* print one JSON object instead of the text report */
+    slong prec;                  /* starting precision in bits; 0 = adequate to the entries (>= 128) */
+    slong max_prec;              /* cap for the refinement; default 4096 (raised to twice the
+                                    starting precision when the entries need more) */
+    slong spec_digits;           /* digits asked of the loader for spec files; default 34 */
+    vigen_check_loader_fn load;  /* spec hook, see above; NULL = tableau files only */
+} vigen_check_options;
+
+void vigen_check_options_init(vigen_check_options *opt);
+
+/* Tri-state outcome. */
+enum { VIGEN_CHECK_NO = 0, VIGEN_CHECK_YES = 1, VIGEN_CHECK_UNDECIDED = 2 };
+
+/* A level such as an order or B(p): the largest p such that everything up to
+ * p holds.  capped: everything up to the cap held (the true level may be
+ * higher).  undecided: level + 1 is undecided rather than failing.
+ * within_data: some condition up to the level holds only within the
+ * precision of the data (the level is not certain).  too_short: level + 1 is
+ * undecided because the rounded data are too short (every undecided condition
+ * there has a ball containing 0 wider than 2^-10 of its terms). */
+typedef struct {
+    int value;
+    int capped;
+    int undecided;
+    int within_data;
+    int too_short;
+} vigen_check_level;
+
+/* Order conditions of one family of trees. */
+enum {
+    VIGEN_CHECK_GENERAL = 0,     /* every bicoloured tree: any H */
+    VIGEN_CHECK_SEPARABLE = 1,   /* alternating trees: H = T(p) + V(q) */
+    VIGEN_CHECK_A_ALONE = 2,     /* black trees: (c, A, b) as an RK method */
+    VIGEN_CHECK_AT_ALONE = 3,    /* white trees: (ct, At, bt) as an RK method */
+    VIGEN_CHECK_FAMILIES = 4
+};
+
+typedef struct {
+    vigen_check_level level;
+    int evaluated_to;            /* highest order whose conditions were all evaluated */
+    slong count[VIGEN_TREE_MAX_ORDER + 1], hold[VIGEN_TREE_MAX_ORDER + 1],
+          fail[VIGEN_TREE_MAX_ORDER + 1], undecided[VIGEN_TREE_MAX_ORDER + 1];
+    slong hold_data[VIGEN_TREE_MAX_ORDER + 1];        /* of hold: within the precision of the data */
+    slong undecided_short[VIGEN_TREE_MAX_ORDER + 1];  /* of undecided: the data are too short */
+    /* The first tree (lowest order, enumeration order) that fails, and the
+     * first that is undecided; order 0 when there is none. */
+    int fail_order, undecided_order;
+    char *fail_tree, *undecided_tree;
+    arb_t fail_value, fail_expected;            /* sum bhat_i Phi_i(t) and 1/gamma(t) */
+    arb_t undecided_value, undecided_expected;
+} vigen_check_orders;
+
+/* Sections of the report, for the statistics of holding conditions. */
+enum {
+    VIGEN_CHECK_SECT_ROWSUM = 0,
+    VIGEN_CHECK_SECT_SYMPLECTIC = 1,
+    VIGEN_CHECK_SECT_ORDER = 2,
+    VIGEN_CHECK_SECT_SIMPLIFYING = 3,
+    VIGEN_CHECK_SECT_AGAINST = 4,
+    VIGEN_CHECK_SECTIONS = 5
+};
+
+/* How the conditions of one section that hold were decided. */
+typedef struct {
+    slong exact;                 /* on exact entries (confirmed at two precisions, or exactly 0) */
+    slong data;                  /* within the precision of the data (rounded decimals, balls) */
+    mag_t radius;                /* the largest radius among the latter */
+    slong too_short;             /* undecided (not holding): balls on rounded data that contain 0
+                                    but are wider than 2^-10 of their terms */
+} vigen_check_holds;
+
+/* A short decimal in a file of long ones: it may be an exact value typed as
+ * a decimal ("0.5" for 1/2), read as a wide ball. */
+typedef struct {
+    char *entry;                 /* "b[1]", "A[2][1]" */
+    char *text;                  /* the decimal as written */
+    slong digits;                /* its significant digits */
+    char *radius;                /* half a unit in its last digit ("0.05") */
+    char *fraction;              /* its exact value ("1/2") */
+    char *message;
+} vigen_check_note;
+
+enum { VIGEN_PROBLEM_ROWSUM, VIGEN_PROBLEM_SYMPLECTIC, VIGEN_PROBLEM_CLAIM, VIGEN_PROBLEM_AGAINST };
+
+typedef struct {
+    int kind;                    /* VIGEN_PROBLEM_* */
+    const char *claim;           /* claims: "order" or "symplectic"; NULL otherwise */
+    const char *matrix;          /* "A", "At", "b", "bt", "c", "ct"; NULL when not applicable */
+    slong row, col;              /* 1-based; 0 when not applicable */
+    int undecided;               /* the condition is undecided, not failing */
+    int diagnosed;               /* names the single entry that explains the failures */
+    int has_value, has_expected;
+    arb_t value, expected;       /* balls (row sums, symplecticity, against, diagnoses) */
+    char *value_json, *expected_json;  /* for claims: JSON literals ("4", "true") */
+    char *message;               /* one line */
+} vigen_check_problem;
+
+typedef struct {
+    char *path, *name;
+    slong s, prec;               /* precision of the final round, bits */
+    slong prec_first;            /* precision of the first round */
+    slong rounds;                /* evaluations done (1 + refinements and confirmations) */
+    slong undecided_left;        /* undecided balls in the final round */
+    slong undecided_short;       /* ... of which on rounded data too short to decide them */
+    const char *undecided_reason;/* why refining stopped with undecided balls (static string) */
+    int max_order;
+    int has_At, has_bt, has_ct;
+    int rounded_entries;         /* some entry is a rounded decimal (or the tableau is balls only) */
+    int exact_entries;           /* some entry is an exact expression */
+    char *rational_denominator;  /* every entry rational: their common denominator D (decimal); else NULL */
+    char *quadratic_d;           /* every entry a + b sqrt(d), a and b rational, for one squarefree d > 1
+                                    (and some b != 0): d (decimal); else NULL */
+    char *quadratic_denominator; /* ... and the common denominator D of every a and b (decimal) */
+    slong proved;                /* holds proved exactly by the denominator bound (rational tableaux) or
+                                    by the norm bound (quadratic tableaux) */
+    vigen_check_holds holds[VIGEN_CHECK_SECTIONS];
+
+    int consistent;              /* row sums and sum b = 1 (tri-state) */
+    int consistent_within_data;  /* consistent, some condition only within the precision of the data */
+    int symplectic_within_data;  /* symplectic (or for separable H), likewise */
+    int symplectic;              /* tri-state: bt = b and b_i at_ij + b_j a_ji = b_i b_j */
+    int symplectic_separable;    /* tri-state: b_i at_ij + bt_j a_ji = b_i bt_j, which suffices
+                                    for separable H (GNI Thm VI.4.6); bt may differ from b */
+    slong sym_fail, sym_undecided, sym_total;   /* conditions of symplecticity */
+    slong row_fail, row_undecided, row_total;   /* row-sum conditions */
+
+    vigen_check_orders orders[VIGEN_CHECK_FAMILIES];
+
+    /* Simplifying assumptions, [0] = (c, A, b), [1] = (ct, At, bt). */
+    vigen_check_level B[2], C[2], D[2], stage_order[2];
+    int simplifying_cap;
+
+    int claim_order;             /* -1 when the file states none */
+    int claim_order_status;      /* tri-state */
+    int claim_order_separable;   /* the claim matches the separable order only */
+    int claim_order_beyond;      /* undecided because order claim + 1 exceeds VIGEN_TREE_MAX_ORDER */
+    int claim_order_within_data; /* holds, resting on conditions that hold within the precision of the data */
+    int claim_order_too_short;   /* undecided because the data are too short */
+    int claim_symplectic;        /* -1, 0, 1 */
+    int claim_symplectic_status;
+    int claim_symplectic_separable;  /* the claim holds for separable H only */
+    int claim_symplectic_within_data;
+
+    int against_checked;
+    slong against_differences;
+    slong against_undecided;
+    slong against_stages;        /* FILE2's stage count when it differs from s, else 0 */
+
+    slong nproblems, alloc_problems;
+    vigen_check_problem *problems;
+
+    slong nnotes;
+    vigen_check_note *notes;     /* short decimals that look exact */
+
+    int exit_code;               /* 0 consistent, every claim holds (within the precision of the
+                                    data counts) and (--against) no entry differs or is
+                                    undecided; 1 otherwise */
+} vigen_check_report;
+
+void vigen_check_report_init(vigen_check_report *rep);
+void vigen_check_report_clear(vigen_check_report *rep);
+
+/* Checks t, loaded (texts) or evaluated (balls).  When t has entry texts it is
+ * (re-)evaluated here at opt->prec (or an adequate precision) and refined as
+ * described above; a tableau with balls only is checked at t->prec as it is.
+ * against: NULL, or a second tableau compared entry by entry.  path is used
+ * in messages only (may be NULL).  Returns VIGEN_OK (the outcome is in rep,
+ * including rep->exit_code), or an error when t cannot be evaluated. */
+int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against,
+                        const vigen_check_options *opt, vigen_error *err);
+
+void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
+void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
+
+/* Loads opt->path (and opt->against), checks, prints the report to out and
+ * returns the exit status: 0 consistent and every stated claim holds, 1
+ * something fails or cannot be decided, 2 unreadable input or usage error
+ * (err then holds the message; nothing is printed to out). */
+int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err);
+
+#endif

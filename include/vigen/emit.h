@@ -1,0 +1,125 @@
+/* emit.h — `vigen emit`: compiles a tableau into a specialised C stepper.
+ *
+ *   vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]
+ *              [--allow-inexact] [-q]
+ *
+ * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
+ * templates/stepper.h.in and templates/stepper.c.in (see template.h) and
+ * linked against the runtime library (runtime/include/vigen/runtime.h).
+ *
+ * - FILE is a tableau file or a spec file (nodes and basis, as for vigen
+ *   generate).  A spec is generated on the fly with vigen_emit_spec_digits
+ *   certified digits (40 for double and long double, 60 for float128; twice
+ *   as many, up to 960, in the rare case that a value lies that close to a
+ *   rounding boundary), and the header says so.
+ * - Coefficients are literals correctly rounded (to nearest, ties to even)
+ *   from the certified balls to the target type: 53, 64 or 113 bits, printed
+ *   as exact C hex-float literals.  When a ball straddles a rounding boundary
+ *   the tableau is re-evaluated at higher precision; an entry given as a
+ *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION, with a
+ *   message naming the entry and what to do: more digits, an exact entry, or
+ *   --allow-inexact) unless --allow-inexact asks for the decimal as written to
+ *   be rounded: then one warning lists how many entries were rounded so.  An
+ *   entry that is a ball around zero of radius below 2^-(bits+20) is emitted
+ *   as an exact zero with a warning (one per entry).
+ * - A tableau without At is a classical RK method: At = A, bt = b.
+ * - NAME becomes a C identifier: characters outside [A-Za-z0-9_] become '_',
+ *   a leading digit or underscore gets the prefix "m_", C keywords get the
+ *   suffix "_"; a warning tells when NAME changed.  The file names use the
+ *   sanitised name, so NAME cannot point elsewhere.  Texts from the tableau
+ *   file (name, source, description, entry texts) enter the output only inside
+ *   comments or string literals and only as printable ASCII with comment and
+ *   string terminators broken.
+ * - Output is byte-identical for identical input: the header names the
+ *   tableau, its digest, the generator version and the options; there is no
+ *   timestamp and no path.  Digest: FNV-1a 64 of the canonical text
+ *   "vigen-tableau-v1\n" + name + "\n" + s + "\n" then every entry text of c,
+ *   A (row-major), b, At, ct, bt, one per line, "-" for an absent part.
+ * - The tableau is audited (vigen_emit_audit below): a warning on stderr,
+ *   not silenced by -q, when it is certainly not consistent or not
+ *   symplectic; the files are still written and the exit status is 0.
+ * - Structure: the stage equations are solved by fixed-point iteration or
+ *   simplified Newton (runtime options).  When the tableau's dependency graph
+ *   is acyclic for separable H (H = T(p) + V(t, q)), an explicit path is also
+ *   emitted and used when sys->separable is set; when it is acyclic for any H
+ *   only the explicit path is emitted.  Equal rows share stage values and
+ *   gradients, zero coefficients are skipped, and the gradient at the end of
+ *   a step is reused at the start of the next (first same as last) when the
+ *   tableau has a zero row and a row equal to b.
+ *
+ * Data handed to the templates (fields of the Lua table): NAME, UNAME, REAL,
+ * SFX, HAM, STEPPER_TYPE, real_check, header (comment lines), coef_lines,
+ * tableau_name, s, order, c[i], a[i][j], at[i][j], b[i], bt[i] (literals;
+ * false = exact zero; c never false), extrap ("lagrange" or "copy"),
+ * inv[j][m] (1/(c_j - c_m)), explicit_mode ("none", "separable", "general"),
+ * explicit_separable, nx, copy_q0, copy_p0, xops, fsal, fsal_swaps,
+ * nevals_f, nevals_g.
+ */
+#ifndef VIGEN_EMIT_H
+#define VIGEN_EMIT_H
+
+#include <stddef.h>
+#include "vigen/error.h"
+#include "vigen/tableau.h"
+
+enum { VIGEN_REAL_DOUBLE, VIGEN_REAL_LONG_DOUBLE, VIGEN_REAL_FLOAT128 };
+
+typedef struct {
+    const char *name;        /* requested NAME (sanitised by the emitter) */
+    int real;                /* VIGEN_REAL_* */
+    const char *input_label; /* how the input is named in the header and in warnings
+                                (basename); a tableau made by the generator in this run
+                                (generated_now) is said to come from the spec of that name */
+    int allow_inexact;       /* round the midpoint of a ball that straddles a rounding
+                                boundary (decimal entries with too few digits), with a
+                                warning, instead of refusing */
+} vigen_emit_options;
+
+/* Certified digits with which `vigen emit` generates a spec for a target
+ * type (VIGEN_REAL_*): 40 for double and long double, 60 for float128.  The
+ * emitter rounds the generated decimals, each a ball of relative radius at
+ * most 5 * 10^-digits; a ball of width w straddles a boundary between two
+ * neighbouring values of the target type (relative spacing 2^-52 .. 2^-53 for
+ * double, 2^-63 .. 2^-64 for long double, 2^-112 .. 2^-113 for float128) with
+ * probability about w over that spacing: 40 digits leave 10^-23 (double) and
+ * 10^-20 (long double) per entry; 40 digits would leave 10^-5 for float128,
+ * 60 leave 10^-25. */
+slong vigen_emit_spec_digits(int real);
+
+/* Renders the header and source for a loaded tableau (balls need not be
+ * evaluated: the emitter evaluates at the precision it needs).  *h_text and
+ * *c_text are heap strings; *ident receives the sanitised name.  Warnings
+ * (vigen_warn, after success only): entries emitted as exact zeros, one per
+ * entry, and with allow_inexact one summary of the entries rounded as
+ * written.  VIGEN_E_PRECISION: an entry cannot be rounded correctly; the
+ * message names it (not the file: callers prefix the path) and says what to
+ * do. */
+int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
+                      char **ident, vigen_error *err);
+
+/* Sanitises a requested name into a C identifier (heap string). */
+char *vigen_emit_identifier(const char *name);
+
+/* The audit `vigen emit` runs on every tableau it compiles: vigen_check_tableau
+ * on the row sums (c_i = sum_j a_ij, ct_i = sum_j at_ij, sum b = 1, sum bt = 1)
+ * and symplecticity (b_i at_ij + b_j a_ji = b_i b_j, bt = b), the order
+ * conditions left out.  Each certain failure is one vigen_warn (not
+ * consistent; not symplectic, or symplectic only for separable H when just
+ * bt != b spoils it), followed by the checker's single-entry diagnosis when it
+ * has one and a line pointing to `vigen check PATH`; *warnings counts the
+ * failures (0: nothing certainly wrong; conditions that hold only within the
+ * precision of rounded data, or are undecided, never warn).  t is evaluated
+ * in place (its texts are kept; its claims are set aside for the audit and
+ * restored).  path names the file in the messages (NULL: the tableau name).
+ * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
+int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
+
+/* Loads FILE for emission: a tableau file as it is; a spec generated with
+ * vigen_emit_spec_digits(real) digits, doubled (up to 960) while the emitter
+ * still finds a value it cannot round, with allow_inexact honoured only at
+ * the last attempt.  Renders into *h, *c, *ident; t is left initialised
+ * (on success and on failures after loading); *loaded says whether it is. */
+int vigen_emit_load_render(vigen_tableau *t, int *loaded, const char *file, vigen_emit_options *opt, char **h,
+                           char **c, char **ident, vigen_error *err);
+
+#endif

@@ -1,0 +1,19 @@
+/* source.h — "a tableau, from wherever the user has it": a tableau file is
+ * read as it is; a spec file is run through the generator.  Used by show,
+ * check and emit, which all accept either kind of file. */
+#ifndef VIGEN_SOURCE_H
+#define VIGEN_SOURCE_H
+
+#include "vigen/error.h"
+#include "vigen/tableau.h"
+
+/* 1 if the file returns a table with an A field (a tableau), 0 if it looks
+ * like a spec (nodes and basis), negative with err set when it cannot be run. */
+int vigen_source_is_tableau(const char *path, vigen_error *err);
+
+/* Loads path into t (uninitialised on entry; initialised on success).  A spec
+ * is generated with `digits` certified digits; a tableau file is loaded and
+ * evaluated at a precision adequate for `digits` digits. */
+int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_error *err);
+
+#endif

@@ -1,0 +1,80 @@
+/* tableau.h — a partitioned Runge–Kutta tableau (c, A, b; ct, At, bt) and its
+ * file format, shared by the generator, the checker and the emitter.
+ *
+ * A tableau file is a Lua chunk returning
+ *   { name = "gauss2", s = 2,
+ *     c = {...}, A = {{...}, ...}, b = {...},           -- q part (required)
+ *     At = {{...}, ...}, ct = {...}, bt = {...},         -- p part (optional; bt defaults to b,
+ *                                                       --   ct to the row sums of At)
+ *     digits = 34, source = "...", description = "...",  -- metadata (optional)
+ *     basis = '...', nodes = '...', generator = "vigen 0.1.0",
+ *     order = 4, symplectic = true }                     -- claims (optional; checked by vigen check)
+ * Entries are strings.  A plain decimal with a point or an exponent
+ * ("0.2113248654051871177454256097490213", "-1.5e-3", "0e-40") stands for the
+ * ball of radius half a unit in its last digit: it was rounded.  Anything else
+ * ("0", "1/2", "1/6 - sqrt(2)/48", "(pi-2)/(2*pi)") is an exact expression.
+ * Lua integers are accepted as exact; Lua floats are refused.
+ */
+#ifndef VIGEN_TABLEAU_H
+#define VIGEN_TABLEAU_H
+
+#include <arb.h>
+#include <arb_mat.h>
+#include "vigen/error.h"
+#include "vigen/limits.h"
+
+typedef struct {
+    char *name;
+    slong s;
+    int has_At, has_ct, has_bt;
+
+    /* Entry texts, row-major for matrices (A_text[i*s+j]); NULL when absent. */
+    char **c_text, **b_text, **A_text, **ct_text, **bt_text, **At_text;
+
+    /* Balls, valid after vigen_tableau_evaluate or the generator. */
+    slong prec;                  /* precision of the balls; 0 = not evaluated */
+    arb_ptr c, b, ct, bt;        /* bt mirrors b when has_bt == 0 */
+    arb_mat_t A, At;             /* At zero when has_At == 0 */
+
+    /* Metadata. */
+    slong digits;                /* certified digits of a generated file; 0 = exact/hand-written */
+    char *description, *source, *basis, *nodes, *generator;
+    int claim_order;             /* -1 when absent */
+    int claim_symplectic;        /* -1 absent, 0 false, 1 true */
+    int generated_now;           /* 1: made by the generator in this run (from a spec), not read */
+} vigen_tableau;
+
+/* Allocates an s-stage tableau with all balls zero and no texts. */
+void vigen_tableau_init(vigen_tableau *t, slong s);
+void vigen_tableau_clear(vigen_tableau *t);
+
+/* Reads a tableau file in the sandbox.  Messages name the file and the entry
+ * ("gauss2.lua: A[2][1]: ..."): missing fields, wrong sizes, Lua floats,
+ * unparsable expressions.  Does not evaluate; call vigen_tableau_evaluate. */
+int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_limits *limits,
+                       vigen_error *err);
+
+/* (Re)computes the balls from the entry texts at precision prec. */
+int vigen_tableau_evaluate(vigen_tableau *t, slong prec, vigen_error *err);
+
+/* Evaluates one entry text: rounded decimal (half-ulp ball) or exact expression. */
+int vigen_tableau_entry_eval(arb_t res, const char *text, slong prec, vigen_error *err);
+
+/* Fills every *_text from the balls with `digits` certified significant digits
+ * (entries that are exactly zero become "0"; balls containing zero become
+ * "0eK" with the certified absolute bound).  Returns VIGEN_E_PRECISION when some
+ * entry cannot be certified at the balls' precision. */
+int vigen_tableau_texts_from_balls(vigen_tableau *t, slong digits, vigen_error *err);
+
+/* Serialises as a tableau file (Lua) into a string; deterministic. */
+char *vigen_tableau_to_lua(const vigen_tableau *t);
+
+/* Writes text to path atomically (temporary file in the same directory, then
+ * rename); "-" means standard output. */
+int vigen_write_file_atomic(const char *path, const char *text, vigen_error *err);
+
+/* max over i, j of |b_i at_ij + b_j a_ji - b_i b_j| as a ball (contains 0 for a
+ * symplectic method).  Requires At. */
+void vigen_tableau_symplectic_residual(arb_t res, const vigen_tableau *t, slong prec);
+
+#endif

@@ -1,0 +1,658 @@
+/* sandbox.c — a capped Lua 5.4 state for spec and tableau files.
+ *
+ * Layout of the state:
+ *   - libraries: base, math, string, table only; dofile, loadfile, load,
+ *     require, collectgarbage and string.dump removed; print writes to stderr
+ *     (never to stdout, which may carry emitted code);
+ *   - what would run outside the instruction cap is refused: setmetatable
+ *     with a __gc field (Lua runs finalisers with hooks off) and the pattern
+ *     functions string.find/match/gmatch/gsub (backtracking in C);
+ *   - the allocator counts bytes and refuses to pass memory_limit;
+ *   - a count hook charges executed VM instructions against a budget that is
+ *     reset at every top-level call; once the budget is spent the hook fires on
+ *     every instruction, so a script cannot swallow the error with pcall and
+ *     carry on;
+ *   - the globals table is strict: reading an unknown name is an error that
+ *     lists the spec-file vocabulary;
+ *   - the vocabulary: node and basis family constructors (one closure per name,
+ *     the node names taken from nodes.h's list) and the ball library (ball.c).
+ *
+ * The sandbox struct is the allocator's user data, so the hook and the
+ * allocator reach it through lua_getallocf.
+ */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <lauxlib.h>
+#include <lualib.h>
+
+#include "lua/ball.h"
+#include "method/nodes.h"
+#include "lua/sandbox.h"
+
+#define MIB ((size_t)1 << 20)
+
+struct vigen_sandbox {
+    lua_State *L;
+    size_t memory_limit, memory_used;
+    int memory_hit;                 /* the allocator refused a block in this call */
+    long instruction_limit, instructions_left;
+    int instruction_step;           /* the count the hook is armed with */
+    int instructions_hit;           /* budget spent in this call */
+    long total_left;                /* instructions left for the whole life of the state (all calls) */
+    int total_hit;                  /* ...and that budget is spent */
+    int hit_line;                   /* line running when the budget ran out */
+    int depth;                      /* nesting of vigen_sandbox_pcall */
+    char *display;                  /* file name for messages ("spec.lua") */
+};
+
+/* The basis families of the spec vocabulary (the node families come from nodes.h). */
+const char *const vigen_basis_family_names[] = { "monomials", "trig", "legendre", "chebyshev_t", NULL };
+static const char *const function_names = "sqrt, exp, log, sin, cos, tan, pi, exact";
+
+static char family_mt_key;          /* registry key of the family descriptor metatable */
+
+typedef struct {
+    int kind;
+    const char *family;
+    lua_Integer s;
+} family_desc;
+
+/* Process-wide defaults; the command line changes them with --max-memory and
+ * --max-instructions (vigen_sandbox_limits_set_default). */
+static vigen_sandbox_limits default_limits = {256 * MIB, 50000000L};
+
+void vigen_sandbox_limits_default(vigen_sandbox_limits *limits) { *limits = default_limits; }
+
+void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits)
+{
+    if (limits->memory_limit > 0) default_limits.memory_limit = limits->memory_limit;
+    if (limits->instruction_limit > 0) default_limits.instruction_limit = limits->instruction_limit;
+}
+
+lua_State *vigen_sandbox_state(vigen_sandbox *sb) { return sb->L; }
+
+void vigen_sandbox_lift_memory_cap(vigen_sandbox *sb) { sb->memory_limit = (size_t)-1 / 2; }
+
+/* ------------------------------------------------------------------ floats */
+
+size_t vigen_float_format(char *buf, size_t size, double x)
+{
+    char *text = NULL;
+    for (int digits = 1; digits <= 17; digits++) {
+        free(text);
+        text = vigen_strdup_printf("%.*g", digits, x);
+        if (x != x || strtod(text, NULL) == x) break;
+    }
+    size_t n = strlen(text);
+    if (strspn(text, "-0123456789") == n) {     /* Lua shows integral floats with ".0" */
+        char *t = vigen_strdup_printf("%s.0", text);
+        free(text);
+        text = t;
+        n += 2;
+    }
+    if (size > 0) {
+        size_t k = n < size - 1 ? n : size - 1;
+        memcpy(buf, text, k);
+        buf[k] = '\0';
+    }
+    free(text);
+    return n;
+}
+
+/* Pushes the text of a float (in Lua memory, so nothing leaks if a later call raises). */
+const char *vigen_push_float_text(lua_State *L, double x)
+{
+    luaL_Buffer b;
+    size_t n = vigen_float_format(NULL, 0, x);
+    char *p = luaL_buffinitsize(L, &b, n + 1);
+    vigen_float_format(p, n + 1, x);
+    luaL_pushresultsize(&b, n);
+    return lua_tostring(L, -1);
+}
+
+/* ------------------------------------------------------------------ caps */
+
+static void *sandbox_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
+{
+    vigen_sandbox *sb = ud;
+    size_t old = ptr ? osize : 0;
+    if (nsize == 0) {
+        free(ptr);
+        sb->memory_used -= old;
+        return NULL;
+    }
+    if (nsize > old && (sb->memory_used > sb->memory_limit ||
+                        nsize - old > sb->memory_limit - sb->memory_used)) {
+        sb->memory_hit = 1;
+        return NULL;
+    }
+    void *q = realloc(ptr, nsize);
+    if (q == NULL) return NULL;
+    sb->memory_used = sb->memory_used - old + nsize;
+    return q;
+}
+
+static vigen_sandbox *sandbox_of(lua_State *L)
+{
+    void *ud = NULL;
+    lua_getallocf(L, &ud);
+    return ud;
+}
+
+static void arm_hook(vigen_sandbox *sb);
+
+static void count_hook(lua_State *L, lua_Debug *ar)
+{
+    vigen_sandbox *sb = sandbox_of(L);
+    if (!sb->instructions_hit) {
+        sb->instructions_left -= sb->instruction_step;
+        sb->total_left -= sb->instruction_step;
+        if (sb->instructions_left > 0 && sb->total_left > 0) {
+            arm_hook(sb);
+            return;
+        }
+        sb->instructions_hit = 1;
+        sb->total_hit = sb->total_left <= 0;
+        if (lua_getinfo(L, "l", ar)) sb->hit_line = ar->currentline;
+        /* From now on every instruction raises: pcall cannot absorb the cap. */
+        lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
+    }
+    lua_pushliteral(L, "instruction cap reached");
+    lua_error(L);
+}
+
+/* The hook fires every `step` instructions (at most HOOK_STEP): fine enough
+ * that the budget of the whole run (total_left) sees every long call, coarse
+ * enough to cost nothing measurable. */
+#define HOOK_STEP 4096
+
+static void arm_hook(vigen_sandbox *sb)
+{
+    long step = sb->instructions_left < sb->total_left ? sb->instructions_left : sb->total_left;
+    if (step > HOOK_STEP) step = HOOK_STEP;
+    if (step < 1) step = 1;
+    sb->instruction_step = (int)step;
+    lua_sethook(sb->L, count_hook, LUA_MASKCOUNT, (int)step);
+}
+
+/* Start of a top-level call: fresh instruction budget, cap flags cleared. */
+static void reset_budget(vigen_sandbox *sb)
+{
+    sb->memory_hit = 0;
+    sb->instructions_hit = 0;
+    sb->hit_line = 0;
+    sb->instructions_left = sb->instruction_limit;
+    arm_hook(sb);
+}
+
+/* ------------------------------------------------------------------ errors */
+
+/* Lua's short_src truncates long names to "...tail"; put the whole name back
+ * and make sure the message starts with "NAME:". */
+static char *message_with_position(const char *display, const char *msg)
+{
+    size_t dn = strlen(display);
+    if (msg == NULL) return vigen_strdup_printf("%s: (error object is not a string)", display);
+    if (strncmp(msg, display, dn) == 0 && msg[dn] == ':') return vigen_strdup(msg);
+    if (strncmp(msg, "...", 3) == 0) {
+        const char *rest = msg + 3;
+        for (size_t k = dn; k > 0; k--) {
+            if (strncmp(rest, display + dn - k, k) == 0 && rest[k] == ':')
+                return vigen_strdup_printf("%s%s", display, rest + k);
+        }
+    }
+    return vigen_strdup_printf("%s: %s", display, msg);
+}
+
+static char *memory_text(size_t bytes)
+{
+    if (bytes % MIB == 0) return vigen_strdup_printf("%zu MiB", bytes / MIB);
+    return vigen_strdup_printf("%zu bytes", bytes);
+}
+
+/* Translates a failed load or call; the error object is on top and is popped. */
+static int translate_error(vigen_sandbox *sb, int status, vigen_error *err)
+{
+    lua_State *L = sb->L;
+    const char *msg = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
+    if (sb->instructions_hit && sb->total_hit) {
+        vigen_error_set(err, VIGEN_E_LIMIT,
+                        "%s: its Lua code ran for more than %ld instructions in all (the basis functions are "
+                        "called for every evaluation of the rigorous integrals; 20 times the per-call cap); "
+                        "if it really needs more, raise the cap with the option --max-instructions N",
+                        sb->display, 20 * sb->instruction_limit);
+    } else if (sb->instructions_hit) {
+        char *where = sb->hit_line > 0 ? vigen_strdup_printf("; it was stopped at line %d", sb->hit_line)
+                                       : vigen_strdup("");
+        vigen_error_set(err, VIGEN_E_LIMIT,
+                        "%s: the file ran for more than %ld Lua instructions (an endless loop?)%s; "
+                        "if it really needs more, raise the cap with the option --max-instructions N",
+                        sb->display, sb->instruction_limit, where);
+        free(where);
+    } else if (sb->memory_hit && (status == LUA_ERRMEM || (msg && strcmp(msg, "not enough memory") == 0))) {
+        char *cap = memory_text(sb->memory_limit);
+        vigen_error_set(err, VIGEN_E_LIMIT,
+                        "%s: the file used more than %s of memory (a runaway table or string?); "
+                        "if it really needs more, raise the cap with the option --max-memory MIB",
+                        sb->display, cap);
+        free(cap);
+    } else if (status == LUA_ERRMEM) {
+        vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", sb->display);
+    } else {
+        char *m = message_with_position(sb->display, msg);
+        vigen_error_set(err, status == LUA_ERRSYNTAX ? VIGEN_E_SYNTAX : VIGEN_E_LUA, "%s", m);
+        free(m);
+    }
+    lua_pop(L, 1);
+    return err ? err->code : (sb->instructions_hit || sb->memory_hit ? VIGEN_E_LIMIT : VIGEN_E_LUA);
+}
+
+/* Message handler: turns any error object into a string while still protected. */
+static int message_handler(lua_State *L)
+{
+    int t = lua_type(L, 1);
+    if (t == LUA_TSTRING) return 1;
+    if (t == LUA_TNUMBER) {
+        lua_pushvalue(L, 1);
+        lua_tostring(L, -1);
+        return 1;
+    }
+    if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING) return 1;
+    lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+    return 1;
+}
+
+int vigen_sandbox_pcall(vigen_sandbox *sb, int nargs, int nresults, vigen_error *err)
+{
+    lua_State *L = sb->L;
+    int base = lua_gettop(L) - nargs;        /* index of the function */
+    if (!lua_checkstack(L, 2)) {
+        lua_settop(L, base - 1);
+        return vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory (Lua stack)", sb->display);
+    }
+    lua_pushcfunction(L, message_handler);   /* a light C function: no allocation */
+    lua_insert(L, base);
+    if (sb->depth == 0) reset_budget(sb);
+    sb->depth++;
+    int status = lua_pcall(L, nargs, nresults, base);
+    sb->depth--;
+    int code = VIGEN_OK;
+    if (status != LUA_OK) code = translate_error(sb, status, err);
+    lua_remove(L, base);
+    return code;
+}
+
+/* ------------------------------------------------------------------ running files */
+
+static void set_display(vigen_sandbox *sb, const char *name)
+{
+    if (name[0] == '@' || name[0] == '=') name++;
+    free(sb->display);
+    sb->display = vigen_strdup(name);
+}
+
+static int run_buffer(vigen_sandbox *sb, const char *text, size_t len, vigen_error *err)
+{
+    lua_State *L = sb->L;
+    if (len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0) { text += 3; len -= 3; }   /* UTF-8 BOM */
+    if (len > 0 && text[0] == LUA_SIGNATURE[0])
+        return vigen_error_set(err, VIGEN_E_SYNTAX,
+                               "%s: is a precompiled Lua chunk; vigen reads source text only",
+                               sb->display);
+    if (!lua_checkstack(L, 3)) return vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", sb->display);
+    int base = lua_gettop(L);
+    char *chunkname = vigen_strdup_printf("@%s", sb->display);
+    sb->memory_hit = 0;
+    sb->instructions_hit = 0;
+    int status = luaL_loadbufferx(L, text, len, chunkname, "t");   /* lua_load is protected */
+    free(chunkname);
+    if (status != LUA_OK) return translate_error(sb, status, err);
+    int code = vigen_sandbox_pcall(sb, 0, LUA_MULTRET, err);
+    if (code != VIGEN_OK) return code;
+    int n = lua_gettop(L) - base;
+    if (n == 0 || lua_isnil(L, base + 1)) {
+        lua_settop(L, base);
+        return vigen_error_set(err, VIGEN_E_SPEC,
+                               "%s: the file returned nothing; it must end with `return { ... }`",
+                               sb->display);
+    }
+    lua_settop(L, base + 1);
+    return VIGEN_OK;
+}
+
+int vigen_sandbox_run_string(vigen_sandbox *sb, const char *text, const char *chunkname, vigen_error *err)
+{
+    set_display(sb, chunkname ? chunkname : "=(string)");
+    return run_buffer(sb, text, strlen(text), err);
+}
+
+int vigen_sandbox_run_file(vigen_sandbox *sb, const char *path, vigen_error *err)
+{
+    set_display(sb, path);
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) return vigen_error_set(err, VIGEN_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    size_t len = 0, cap = 1 << 16;
+    char *data = malloc(cap);
+    int code = data ? VIGEN_OK : vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
+    while (code == VIGEN_OK) {
+        if (cap - len < 2) {
+            char *p = realloc(data, cap * 2);
+            if (p == NULL) { code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path); break; }
+            data = p;
+            cap *= 2;
+        }
+        size_t got = fread(data + len, 1, cap - len - 1, f);
+        len += got;
+        if (got == 0) {
+            if (ferror(f)) code = vigen_error_set(err, VIGEN_E_IO, "%s: cannot read: %s", path, strerror(errno));
+            break;
+        }
+        if (len > sb->memory_limit) {
+            char *lim = memory_text(sb->memory_limit);
+            code = vigen_error_set(err, VIGEN_E_LIMIT,
+                                   "%s: the file is larger than the sandbox's memory cap (%s); "
+                                   "if it really needs more, raise the cap with the option --max-memory MIB", path, lim);
+            free(lim);
+        }
+    }
+    fclose(f);
+    if (code == VIGEN_OK) code = run_buffer(sb, data, len, err);
+    free(data);
+    return code;
+}
+
+/* ------------------------------------------------------------------ vocabulary */
+
+int vigen_sandbox_get_family(lua_State *L, int idx, int *kind, const char **family, long *s)
+{
+    idx = lua_absindex(L, idx);
+    if (lua_type(L, idx) != LUA_TUSERDATA || !lua_checkstack(L, 2) || !lua_getmetatable(L, idx)) return 0;
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &family_mt_key);
+    int same = lua_rawequal(L, -1, -2);
+    lua_pop(L, 2);
+    if (!same) return 0;
+    const family_desc *d = lua_touserdata(L, idx);
+    if (kind) *kind = d->kind;
+    if (family) *family = d->family;
+    if (s) *s = (long)d->s;
+    return 1;
+}
+
+static int family_tostring(lua_State *L)
+{
+    const family_desc *d = lua_touserdata(L, 1);
+    lua_pushfstring(L, "%s(%I)", d->family, d->s);
+    return 1;
+}
+
+/* gauss_legendre(3), trig(5), ...: upvalues are the kind and the family name. */
+static int family_new(lua_State *L)
+{
+    int kind = (int)lua_tointeger(L, lua_upvalueindex(1));
+    const char *name = lua_touserdata(L, lua_upvalueindex(2));
+    const char *what = kind == VIGEN_FAMILY_NODES ? "the number of nodes" : "the number of basis functions";
+    int n = lua_gettop(L);
+    if (n == 0)
+        return luaL_error(L, "%s(s) needs %s s, a Lua integer >= 1, e.g. %s(3)", name, what, name);
+    if (n > 1)
+        return luaL_error(L, "%s(s) takes one argument, %s s, not %d", name, what, n);
+    if (lua_type(L, 1) != LUA_TNUMBER)
+        return luaL_error(L, "%s(s): s must be a Lua integer >= 1 (%s), not a %s", name, what, luaL_typename(L, 1));
+    if (!lua_isinteger(L, 1)) {
+        const char *f = vigen_push_float_text(L, lua_tonumber(L, 1));
+        return luaL_error(L, "%s(s): s must be a Lua integer >= 1 (%s), not the float %s", name, what, f);
+    }
+    lua_Integer s = lua_tointeger(L, 1);
+    if (s < 1) return luaL_error(L, "%s(s): s must be >= 1, not %I", name, s);
+    if (s > VIGEN_NODES_MAX_S)
+        return luaL_error(L, "%s(%I): s may be at most %d", name, s, (int)VIGEN_NODES_MAX_S);
+    family_desc *d = lua_newuserdatauv(L, sizeof *d, 0);
+    d->kind = kind;
+    d->family = name;
+    d->s = s;
+    lua_rawgetp(L, LUA_REGISTRYINDEX, &family_mt_key);
+    lua_setmetatable(L, -2);
+    return 1;
+}
+
+static void add_list(luaL_Buffer *b, const char *const *names)
+{
+    for (int i = 0; names[i]; i++) {
+        if (i) luaL_addstring(b, ", ");
+        luaL_addstring(b, names[i]);
+    }
+}
+
+/* __index of the globals table: pi (a fresh ball at the current precision) or an error. */
+static int strict_index(lua_State *L)
+{
+    if (lua_type(L, 2) == LUA_TSTRING && strcmp(lua_tostring(L, 2), "pi") == 0) {
+        lua_getfield(L, LUA_REGISTRYINDEX, "vigen.ball.lib");
+        lua_getfield(L, -1, "pi");
+        return 1;
+    }
+    luaL_Buffer b;
+    luaL_buffinit(L, &b);
+    if (lua_type(L, 2) == LUA_TSTRING) {
+        luaL_addstring(&b, "unknown name '");
+        lua_pushvalue(L, 2);
+        luaL_addvalue(&b);
+        luaL_addstring(&b, "'");
+    } else {
+        luaL_addstring(&b, "unknown global (a ");
+        luaL_addstring(&b, luaL_typename(L, 2));
+        luaL_addstring(&b, " key)");
+    }
+    luaL_addstring(&b, " (node families: ");
+    add_list(&b, vigen_nodes_family_names);
+    luaL_addstring(&b, "; basis families: ");
+    add_list(&b, vigen_basis_family_names);
+    luaL_addstring(&b, "; functions: ");
+    luaL_addstring(&b, function_names);
+    luaL_addstring(&b, ")");
+    luaL_pushresult(&b);
+    return luaL_error(L, "%s", lua_tostring(L, -1));
+}
+
+/* setmetatable without __gc: Lua runs finalisers with hooks off, so a
+ * finaliser would escape the instruction cap (an endless __gc hangs lua_close). */
+static int safe_setmetatable(lua_State *L)
+{
+    if (lua_type(L, 2) == LUA_TTABLE) {
+        lua_pushliteral(L, "__gc");
+        if (lua_rawget(L, 2) != LUA_TNIL)
+            return luaL_error(L, "setmetatable: __gc finalisers are not allowed in spec and tableau files "
+                                 "(they run outside the instruction cap)");
+        lua_pop(L, 1);
+    }
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+    return lua_gettop(L);
+}
+
+/* Lua patterns run in C, where the instruction cap cannot see them, and some
+ * ('.-.-.-b' on a long string) take exponential time: they are not offered. */
+static int no_patterns(lua_State *L)
+{
+    return luaL_error(L, "string.%s is not available in spec and tableau files: Lua patterns run outside the "
+                         "instruction cap", lua_tostring(L, lua_upvalueindex(1)));
+}
+
+/* string.rep loops in C: ("").rep(2^50) would spin forever outside the
+ * instruction cap, and a huge result is better refused before it is built. */
+static int safe_rep(lua_State *L)
+{
+    size_t len, seplen = 0;
+    luaL_checklstring(L, 1, &len);
+    lua_Integer n = luaL_checkinteger(L, 2);
+    luaL_optlstring(L, 3, "", &seplen);
+    if (n <= 0 || len + seplen == 0) {
+        lua_pushliteral(L, "");
+        return 1;
+    }
+    vigen_sandbox *sb = sandbox_of(L);
+    if ((lua_Unsigned)n > (lua_Unsigned)(sb->memory_limit / (len + seplen))) {
+        /* reported exactly like the allocator's refusal: the memory cap */
+        sb->memory_hit = 1;
+        lua_pushliteral(L, "not enough memory");
+        return lua_error(L);
+    }
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, 1);
+    return 1;
+}
+
+/* print writes to stderr: stdout may be carrying emitted code. */
+static int stderr_print(lua_State *L)
+{
+    int n = lua_gettop(L);
+    for (int i = 1; i <= n; i++) {
+        size_t len;
+        const char *s = luaL_tolstring(L, i, &len);
+        if (i > 1) fputc('\t', stderr);
+        fwrite(s, 1, len, stderr);
+        lua_pop(L, 1);
+    }
+    fputc('\n', stderr);
+    return 0;
+}
+
+static void register_families(lua_State *L, int kind, const char *const *names)
+{
+    for (int i = 0; names[i]; i++) {
+        lua_pushinteger(L, kind);
+        lua_pushlightuserdata(L, (void *)names[i]);
+        lua_pushcclosure(L, family_new, 2);
+        lua_setglobal(L, names[i]);
+    }
+}
+
+static int setup_state(lua_State *L)
+{
+    luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
+    luaL_requiref(L, LUA_MATHLIBNAME, luaopen_math, 1);
+    luaL_requiref(L, LUA_STRLIBNAME, luaopen_string, 1);
+    luaL_requiref(L, LUA_TABLIBNAME, luaopen_table, 1);
+    lua_pop(L, 4);
+
+    static const char *const removed[] = { "dofile", "loadfile", "load", "require", "collectgarbage", NULL };
+    for (int i = 0; removed[i]; i++) {
+        lua_pushnil(L);
+        lua_setglobal(L, removed[i]);
+    }
+    lua_getglobal(L, LUA_STRLIBNAME);
+    lua_pushnil(L);
+    lua_setfield(L, -2, "dump");
+    lua_getfield(L, -1, "rep");
+    lua_pushcclosure(L, safe_rep, 1);
+    lua_setfield(L, -2, "rep");
+    static const char *const pattern_functions[] = { "find", "match", "gmatch", "gsub", NULL };
+    for (int i = 0; pattern_functions[i]; i++) {
+        lua_pushstring(L, pattern_functions[i]);
+        lua_pushcclosure(L, no_patterns, 1);
+        lua_setfield(L, -2, pattern_functions[i]);
+    }
+    lua_pop(L, 1);
+    lua_getglobal(L, "setmetatable");
+    lua_pushcclosure(L, safe_setmetatable, 1);
+    lua_setglobal(L, "setmetatable");
+    lua_pushcfunction(L, stderr_print);
+    lua_setglobal(L, "print");
+
+    /* reproducible math.random */
+    lua_getglobal(L, LUA_MATHLIBNAME);
+    lua_getfield(L, -1, "randomseed");
+    lua_pushinteger(L, 0);
+    lua_call(L, 1, 0);
+    lua_pop(L, 1);
+
+    /* family descriptors */
+    lua_newtable(L);
+    lua_pushliteral(L, "family");
+    lua_setfield(L, -2, "__name");
+    lua_pushcfunction(L, family_tostring);
+    lua_setfield(L, -2, "__tostring");
+    lua_pushboolean(L, 0);
+    lua_setfield(L, -2, "__metatable");
+    lua_rawsetp(L, LUA_REGISTRYINDEX, &family_mt_key);
+    register_families(L, VIGEN_FAMILY_NODES, vigen_nodes_family_names);
+    register_families(L, VIGEN_FAMILY_BASIS, vigen_basis_family_names);
+
+    /* balls, and their functions as globals */
+    vigen_ball_open(L);
+    static const char *const functions[] = { "sqrt", "exp", "log", "sin", "cos", "tan", "exact", NULL };
+    lua_getfield(L, LUA_REGISTRYINDEX, "vigen.ball.lib");
+    for (int i = 0; functions[i]; i++) {
+        lua_getfield(L, -1, functions[i]);
+        lua_setglobal(L, functions[i]);
+    }
+    lua_pop(L, 1);
+
+    /* strict globals */
+    lua_pushglobaltable(L);
+    lua_newtable(L);
+    lua_pushcfunction(L, strict_index);
+    lua_setfield(L, -2, "__index");
+    lua_setmetatable(L, -2);
+    lua_pop(L, 1);
+    return 0;
+}
+
+static int panic_handler(lua_State *L)
+{
+    const char *msg = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "(not a string)";
+    fprintf(stderr, "vigen: internal error: unprotected Lua error: %s\n", msg);
+    return 0;   /* Lua aborts */
+}
+
+int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits, vigen_error *err)
+{
+    *out = NULL;
+    vigen_sandbox_limits def;
+    vigen_sandbox_limits_default(&def);
+    vigen_sandbox *sb = calloc(1, sizeof *sb);
+    if (sb == NULL) return vigen_error_set(err, VIGEN_E_MEMORY, "out of memory");
+    sb->memory_limit = limits && limits->memory_limit > 0 ? limits->memory_limit : def.memory_limit;
+    sb->instruction_limit = limits && limits->instruction_limit > 0 ? limits->instruction_limit
+                                                                    : def.instruction_limit;
+    /* every call has instruction_limit; all calls together 20 times that, so
+     * that a basis function called thousands of times by the integrator
+     * cannot run for hours one capped call at a time */
+    sb->total_left = sb->instruction_limit > LONG_MAX / 20 ? LONG_MAX : 20 * sb->instruction_limit;
+    sb->display = vigen_strdup("sandbox");
+    sb->L = lua_newstate(sandbox_alloc, sb);
+    if (sb->L == NULL) {
+        int code = sb->memory_hit ? VIGEN_E_LIMIT : VIGEN_E_MEMORY;
+        vigen_sandbox_free(sb);
+        return vigen_error_set(err, code, "cannot create a Lua state (memory cap too small or out of memory)");
+    }
+    lua_atpanic(sb->L, panic_handler);
+    lua_pushcfunction(sb->L, setup_state);
+    int code = vigen_sandbox_pcall(sb, 0, 0, err);
+    if (code != VIGEN_OK) {
+        vigen_error_prefix(err, "cannot set up the Lua sandbox: ");
+        vigen_sandbox_free(sb);
+        return code;
+    }
+    *out = sb;
+    return VIGEN_OK;
+}
+
+void vigen_sandbox_free(vigen_sandbox *sb)
+{
+    if (sb == NULL) return;
+    if (sb->L) {
+        /* finalisers written in Lua run at close: give them a fresh budget */
+        if (sb->total_left < sb->instruction_limit) sb->total_left = sb->instruction_limit;
+        reset_budget(sb);
+        lua_close(sb->L);
+    }
+    free(sb->display);
+    free(sb);
+}

@@ -1,0 +1,69 @@
+/* sandbox.h — a Lua 5.4 state for untrusted spec and tableau files.
+ *
+ * Spec and tableau files are code written by someone else.  The sandbox opens
+ * only the base, math, string and table libraries, removes dofile, loadfile,
+ * load, require, collectgarbage, string.dump and the io/os/package/debug
+ * libraries, loads source text only (never precompiled chunks), caps memory
+ * with a custom allocator and caps executed instructions with a count hook.
+ * Exceeding a cap raises a Lua error whose message says which cap and how to
+ * raise it.  What would run outside the instruction cap is refused: __gc
+ * finalisers (setmetatable with a __gc field) and the pattern functions
+ * string.find/match/gmatch/gsub.  print writes to stderr.  Reading an unknown
+ * global is an error listing the vocabulary below.
+ *
+ * The sandbox also provides the vocabulary of spec files (node and basis family
+ * constructors such as gauss_legendre(3) and trig(5)) and the ball library
+ * (see ball.h) that Lua basis functions compute with.
+ */
+#ifndef VIGEN_SANDBOX_H
+#define VIGEN_SANDBOX_H
+
+#include <stddef.h>
+#include <lua.h>
+#include "vigen/error.h"
+#include "vigen/limits.h"
+
+typedef struct vigen_sandbox vigen_sandbox;
+
+
+int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits /* NULL: defaults */,
+                      vigen_error *err);
+void vigen_sandbox_free(vigen_sandbox *sb);
+lua_State *vigen_sandbox_state(vigen_sandbox *sb);
+
+/* After the file has run: no memory cap any more, so that C code reading its
+ * result (raw accesses, outside protected calls) cannot hit a Lua error. */
+void vigen_sandbox_lift_memory_cap(vigen_sandbox *sb);
+
+/* Reads path, runs it as a text chunk named "@path" and leaves its single
+ * return value on the stack.  Errors carry file:line: VIGEN_E_IO (unreadable),
+ * VIGEN_E_SYNTAX (Lua syntax error), VIGEN_E_LUA (runtime error), VIGEN_E_LIMIT
+ * (memory or instruction cap), VIGEN_E_SPEC (the chunk returned nothing). */
+int vigen_sandbox_run_file(vigen_sandbox *sb, const char *path, vigen_error *err);
+
+/* Like vigen_sandbox_run_file but for a string (tests); chunkname as given. */
+int vigen_sandbox_run_string(vigen_sandbox *sb, const char *text, const char *chunkname, vigen_error *err);
+
+/* lua_pcall with the instruction budget reset and errors translated as above.
+ * The function and its nargs arguments are on the stack. */
+int vigen_sandbox_pcall(vigen_sandbox *sb, int nargs, int nresults, vigen_error *err);
+
+/* Family descriptors, the values of gauss_legendre(3), trig(5), ... in a spec
+ * file.  If the value at idx is one, sets *kind, *family (a static name) and *s
+ * and returns 1; otherwise returns 0.  Never raises a Lua error. */
+enum { VIGEN_FAMILY_NODES = 1, VIGEN_FAMILY_BASIS = 2 };
+int vigen_sandbox_get_family(lua_State *L, int idx, int *kind, const char **family, long *s);
+
+/* NULL-terminated names of the basis families (monomials, trig, legendre,
+ * chebyshev_t); the node families are nodes.h's vigen_nodes_family_names. */
+extern const char *const vigen_basis_family_names[];
+
+/* Writes the shortest decimal text that reads back as x, the way Lua shows a
+ * float ("0.3333333333333333", "0.5", "3.0", "1e+300"), snprintf-style: returns
+ * the length needed, writes at most size bytes (NUL included). */
+size_t vigen_float_format(char *buf, size_t size, double x);
+/* Pushes that text as a Lua string (Lua memory: nothing leaks if a later call
+ * raises) and returns it. */
+const char *vigen_push_float_text(lua_State *L, double x);
+
+#endif

@@ -1,0 +1,519 @@
+/* test_sandbox.c — the Lua sandbox (caps, escapes, messages, vocabulary) and
+ * the ball library that Lua basis functions compute with. */
+#include <string.h>
+
+#include <lauxlib.h>
+#include <lualib.h>
+
+#include "lua/ball.h"
+#include "lua/sandbox.h"
+#include "testlib.h"
+
+static int contains(const char *haystack, const char *needle)
+{
+    return haystack != NULL && strstr(haystack, needle) != NULL;
+}
+
+static int starts_with(const char *s, const char *prefix)
+{
+    return s != NULL && strncmp(s, prefix, strlen(prefix)) == 0;
+}
+
+/* Runs text in a fresh sandbox (limits may be NULL) and returns the status;
+ * the message stays in err.  The stack must be balanced afterwards. */
+static int run(const char *text, const vigen_sandbox_limits *limits, vigen_error *err)
+{
+    vigen_sandbox *sb = NULL;
+    vigen_error_clear(err);
+    int code = vigen_sandbox_new(&sb, limits, err);
+    if (code != VIGEN_OK) return code;
+    lua_State *L = vigen_sandbox_state(sb);
+    int top = lua_gettop(L);
+    code = vigen_sandbox_run_string(sb, text, "@spec.lua", err);
+    CHECK(lua_gettop(L) == top + (code == VIGEN_OK ? 1 : 0));
+    vigen_sandbox_free(sb);
+    return code;
+}
+
+/* expect(text, code, phrase): the run fails with code and a message containing phrase. */
+#define EXPECT(text, limits, want_code, phrase) do { \
+    vigen_error e_; vigen_error_init(&e_); \
+    int c_ = run((text), (limits), &e_); \
+    CHECK_MSG(c_ == (want_code) && contains(e_.message, (phrase)), \
+              "code %d (%s) message: %s", c_, vigen_status_name(c_), e_.message ? e_.message : "(none)"); \
+    vigen_error_clear(&e_); } while (0)
+
+static void test_limits_default(void)
+{
+    vigen_sandbox_limits lim;
+    vigen_sandbox_limits_default(&lim);
+    CHECK(lim.memory_limit == (size_t)256 << 20);
+    CHECK(lim.instruction_limit == 50000000L);
+}
+
+static void test_run_and_errors(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+
+    /* a chunk's value stays on the stack */
+    vigen_sandbox *sb = NULL;
+    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    lua_State *L = vigen_sandbox_state(sb);
+    CHECK(vigen_sandbox_run_string(sb, "return 6 * 7, 'ignored'", "@spec.lua", &err) == VIGEN_OK);
+    CHECK(lua_gettop(L) == 1 && lua_isinteger(L, -1) && lua_tointeger(L, -1) == 42);
+    lua_pop(L, 1);
+    vigen_sandbox_free(sb);
+
+    /* syntax and runtime errors carry file:line and their own codes */
+    CHECK(run("local a = 1\nlocal b = 2\nreturn {a = }\n", NULL, &err) == VIGEN_E_SYNTAX);
+    CHECK_MSG(starts_with(err.message, "spec.lua:3:"), "%s", err.message);
+    CHECK(run("local x = 1\nerror('fails on purpose')\n", NULL, &err) == VIGEN_E_LUA);
+    CHECK_MSG(starts_with(err.message, "spec.lua:2: fails on purpose"), "%s", err.message);
+    CHECK(run("local t = nil\nreturn t.x\n", NULL, &err) == VIGEN_E_LUA);
+    CHECK_MSG(starts_with(err.message, "spec.lua:2:") && contains(err.message, "index"), "%s", err.message);
+    /* an error object that is not a string still names the file */
+    CHECK(run("error({})", NULL, &err) == VIGEN_E_LUA);
+    CHECK_MSG(starts_with(err.message, "spec.lua:") && contains(err.message, "table"), "%s", err.message);
+    CHECK(run("error(setmetatable({}, {__tostring = function() return 'custom' end}))", NULL, &err) == VIGEN_E_LUA);
+    CHECK_MSG(contains(err.message, "custom"), "%s", err.message);
+
+    /* a chunk must return something */
+    CHECK(run("local x = 1", NULL, &err) == VIGEN_E_SPEC);
+    CHECK(contains(err.message, "spec.lua") && contains(err.message, "returned nothing"));
+    CHECK(run("return nil", NULL, &err) == VIGEN_E_SPEC);
+
+    /* a long path is shown whole, not as Lua's truncated "...tail" */
+    const char *longname = "@some/very/long/directory/name/that/goes/on/and/on/and/on/and/on/spec.lua";
+    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_run_string(sb, "\nerror('x')", longname, &err) == VIGEN_E_LUA);
+    CHECK_MSG(starts_with(err.message, longname + 1) && contains(err.message, "spec.lua:2: x"), "%s", err.message);
+    vigen_sandbox_free(sb);
+
+    /* missing file */
+    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_run_file(sb, "/nonexistent/dir/spec.lua", &err) == VIGEN_E_IO);
+    CHECK(contains(err.message, "/nonexistent/dir/spec.lua"));
+    vigen_sandbox_free(sb);
+    vigen_error_clear(&err);
+}
+
+static void test_escapes(void)
+{
+    static const char *const names[] = { "io", "os", "require", "load", "dofile", "loadfile", "debug",
+                                         "package", "utf8", "coroutine", "collectgarbage", "loadstring", NULL };
+    for (int i = 0; names[i]; i++) {
+        char *text = vigen_strdup_printf("local f = %s\nreturn 1", names[i]);
+        char *phrase = vigen_strdup_printf("spec.lua:1: unknown name '%s'", names[i]);
+        EXPECT(text, NULL, VIGEN_E_LUA, phrase);
+        free(text);
+        free(phrase);
+    }
+    vigen_error err;
+    vigen_error_init(&err);
+    /* not even through rawget, the string metatable or a library table */
+    CHECK(run("assert(rawget(_G, 'io') == nil and rawget(_G, 'os') == nil and rawget(_G, 'debug') == nil)\n"
+              "assert(string.dump == nil and getmetatable('').__index.dump == nil)\n"
+              "assert(rawget(_G, 'load') == nil and rawget(_G, 'require') == nil)\n"
+              "return true", NULL, &err) == VIGEN_OK);
+    /* the safe libraries are there */
+    CHECK(run("return math.floor(2.5) + #string.rep('a', 3) + #table.concat({'x', 'y'}) + select('#', 1, 2)",
+              NULL, &err) == VIGEN_OK);
+
+    /* precompiled chunks are refused: make one in an ordinary Lua state */
+    lua_State *plain = luaL_newstate();
+    luaL_openlibs(plain);
+    CHECK(luaL_dostring(plain, "return string.dump(function() return 1 end)") == LUA_OK);
+    size_t len;
+    const char *bytecode = lua_tolstring(plain, -1, &len);
+    CHECK(len > 4 && bytecode[0] == LUA_SIGNATURE[0]);
+    vigen_sandbox *sb = NULL;
+    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_run_string(sb, bytecode, "@spec.luac", &err) == VIGEN_E_SYNTAX);
+    CHECK_MSG(contains(err.message, "spec.luac") && contains(err.message, "precompiled"), "%s", err.message);
+    vigen_sandbox_free(sb);
+    lua_close(plain);
+    vigen_error_clear(&err);
+}
+
+static void test_instruction_cap(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    /* the default cap, and its message */
+    CHECK(run("local n = 0\nwhile true do n = n + 1 end", NULL, &err) == VIGEN_E_LIMIT);
+    CHECK_MSG(starts_with(err.message, "spec.lua: the file ran for more than 50000000 Lua instructions") &&
+              contains(err.message, "line 2"), "%s", err.message);
+
+    vigen_sandbox_limits lim;
+    vigen_sandbox_limits_default(&lim);
+    lim.instruction_limit = 1000000;
+    EXPECT("while true do end", &lim, VIGEN_E_LIMIT, "more than 1000000 Lua instructions");
+    /* pcall cannot swallow the cap */
+    EXPECT("while true do pcall(function() while true do end end) end", &lim, VIGEN_E_LIMIT, "instructions");
+    EXPECT("while true do xpcall(function() while true do end end, function(m) return m end) end", &lim,
+           VIGEN_E_LIMIT, "instructions");
+    /* endless tail calls and deep recursion stop, without crashing */
+    EXPECT("local function f() return f() end return f()", &lim, VIGEN_E_LIMIT, "instructions");
+    CHECK(run("local function f(n) return 1 + f(n + 1) end return f(1)", NULL, &err) != VIGEN_OK);
+    CHECK_MSG(starts_with(err.message, "spec.lua") && contains(err.message, "overflow"), "%s", err.message);
+    CHECK(run("local t = setmetatable({}, {__index = function(t, k) return t[k] end}) return t.x", NULL, &err)
+          != VIGEN_OK);
+    CHECK_MSG(contains(err.message, "overflow"), "%s", err.message);
+    CHECK(run("local function f(s) return (string.gsub(s, '.', f)) end return f('ab')", NULL, &err) != VIGEN_OK);
+
+    /* what Lua runs with hooks off, or in C, is refused: __gc finalisers, patterns */
+    EXPECT("local x = setmetatable({}, {__gc = function() while true do end end}) return 1", &lim, VIGEN_E_LUA,
+           "__gc finalisers are not allowed");
+    CHECK(run("local mt = {} local x = setmetatable({}, mt) mt.__gc = function() while true do end end\n"
+              "x = nil return setmetatable({}, {__index = function() return 1 end}).y", &lim, &err) == VIGEN_OK);
+    EXPECT("return string.rep('a', 3000):find('.-.-.-b')", &lim, VIGEN_E_LUA, "string.find is not available");
+    EXPECT("return ('x'):gsub('x', 'y')", &lim, VIGEN_E_LUA, "string.gsub is not available");
+    EXPECT("return string.match('x', 'x')", &lim, VIGEN_E_LUA, "string.match is not available");
+    EXPECT("return string.gmatch('x', 'x')", &lim, VIGEN_E_LUA, "string.gmatch is not available");
+    /* to-be-closed variables run under the cap */
+    EXPECT("do local x <close> = setmetatable({}, {__close = function() while true do end end}) end", &lim,
+           VIGEN_E_LIMIT, "instructions");
+    EXPECT("local x <close> = setmetatable({}, {__close = function() while true do end end}) error('x')", &lim,
+           VIGEN_E_LIMIT, "instructions");
+
+    /* the budget is per top-level call: two calls of ~0.7 cap each both succeed */
+    vigen_sandbox *sb = NULL;
+    CHECK(vigen_sandbox_new(&sb, &lim, &err) == VIGEN_OK);
+    lua_State *L = vigen_sandbox_state(sb);
+    CHECK(vigen_sandbox_run_string(sb, "return function() local n = 0 for i = 1, 170000 do n = n + i end return n end",
+                                   "@spec.lua", &err) == VIGEN_OK);
+    for (int k = 0; k < 3; k++) {
+        lua_pushvalue(L, -1);
+        CHECK_MSG(vigen_sandbox_pcall(sb, 0, 1, &err) == VIGEN_OK, "%s", err.message);
+        CHECK(lua_tointeger(L, -1) == (lua_Integer)170000 * 170001 / 2);
+        lua_pop(L, 1);
+    }
+    /* after a cap the sandbox still works */
+    CHECK(vigen_sandbox_run_string(sb, "while true do end", "@spec.lua", &err) == VIGEN_E_LIMIT);
+    lua_pushvalue(L, -1);
+    CHECK(vigen_sandbox_pcall(sb, 0, 1, &err) == VIGEN_OK);
+    lua_pop(L, 2);
+    CHECK(lua_gettop(L) == 0);
+    vigen_sandbox_free(sb);
+
+    /* an ordinary runtime error is not a cap */
+    CHECK(run("error('x')", &lim, &err) == VIGEN_E_LUA);
+    vigen_error_clear(&err);
+}
+
+static void test_memory_cap(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    /* string.rep bomb at the default cap */
+    CHECK(run("return string.rep('x', 1 << 30)", NULL, &err) == VIGEN_E_LIMIT);
+    CHECK_MSG(starts_with(err.message, "spec.lua: the file used more than 256 MiB of memory"), "%s", err.message);
+
+    /* refused before it is built, as the memory cap */
+    CHECK(run("return string.rep('x', 1 << 40)", NULL, &err) == VIGEN_E_LIMIT);
+    /* an empty string repeated 2^50 times is "" at once (Lua's own loop would spin for days) */
+    CHECK(run("assert(string.rep('', 1 << 50) == '' and ('').rep('', 1 << 50, '') == '') return 1", NULL, &err) == VIGEN_OK);
+
+    vigen_sandbox_limits lim;
+    vigen_sandbox_limits_default(&lim);
+    lim.memory_limit = (size_t)16 << 20;
+    EXPECT("local s = 'x' while true do s = s .. s end", &lim, VIGEN_E_LIMIT, "more than 16 MiB of memory");
+    /* table-growth bombs */
+    EXPECT("local t = {} for i = 1, 1e9 do t[i] = i end", &lim, VIGEN_E_LIMIT, "16 MiB");
+    EXPECT("local t = {} for i = 1, 1e9 do t[i] = string.rep('x', 1000) .. i end", &lim, VIGEN_E_LIMIT, "memory");
+    EXPECT("local t = {} for i = 1, 1e9 do t[i] = {i} end", &lim, VIGEN_E_LIMIT, "memory");
+    /* a caught memory error ends in the instruction cap, never in a crash */
+    lim.instruction_limit = 5000000;
+    EXPECT("while true do pcall(string.rep, 'x', 1 << 30) end", &lim, VIGEN_E_LIMIT, "instructions");
+    /* a sandbox that hit the cap works afterwards */
+    vigen_sandbox *sb = NULL;
+    lim.instruction_limit = 50000000;
+    CHECK(vigen_sandbox_new(&sb, &lim, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_run_string(sb, "local t = {} for i = 1, 1e9 do t[i] = i end", "@spec.lua", &err)
+          == VIGEN_E_LIMIT);
+    CHECK(vigen_sandbox_run_string(sb, "return #string.rep('y', 1000)", "@spec.lua", &err) == VIGEN_OK);
+    lua_pop(vigen_sandbox_state(sb), 1);
+    vigen_sandbox_free(sb);
+    /* the cap is distinguished from other errors */
+    CHECK(run("error('not enough memory')", &lim, &err) == VIGEN_E_LUA);
+    vigen_error_clear(&err);
+}
+
+static void test_vocabulary(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    /* strict globals, with the vocabulary in the message */
+    CHECK(run("local x = 1\nreturn { nodes = gauss(3) }", NULL, &err) == VIGEN_E_LUA);
+    CHECK_MSG(starts_with(err.message, "spec.lua:2: unknown name 'gauss' (node families: gauss_legendre, ") &&
+              contains(err.message, "basis families: monomials, trig, legendre, chebyshev_t") &&
+              contains(err.message, "functions: sqrt, exp, log, sin, cos, tan, pi, exact)"), "%s", err.message);
+
+    /* every family constructor makes a descriptor that says what it is */
+    static const char *const node_names[] = { "gauss_legendre", "gauss_lobatto", "radau_left", "radau_right",
+                                              "chebyshev_quadrature", "chebyshev_gauss", "chebyshev_lobatto",
+                                              "equispaced", NULL };
+    static const char *const basis_names[] = { "monomials", "trig", "legendre", "chebyshev_t", NULL };
+    vigen_sandbox *sb = NULL;
+    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    lua_State *L = vigen_sandbox_state(sb);
+    for (int pass = 0; pass < 2; pass++) {
+        const char *const *names = pass ? basis_names : node_names;
+        for (int i = 0; names[i]; i++) {
+            char *text = vigen_strdup_printf("return %s(%d)", names[i], i + 2);
+            CHECK_MSG(vigen_sandbox_run_string(sb, text, "@spec.lua", &err) == VIGEN_OK, "%s", err.message);
+            int kind = 0;
+            const char *family = NULL;
+            long s = 0;
+            CHECK(vigen_sandbox_get_family(L, -1, &kind, &family, &s) == 1);
+            CHECK(kind == (pass ? VIGEN_FAMILY_BASIS : VIGEN_FAMILY_NODES));
+            CHECK(family && strcmp(family, names[i]) == 0);
+            CHECK(s == i + 2);
+            lua_pop(L, 1);
+            free(text);
+        }
+    }
+    CHECK(vigen_sandbox_run_string(sb, "return tostring(gauss_legendre(3)) .. ' ' .. tostring(trig(5))",
+                                   "@spec.lua", &err) == VIGEN_OK);
+    CHECK(strcmp(lua_tostring(L, -1), "gauss_legendre(3) trig(5)") == 0);
+    lua_pop(L, 1);
+    /* plain values are not families */
+    CHECK(vigen_sandbox_run_string(sb, "return {kind = 'nodes', family = 'gauss_legendre', s = 3}", "@spec.lua",
+                                   &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_get_family(L, -1, NULL, NULL, NULL) == 0);
+    lua_pop(L, 1);
+    CHECK(vigen_sandbox_run_string(sb, "return exact('1/2')", "@spec.lua", &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_get_family(L, -1, NULL, NULL, NULL) == 0);
+    lua_pop(L, 1);
+    vigen_sandbox_free(sb);
+
+    /* s must be a Lua integer >= 1 */
+    EXPECT("return gauss_legendre(2.5)", NULL, VIGEN_E_LUA, "not the float 2.5");
+    EXPECT("return gauss_legendre(3.0)", NULL, VIGEN_E_LUA, "not the float 3.0");
+    EXPECT("return trig(1/3)", NULL, VIGEN_E_LUA, "0.3333333333333333");
+    EXPECT("return gauss_legendre(0)", NULL, VIGEN_E_LUA, "must be >= 1");
+    EXPECT("return legendre(-2)", NULL, VIGEN_E_LUA, "must be >= 1");
+    EXPECT("return gauss_legendre()", NULL, VIGEN_E_LUA, "needs the number of nodes");
+    EXPECT("return trig()", NULL, VIGEN_E_LUA, "needs the number of basis functions");
+    EXPECT("return gauss_legendre('3')", NULL, VIGEN_E_LUA, "not a string");
+    EXPECT("return trig(3, 4)", NULL, VIGEN_E_LUA, "takes one argument");
+    EXPECT("return equispaced(100000)", NULL, VIGEN_E_LUA, "at most");
+    EXPECT("\nreturn gauss_legendre(2.5)", NULL, VIGEN_E_LUA, "spec.lua:2:");
+
+    /* print exists (it writes to stderr, never to stdout) */
+    CHECK(run("return type(print) == 'function'", NULL, &err) == VIGEN_OK);
+    vigen_error_clear(&err);
+}
+
+static void test_float_format(void)
+{
+    static const struct { double x; const char *text; } cases[] = {
+        { 1.0 / 3.0, "0.3333333333333333" }, { 0.5, "0.5" }, { 3.0, "3.0" }, { -2.0, "-2.0" },
+        { 0.1, "0.1" }, { 1e300, "1e+300" }, { 2.0 / 3.0, "0.6666666666666666" }, { 0.0, "0.0" },
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        size_t n = vigen_float_format(NULL, 0, cases[i].x);
+        char *buf = malloc(n + 1);
+        CHECK(vigen_float_format(buf, n + 1, cases[i].x) == n);
+        CHECK_MSG(strcmp(buf, cases[i].text) == 0, "%s vs %s", buf, cases[i].text);
+        free(buf);
+    }
+    char small[4];
+    CHECK(vigen_float_format(small, sizeof small, 1.0 / 3.0) == 18 && strcmp(small, "0.3") == 0);
+}
+
+/* ------------------------------------------------------------------ balls */
+
+/* Evaluates the Lua function returned by chunk at t; res gets the value. */
+static int call_fn(const char *chunk, const acb_t t, int analytic, slong prec, acb_t res, vigen_error *err)
+{
+    vigen_sandbox *sb = NULL;
+    vigen_error_clear(err);
+    int code = vigen_sandbox_new(&sb, NULL, err);
+    if (code != VIGEN_OK) return code;
+    lua_State *L = vigen_sandbox_state(sb);
+    code = vigen_sandbox_run_string(sb, chunk, "@spec.lua", err);
+    if (code == VIGEN_OK) {
+        vigen_ball_set_context(L, prec, analytic);
+        vigen_ball_push(L, t);
+        code = vigen_sandbox_pcall(sb, 1, 1, err);
+        if (code == VIGEN_OK) {
+            if (!vigen_ball_get(res, L, -1)) code = vigen_error_set(err, VIGEN_E_SPEC, "not a ball");
+            lua_pop(L, 1);
+        }
+    }
+    CHECK(lua_gettop(L) == 0);
+    vigen_sandbox_free(sb);
+    return code;
+}
+
+static void acb_set_q(acb_t z, slong p, slong q, slong prec)
+{
+    fmpq_t r;
+    fmpq_init(r);
+    fmpq_set_si(r, p, (ulong)q);
+    acb_zero(z);
+    arb_set_fmpq(acb_realref(z), r, prec);
+    fmpq_clear(r);
+}
+
+static int real_contains_q(const acb_t z, slong p, slong q)
+{
+    fmpq_t r;
+    fmpq_init(r);
+    fmpq_set_si(r, p, (ulong)q);
+    int ok = arb_contains_fmpq(acb_realref(z), r) && arb_contains_zero(acb_imagref(z));
+    fmpq_clear(r);
+    return ok;
+}
+
+static int radius_below(const acb_t z, slong e)
+{
+    return mag_cmp_2exp_si(arb_radref(acb_realref(z)), e) <= 0 && mag_cmp_2exp_si(arb_radref(acb_imagref(z)), e) <= 0;
+}
+
+static void test_balls(void)
+{
+    slong prec = 128;
+    vigen_error err;
+    vigen_error_init(&err);
+    acb_t t, r;
+    acb_init(t);
+    acb_init(r);
+
+    /* cos(pi t) at t = 1/3 is 1/2 */
+    acb_set_q(t, 1, 3, prec);
+    CHECK(call_fn("return function(t) return cos(pi*t) end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 2) && radius_below(r, -100));
+    CHECK(call_fn("return function(t) return ball.cos(ball.pi*t) end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 2) && radius_below(r, -100));
+
+    /* t^2/3 at 1/2 is 1/12: integer arithmetic on balls is exact up to rounding */
+    acb_set_q(t, 1, 2, prec);
+    CHECK(call_fn("return function(t) return t^2/3 end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 12) && radius_below(r, -120) && arb_is_zero(acb_imagref(r)));
+    CHECK(call_fn("return function(t) return t/3 end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 6) && radius_below(r, -120));
+    CHECK(call_fn("return function(t) return 2 - t + 1 * t * 4 - -t end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 4, 1) && radius_below(r, -120));
+    CHECK(call_fn("return function(t) return t^-2 + 2^t * 0 end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 4, 1));
+    CHECK(call_fn("return function(t) return exact('1/3') * 3 - t end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 2) && radius_below(r, -120));
+    CHECK(call_fn("return function(t) return exact(1) + exp(0) + log(1) + sin(0) + tan(0) + sqrt(4) end", t, 0,
+                  prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 4, 1));
+    CHECK(call_fn("return function(t) return t^exact('1/2') * sqrt(t) end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 2) && radius_below(r, -100));
+
+    /* a Lua float never enters ball arithmetic */
+    CHECK(call_fn("return function(t)\n  return (1/3)*t\nend", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK_MSG(starts_with(err.message, "spec.lua:2: basis function: a Lua float (0.3333333333333333) met a ball; "
+                                       "Lua's 1/3 is a rounded double: write exact(\"1/3\") or t/3"),
+              "%s", err.message);
+    CHECK(call_fn("return function(t) return t + 0.5 end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "Lua float (0.5)"));
+    CHECK(call_fn("return function(t) return t * math.pi end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "exact(\"1/3\")"));
+    CHECK(call_fn("return function(t) return t ^ 0.5 end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(call_fn("return function(t) return sqrt(0.5) end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "sqrt") && contains(err.message, "0.5"));
+    CHECK(call_fn("return function(t) return exact(0.5) end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "exact(") && contains(err.message, "0.5"));
+    CHECK(call_fn("return function(t) return exact('1/') end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "exact(\"1/\")"));
+    CHECK(call_fn("return function(t) return exact('t') end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(call_fn("return function(t) return t + 'x' end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "string"));
+    CHECK(call_fn("return function(t) return t + {} end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(call_fn("return function(t) return sqrt() end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(call_fn("return function(t) return ball.nope end", t, 0, prec, r, &err) == VIGEN_E_LUA);
+    CHECK(contains(err.message, "ball.nope"));
+
+    /* balls cannot be compared */
+    CHECK(call_fn("return function(t) if t < 1 then return t end return 0 end", t, 0, prec, r, &err)
+          == VIGEN_E_LUA);
+    CHECK(contains(err.message, "cannot be compared"));
+    CHECK(call_fn("return function(t) if t <= t * 1 then return t end return 0 end", t, 0, prec, r, &err)
+          == VIGEN_E_LUA);
+    CHECK(call_fn("return function(t) if t == t * 1 then return t end return 0 end", t, 0, prec, r, &err)
+          == VIGEN_E_LUA);
+    CHECK(contains(err.message, "cannot be compared"));
+    CHECK(call_fn("return function(t) return getmetatable(t) == 'ball' and t or 0 end", t, 0, prec, r, &err)
+          == VIGEN_OK && real_contains_q(r, 1, 2));
+
+    /* tostring */
+    CHECK(call_fn("return function(t) assert(tostring(t) == '0.5') "
+                  "assert(tostring(t + 6) == '6.5') assert(tostring(sqrt(-t)):sub(-2) == '*i') return t end", t, 0, prec, r, &err) == VIGEN_OK);
+
+    /* analytic mode: holomorphic on a real ball, indeterminate across the branch cut */
+    acb_set_q(t, 1, 4, prec);
+    mag_set_ui_2exp_si(arb_radref(acb_realref(t)), 1, -20);
+    CHECK(call_fn("return function(t) return sqrt(t) end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(real_contains_q(r, 1, 2) && acb_is_finite(r));
+    CHECK(call_fn("return function(t) return log(t) + t^exact('1/3') end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(acb_is_finite(r));
+    acb_set_q(t, -1, 1, prec);
+    mag_set_ui_2exp_si(arb_radref(acb_imagref(t)), 1, -20);
+    CHECK(call_fn("return function(t) return sqrt(t) end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(!acb_is_finite(r));
+    CHECK(call_fn("return function(t) return log(t) end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(!acb_is_finite(r));
+    CHECK(call_fn("return function(t) return t^exact('1/2') end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(!acb_is_finite(r));
+    CHECK(call_fn("return function(t) return t^2 end", t, 1, prec, r, &err) == VIGEN_OK);
+    CHECK(acb_is_finite(r));   /* integer powers are entire */
+    CHECK(call_fn("return function(t) return sqrt(t) end", t, 0, prec, r, &err) == VIGEN_OK);
+    CHECK(acb_is_finite(r));   /* without the flag: the principal branch */
+
+    /* the precision comes from the context: pi at 300 bits */
+    CHECK(call_fn("return function(t) return pi end", t, 0, 300, r, &err) == VIGEN_OK);
+    acb_t p;
+    acb_init(p);
+    acb_const_pi(p, 400);
+    CHECK(acb_overlaps(r, p) && radius_below(r, -290) && !radius_below(r, -350));
+    acb_clear(p);
+
+    /* balls and failed exact() calls piling up until a cap: nothing leaks (run under valgrind) */
+    vigen_sandbox_limits lim;
+    vigen_sandbox_limits_default(&lim);
+    lim.memory_limit = (size_t)8 << 20;
+    lim.instruction_limit = 2000000;
+    EXPECT("local t = exact('1/3') local a = {} while true do a[#a + 1] = t * t + sqrt(t) end", &lim, VIGEN_E_LIMIT,
+           "memory");
+    EXPECT("local a = {} while true do a[#a + 1] = tostring(exact('1/3')) .. #a end", &lim, VIGEN_E_LIMIT, "memory");
+    EXPECT("while true do pcall(exact, '1/') pcall(exact, 'sqrt(-1)') end", &lim, VIGEN_E_LIMIT, "instructions");
+
+    /* vigen_ball_get: balls and integers only */
+    vigen_sandbox *sb = NULL;
+    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    lua_State *L = vigen_sandbox_state(sb);
+    lua_pushinteger(L, -7);
+    CHECK(vigen_ball_get(r, L, -1) == 1 && real_contains_q(r, -7, 1) && radius_below(r, -1000));
+    lua_pushnumber(L, 0.5);
+    CHECK(vigen_ball_get(r, L, -1) == 0);
+    lua_pushstring(L, "1/2");
+    CHECK(vigen_ball_get(r, L, -1) == 0);
+    lua_newtable(L);
+    CHECK(vigen_ball_get(r, L, -1) == 0);
+    lua_pop(L, 4);
+    vigen_sandbox_free(sb);
+
+    acb_clear(t);
+    acb_clear(r);
+    vigen_error_clear(&err);
+}
+
+int main(void)
+{
+    test_limits_default();
+    test_run_and_errors();
+    test_escapes();
+    test_instruction_cap();
+    test_memory_cap();
+    test_vocabulary();
+    test_float_format();
+    test_balls();
+    TEST_MAIN_END();
+}
