@@ -5,13 +5,9 @@
 #include <string.h>
 #include "vigen/check.h"
 #include "cli.h"
-#include "core/decimal.h"
 #include "vigen/emit.h"
-#include "method/galerkin.h"
-#include "lua/sandbox.h"
 #include "vigen/show.h"
 #include "vigen/method.h"
-#include "lua/spec.h"
 #include "vigen/tableau.h"
 
 #define DEFAULT_DIGITS 34
@@ -129,11 +125,8 @@ static int cmd_generate(int argc, char **argv)
 
     vigen_error err;
     vigen_error_init(&err);
-    vigen_spec *spec = NULL;
-    if (vigen_spec_load(&spec, spec_path, NULL, &err) != VIGEN_OK) return fail(cmd, &err);
     vigen_tableau t;
-    int rc = vigen_galerkin_generate(&t, spec, digits, &err);
-    vigen_spec_free(spec);
+    int rc = vigen_generate_file(&t, spec_path, digits, &err);
     if (rc != VIGEN_OK) return fail(cmd, &err);
 
     char *text = vigen_tableau_to_lua(&t);

@@ -11,19 +11,12 @@
 #include <stdarg.h>
 #include <stddef.h>
 
+/* VIGEN_OK, VIGEN_E_USAGE, ...: see status.def for each code and its exit status. */
 enum {
-    VIGEN_OK = 0,
-    VIGEN_E_USAGE,      /* bad command line */
-    VIGEN_E_IO,         /* cannot read or write a file */
-    VIGEN_E_SYNTAX,     /* expression or Lua syntax error */
-    VIGEN_E_LUA,        /* Lua runtime error in a spec or tableau file */
-    VIGEN_E_LIMIT,      /* sandbox memory or instruction cap reached */
-    VIGEN_E_SPEC,       /* spec/tableau content is invalid (wrong type, unknown family, ...) */
-    VIGEN_E_DOMAIN,     /* value is complex, infinite, NaN, or outside a function's domain */
-    VIGEN_E_MATH,       /* the mathematics fails: singular M, b_i = 0, complex roots, ... */
-    VIGEN_E_PRECISION,  /* a result could not be certified within the precision cap */
-    VIGEN_E_MEMORY,     /* allocation failed */
-    VIGEN_E_INTEGRAL    /* a rigorous integral did not converge at this precision (retryable once) */
+#define X(name, exit_status, words) VIGEN_##name,
+#include "vigen/status.def"
+#undef X
+    VIGEN_STATUS_COUNT
 };
 
 typedef struct {
@@ -47,6 +40,8 @@ int vigen_error_prefix(vigen_error *err, const char *fmt, ...)
 #endif
     ;
 const char *vigen_status_name(int code);           /* "syntax error", ... */
+/* The command-line exit status for a status code (status.def): 0, 2 or 3. */
+int vigen_status_exit_code(int code);
 
 /* Warnings (sum b != 1, nodes outside [0,1]) go through one hook so that tests
  * can capture them; the default prints "vigen: warning: ..." to stderr. */

@@ -73,23 +73,22 @@ int vigen_error_prefix(vigen_error *err, const char *fmt, ...)
     return err->code;
 }
 
+static const struct { const char *words; int exit_status; } status_table[] = {
+#define X(name, exit_status, words) { words, exit_status },
+#include "vigen/status.def"
+#undef X
+};
+
 const char *vigen_status_name(int code)
 {
-    switch (code) {
-    case VIGEN_OK: return "success";
-    case VIGEN_E_USAGE: return "usage error";
-    case VIGEN_E_IO: return "input/output error";
-    case VIGEN_E_SYNTAX: return "syntax error";
-    case VIGEN_E_LUA: return "Lua error";
-    case VIGEN_E_LIMIT: return "resource limit reached";
-    case VIGEN_E_SPEC: return "invalid specification";
-    case VIGEN_E_DOMAIN: return "value outside the domain";
-    case VIGEN_E_MATH: return "mathematical failure";
-    case VIGEN_E_PRECISION: return "precision limit reached";
-    case VIGEN_E_MEMORY: return "out of memory";
-    case VIGEN_E_INTEGRAL: return "integral not certified";
-    default: return "unknown status";
-    }
+    if (code < 0 || code >= VIGEN_STATUS_COUNT) return "unknown status";
+    return status_table[code].words;
+}
+
+int vigen_status_exit_code(int code)
+{
+    if (code < 0 || code >= VIGEN_STATUS_COUNT) return 3;
+    return status_table[code].exit_status;
 }
 
 static vigen_warning_fn warning_fn = NULL;

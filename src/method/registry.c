@@ -1,4 +1,4 @@
-/* source.c — load a tableau from a tableau file or a spec file. */
+/* registry.c — load a tableau from a tableau file or a spec file. */
 #include <lauxlib.h>
 #include "method/galerkin.h"
 #include "lua/sandbox.h"
@@ -50,5 +50,15 @@ int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_er
         vigen_error_prefix(err, "%s: ", path);
         vigen_tableau_clear(t);
     }
+    return rc;
+}
+
+int vigen_generate_file(vigen_tableau *out, const char *path, slong digits, vigen_error *err)
+{
+    vigen_spec *spec = NULL;
+    int rc = vigen_spec_load(&spec, path, NULL, err);
+    if (rc != VIGEN_OK) return rc;
+    rc = vigen_galerkin_generate(out, spec, digits, err);
+    vigen_spec_free(spec);
     return rc;
 }
