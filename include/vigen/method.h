@@ -16,6 +16,23 @@ int vigen_source_is_tableau(const char *path, vigen_error *err);
  * evaluated at a precision adequate for `digits` digits. */
 int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_error *err);
 
+/* A method file, run once: a spec (its tableau is generated at the digits
+ * asked for) or a tableau file (read as it is).  Every command that takes a
+ * FILE loads it with vigen_method_load and asks for tableaux with
+ * vigen_method_tableau, as often as it needs, without running the file again. */
+typedef struct vigen_method vigen_method;
+
+int vigen_method_load(vigen_method **out, const char *path, const vigen_sandbox_limits *limits /* NULL: defaults */,
+                      vigen_error *err);
+void vigen_method_free(vigen_method *m);
+/* 1 when the tableau is computed from the file at the digits asked for (a
+ * spec), 0 when the file states it (a tableau file). */
+int vigen_method_is_generated(const vigen_method *m);
+/* The tableau (t uninitialised on entry, initialised on success): generated
+ * with `digits` certified digits, or read from the tableau file and evaluated
+ * at a precision adequate for `digits` digits. */
+int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err);
+
 /* The generator: the tableau of the Galerkin variational integrator of the
  * spec file at path, every entry certified to `digits` significant digits
  * (out uninitialised on entry; initialised on success). */
