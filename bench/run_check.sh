@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# run_check.sh [BUILD] — benchmark of `vigen check` (issue 3 item 7): median
+# run_check.sh [BUILD] — benchmark of `vigen check`: median
 # in-process time of the whole check (row sums, symplecticity, every
 # bicoloured-tree condition up to P, separable and single-part orders,
 # simplifying assumptions) for shipped tableaux.  Rewrites the "Checker"
@@ -40,7 +40,7 @@ row() { # file P
   echo "proofs (Lobatto IIIA-IIIB 4 in Q(sqrt 5), Gauss 3 in Q(sqrt 15): the checker"
   echo "runs the conjugate tableau too)."
   echo
-  echo "Target (issue 3): order <= 8 for an 8-stage tableau at 128 bits well under a second."
+  echo "Target: order <= 8 for an 8-stage tableau at 128 bits well under a second."
   echo "<!-- checker:end -->"
 } >"$work/section.md"
 doc=$root/docs/benchmarks.md

@@ -1,6 +1,5 @@
 #!/usr/bin/env bash
-# run_emit.sh [BUILD [OUT]] — benchmarks of the emitted steppers (issue 4
-# item 7).  Builds bench/emit_bench and bench/emit_icount against the vigen of
+# run_emit.sh [BUILD [OUT]] — benchmarks of the emitted steppers.  Builds bench/emit_bench and bench/emit_icount against the vigen of
 # the build directory BUILD (default build/) into OUT (default
 # /tmp/vigen-bench) with bench/emit_build.sh, then
 #   1. runs emit_bench: wall time per step, gradient evaluations, energy

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# run_generate.sh [BUILD] — benchmark of `vigen generate` (issue 2 item 10):
+# run_generate.sh [BUILD] — benchmark of `vigen generate`:
 # in-process generation time (median of repeated runs) for Lagrange at
 # Gauss-Legendre nodes, s in {2,4,8,16,32} x digits in {16,100,1000,2000}, and
 # trig(s) at Gauss-Legendre nodes, s in {3,5,10}, with the mpmath peer (same
@@ -61,7 +61,7 @@ PY
   echo "\`trig\` is the family \`trig(s)\` (closed-form antiderivatives); \`trig-strings\` is the same"
   echo "basis written as expression strings (cos(2*pi*t), ...), whose exact antiderivatives vigen"
   echo "finds itself (with acb_calc_integrate instead, trig(10) at 1000 digits took 1.24 s)."
-  echo "Targets (issue 2): Gauss s = 10 at 1000 digits under 0.06 s; trig(10) at 1000 digits under 1 s."
+  echo "Targets: Gauss s = 10 at 1000 digits under 0.06 s; trig(10) at 1000 digits under 1 s."
   echo "<!-- generator:end -->"
 } >"$work/section.md"
 
