@@ -1,4 +1,6 @@
-/* error.h — integer status codes and the error record every vigen function fills.
+/* error.h — integer status codes and the error record every vigen function
+ * fills, and the string helpers messages are built with (growable strings,
+ * heap formatting, "did you mean" hints).
  *
  * A function that can fail returns one of the VIGEN_* codes (VIGEN_OK = 0) and,
  * when it fails, writes a human-readable message into a vigen_error supplied by

@@ -1,5 +1,5 @@
 /* expr.h — exact real expressions: the one parser for nodes, basis functions
- * and tableau entries.
+ * and tableau entries, and the table of elementary functions they may use.
  *
  * Grammar (whitespace ignored):
  *   expr    := term (('+' | '-') term)*
@@ -8,7 +8,7 @@
  *   power   := primary ('^' unary)?            -- right associative: 2^-1, 2^3^2 = 2^9
  *   primary := number | 'pi' | 't' | func '(' expr ')' | '(' expr ')'
  *   number  := digits ['.' digits] [('e'|'E') ['+'|'-'] digits]  |  '.' digits [...]
- *   func    := sqrt | exp | log | sin | cos | tan
+ *   func    := sqrt | exp | log | sin | cos | tan     -- the rows of functions.def
  * Numbers are exact: "0.1" is 1/10, "2.5e-3" is 1/400.  Identifiers other than
  * pi, t and the functions are errors.  The variable t is allowed only when the
  * caller says so (basis functions); nodes and tableau entries are constants.
@@ -30,6 +30,33 @@
 #include "vigen/error.h"
 
 typedef struct vigen_expr vigen_expr;
+
+/* An elementary function of the grammar (a row of functions.def), as the Lua
+ * ball library and messages see it. */
+typedef struct {
+    const char *name;          /* "sqrt" */
+    const char *description;   /* one line, for documentation */
+    /* res = f(x); with analytic set, indeterminate unless f is certainly
+     * holomorphic on the ball x (branch cuts), for acb_calc_integrate */
+    void (*eval_acb)(acb_t res, const acb_t x, int analytic, slong prec);
+    int in_ball_library;       /* offered as ball.NAME and as a global in spec files */
+} vigen_expr_function;
+
+/* A named constant of the grammar ("pi"). */
+typedef struct {
+    const char *name;
+    const char *description;
+    void (*eval_acb)(acb_t res, slong prec);
+} vigen_expr_constant;
+
+int vigen_expr_function_count(void);
+const vigen_expr_function *vigen_expr_function_at(int i);    /* 0 <= i < count */
+int vigen_expr_constant_count(void);
+const vigen_expr_constant *vigen_expr_constant_at(int i);
+/* The names in table order, comma-separated: "sqrt, exp, log, sin, cos, tan"
+ * and "pi".  Static strings. */
+const char *vigen_expr_function_names(void);
+const char *vigen_expr_constant_names(void);
 
 /* Parses text.  allow_t: whether the variable t may appear.  On error returns
  * VIGEN_E_SYNTAX with a message that quotes the text and names the column, e.g.

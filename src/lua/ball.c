@@ -227,34 +227,19 @@ static int ball_tostring(lua_State *L)
 
 /* ------------------------------------------------------------------ library */
 
-enum { F_SQRT, F_EXP, F_LOG, F_SIN, F_COS, F_TAN };
-
-static int unary(lua_State *L, int f, const char *name)
+/* ball.NAME for a row of the expression function table (the upvalue). */
+static int l_function(lua_State *L)
 {
-    check_operand(L, 1, name, NULL);
+    const vigen_expr_function *f = lua_touserdata(L, lua_upvalueindex(1));
+    check_operand(L, 1, f->name, NULL);
     const ball_context *c = context(L);
     acb_struct *r = push_ball(L);
     acb_t tz;
     acb_init(tz);
-    acb_srcptr z = operand(tz, L, 1);
-    switch (f) {
-    case F_SQRT: acb_sqrt_analytic(r, z, c->analytic, c->prec); break;
-    case F_EXP: acb_exp(r, z, c->prec); break;
-    case F_LOG: acb_log_analytic(r, z, c->analytic, c->prec); break;
-    case F_SIN: acb_sin(r, z, c->prec); break;
-    case F_COS: acb_cos(r, z, c->prec); break;
-    default: acb_tan(r, z, c->prec); break;
-    }
+    f->eval_acb(r, operand(tz, L, 1), c->analytic, c->prec);
     acb_clear(tz);
     return 1;
 }
-
-static int l_sqrt(lua_State *L) { return unary(L, F_SQRT, "sqrt"); }
-static int l_exp(lua_State *L) { return unary(L, F_EXP, "exp"); }
-static int l_log(lua_State *L) { return unary(L, F_LOG, "log"); }
-static int l_sin(lua_State *L) { return unary(L, F_SIN, "sin"); }
-static int l_cos(lua_State *L) { return unary(L, F_COS, "cos"); }
-static int l_tan(lua_State *L) { return unary(L, F_TAN, "tan"); }
 
 /* exact("1/3"): an exact expression string, evaluated as a real ball. */
 static int l_exact(lua_State *L)
@@ -297,13 +282,16 @@ static int l_exact(lua_State *L)
 /* ball.pi, and ball.<unknown> */
 static int lib_index(lua_State *L)
 {
-    if (lua_type(L, 2) == LUA_TSTRING && strcmp(lua_tostring(L, 2), "pi") == 0) {
+    for (int i = 0; lua_type(L, 2) == LUA_TSTRING && i < vigen_expr_constant_count(); i++) {
+        const vigen_expr_constant *k = vigen_expr_constant_at(i);
+        if (strcmp(lua_tostring(L, 2), k->name) != 0) continue;
         acb_struct *r = push_ball(L);
-        acb_const_pi(r, context(L)->prec);
+        k->eval_acb(r, context(L)->prec);
         return 1;
     }
-    return luaL_error(L, "ball.%s does not exist (the ball library has pi, sqrt, exp, log, sin, cos, tan, exact)",
-                      lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : luaL_typename(L, 2));
+    return luaL_error(L, "ball.%s does not exist (the ball library has %s, %s, exact)",
+                      lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : luaL_typename(L, 2),
+                      vigen_expr_constant_names(), vigen_expr_function_names());
 }
 
 /* ------------------------------------------------------------------ API */
@@ -336,11 +324,15 @@ void vigen_ball_open(lua_State *L)
     lua_setfield(L, -2, "__metatable");
     lua_rawsetp(L, LUA_REGISTRYINDEX, &scratch_mt_key);
 
-    static const luaL_Reg lib[] = {
-        { "sqrt", l_sqrt }, { "exp", l_exp }, { "log", l_log }, { "sin", l_sin }, { "cos", l_cos },
-        { "tan", l_tan }, { "exact", l_exact }, { NULL, NULL }
-    };
+    static const luaL_Reg lib[] = { { "exact", l_exact }, { NULL, NULL } };
     luaL_newlib(L, lib);
+    for (int i = 0; i < vigen_expr_function_count(); i++) {
+        const vigen_expr_function *f = vigen_expr_function_at(i);
+        if (!f->in_ball_library) continue;
+        lua_pushlightuserdata(L, (void *)f);
+        lua_pushcclosure(L, l_function, 1);
+        lua_setfield(L, -2, f->name);
+    }
     lua_newtable(L);
     lua_pushcfunction(L, lib_index);
     lua_setfield(L, -2, "__index");

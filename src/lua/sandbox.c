@@ -30,6 +30,7 @@
 #include <lualib.h>
 
 #include "lua/ball.h"
+#include "core/expr.h"
 #include "method/nodes.h"
 #include "lua/sandbox.h"
 
@@ -51,7 +52,6 @@ struct vigen_sandbox {
 
 /* The basis families of the spec vocabulary (the node families come from nodes.h). */
 const char *const vigen_basis_family_names[] = { "monomials", "trig", "legendre", "chebyshev_t", NULL };
-static const char *const function_names = "sqrt, exp, log, sin, cos, tan, pi, exact";
 
 static char family_mt_key;          /* registry key of the family descriptor metatable */
 
@@ -452,7 +452,8 @@ static int strict_index(lua_State *L)
     luaL_addstring(&b, "; basis families: ");
     add_list(&b, vigen_basis_family_names);
     luaL_addstring(&b, "; functions: ");
-    luaL_addstring(&b, function_names);
+    lua_pushfstring(L, "%s, %s, exact", vigen_expr_function_names(), vigen_expr_constant_names());
+    luaL_addvalue(&b);
     luaL_addstring(&b, ")");
     luaL_pushresult(&b);
     return luaL_error(L, "%s", lua_tostring(L, -1));
@@ -586,12 +587,15 @@ static int setup_state(lua_State *L)
 
     /* balls, and their functions as globals */
     vigen_ball_open(L);
-    static const char *const functions[] = { "sqrt", "exp", "log", "sin", "cos", "tan", "exact", NULL };
     lua_getfield(L, LUA_REGISTRYINDEX, "vigen.ball.lib");
-    for (int i = 0; functions[i]; i++) {
-        lua_getfield(L, -1, functions[i]);
-        lua_setglobal(L, functions[i]);
+    for (int i = 0; i < vigen_expr_function_count(); i++) {
+        const vigen_expr_function *f = vigen_expr_function_at(i);
+        if (!f->in_ball_library) continue;
+        lua_getfield(L, -1, f->name);
+        lua_setglobal(L, f->name);
     }
+    lua_getfield(L, -1, "exact");
+    lua_setglobal(L, "exact");
     lua_pop(L, 1);
 
     /* strict globals */

@@ -825,8 +825,130 @@ static void test_quadratic(void)
     arb_clear(x); arb_clear(y); arb_clear(r);
 }
 
+/* ---- the function table ------------------------------------------------ */
+
+/* Identities that each function of the table must satisfy, written as two
+ * expressions in t equal for every t > 0 short of pi/2 (the domain common to
+ * all rows).  They are mathematics, not output of the code; a row of
+ * functions.def without an entry here fails the test. */
+static const struct { const char *name, *lhs, *rhs; } function_identities[] = {
+    { "sqrt", "sqrt(t)^2", "t" },
+    { "sqrt", "sqrt(4*t)", "2*sqrt(t)" },
+    { "exp", "exp(log(t))", "t" },
+    { "exp", "exp(2*t)", "exp(t)^2" },
+    { "log", "log(exp(t))", "t" },
+    { "log", "log(t^3)", "3*log(t)" },
+    { "sin", "sin(t)^2 + cos(t)^2", "1" },
+    { "sin", "sin(2*t)", "2*sin(t)*cos(t)" },
+    { "cos", "cos(2*t)", "1 - 2*sin(t)^2" },
+    { "cos", "cos(pi - t)", "-cos(t)" },
+    { "tan", "tan(t)", "sin(t)/cos(t)" },
+    { "tan", "tan(pi/4)", "1" },
+    { "pi", "sin(pi/6)", "1/2" },
+    { "pi", "cos(pi)", "-1" },
+};
+
+/* lhs and rhs agree at t to about prec - 40 bits. */
+static void check_identity(const char *lhs, const char *rhs, const arb_t t, slong prec)
+{
+    arb_t x, y;
+    arb_init(x); arb_init(y);
+    if (eval_text(x, lhs, t, prec) == VIGEN_OK && eval_text(y, rhs, t, prec) == VIGEN_OK) {
+        arb_sub(x, x, y, prec);
+        CHECK_MSG(arb_contains_zero(x) && mag_cmp_2exp_si(arb_radref(x), 40 - prec) <= 0,
+                  "%s = %s fails at t = %s", lhs, rhs, arb_get_str(t, 10, 0));
+    }
+    arb_clear(x); arb_clear(y);
+}
+
+static void check_has_identity(const char *name)
+{
+    int found = 0;
+    for (size_t i = 0; i < sizeof function_identities / sizeof function_identities[0]; i++)
+        found |= strcmp(function_identities[i].name, name) == 0;
+    CHECK_MSG(found, "%s: no identity in function_identities (add one for the new row)", name);
+}
+
+/* Every row: the parser takes the name (and wants its parenthesis), the
+ * unknown-name message lists it, the arb and acb evaluators agree at points
+ * inside the domain, and its identities hold there. */
+static void test_function_table(void)
+{
+    slong prec = 192;
+    static const slong points[][2] = { { 1, 3 }, { 7, 10 }, { 6, 5 } };   /* in (0, pi/2) */
+    arb_t t, x, y;
+    acb_t tz, z, w;
+    vigen_error err;
+    arb_init(t); arb_init(x); arb_init(y);
+    acb_init(tz); acb_init(z); acb_init(w);
+    vigen_error_init(&err);
+
+    CHECK(vigen_expr_function_count() > 0 && vigen_expr_constant_count() > 0);
+    for (int i = 0; i < vigen_expr_function_count(); i++) {
+        const vigen_expr_function *f = vigen_expr_function_at(i);
+        CHECK_MSG(f->name != NULL && f->description != NULL && f->description[0] != '\0' && f->eval_acb != NULL,
+                  "function row %d is incomplete", i);
+        CHECK_MSG(contains(vigen_expr_function_names(), f->name), "%s is not in the name list", f->name);
+        check_has_identity(f->name);
+
+        char *call = vigen_strdup_printf("%s(t)", f->name);
+        char *bare = vigen_strdup_printf("%s + 1", f->name);
+        char *upper = vigen_strdup_printf("%c%s(1)", f->name[0] - 'a' + 'A', f->name + 1);
+        check_syntax_error(bare, 1, "expected '('", f->name, NULL);
+        check_syntax_error(upper, 0, "unknown name", vigen_expr_function_names(), f->name, NULL);
+        vigen_expr *e = NULL;
+        CHECK_MSG(vigen_expr_parse(&e, call, 1, &err) == VIGEN_OK, "%s: %s", call, err.message ? err.message : "");
+        for (size_t k = 0; e != NULL && k < sizeof points / sizeof points[0]; k++) {
+            arb_set_si(t, points[k][0]);
+            arb_div_si(t, t, points[k][1], prec);
+            acb_set_arb(tz, t);
+            CHECK_MSG(vigen_expr_eval_arb(x, e, t, prec, &err) == VIGEN_OK, "%s: %s", call,
+                      err.message ? err.message : "");
+            for (int analytic = 0; analytic <= 1; analytic++) {
+                CHECK(vigen_expr_eval_acb(z, e, tz, analytic, prec) == VIGEN_OK);
+                CHECK_MSG(acb_is_finite(z) && arb_overlaps(acb_realref(z), x) && arb_contains_zero(acb_imagref(z)),
+                          "%s: the real and complex evaluators disagree at t = %ld/%ld (analytic %d)",
+                          call, (long)points[k][0], (long)points[k][1], analytic);
+                f->eval_acb(w, tz, analytic, prec);    /* the row's evaluator, as the ball library calls it */
+                CHECK_MSG(acb_overlaps(w, z), "%s: the row's acb evaluator differs from the tree's", call);
+            }
+            for (size_t j = 0; j < sizeof function_identities / sizeof function_identities[0]; j++)
+                if (strcmp(function_identities[j].name, f->name) == 0)
+                    check_identity(function_identities[j].lhs, function_identities[j].rhs, t, prec);
+        }
+        vigen_expr_free(e);
+        free(call); free(bare); free(upper);
+    }
+
+    for (int i = 0; i < vigen_expr_constant_count(); i++) {
+        const vigen_expr_constant *c = vigen_expr_constant_at(i);
+        CHECK_MSG(contains(vigen_expr_constant_names(), c->name), "%s is not in the name list", c->name);
+        check_has_identity(c->name);
+        CHECK(eval_text(x, c->name, NULL, prec) == VIGEN_OK);
+        c->eval_acb(z, prec);
+        CHECK_MSG(arb_overlaps(acb_realref(z), x) && arb_is_zero(acb_imagref(z)),
+                  "%s: the real and complex values disagree", c->name);
+        arb_one(t);
+        for (size_t j = 0; j < sizeof function_identities / sizeof function_identities[0]; j++)
+            if (strcmp(function_identities[j].name, c->name) == 0)
+                check_identity(function_identities[j].lhs, function_identities[j].rhs, t, prec);
+    }
+    /* the lists name each row once: count - 1 separators */
+    int commas = 0;
+    for (const char *p = vigen_expr_function_names(); (p = strstr(p, ", ")) != NULL; p += 2) commas++;
+    CHECK(commas == vigen_expr_function_count() - 1);
+    commas = 0;
+    for (const char *p = vigen_expr_constant_names(); (p = strstr(p, ", ")) != NULL; p += 2) commas++;
+    CHECK(commas == vigen_expr_constant_count() - 1);
+
+    vigen_error_clear(&err);
+    arb_clear(t); arb_clear(x); arb_clear(y);
+    acb_clear(tz); acb_clear(z); acb_clear(w);
+}
+
 int main(void)
 {
+    test_function_table();
     test_quadratic();
     test_latex();
     test_closed_form_integrals();

@@ -1,0 +1,169 @@
+/* expr_integrate.c — expressions as polynomials in t, and closed-form
+ * integrals int_0^x of polynomials and of the table's functions with an
+ * antiderivative (sin, cos, exp) at linear arguments: exact and cheap where
+ * rigorous quadrature at thousands of digits is slow. */
+#include <arb_poly.h>
+#include "core/expr_internal.h"
+
+/* to_arb_poly refuses polynomials of higher degree. */
+#define EXPR_MAX_POLY_DEGREE 100000
+
+/* ------------------------------------------------------------------------ */
+/* Polynomials in t                                                           */
+
+static int poly_node(arb_poly_t res, const node *n, slong prec)
+{
+    int ok = 0;
+    arb_poly_t q;
+
+    if (!n->has_t) {
+        arb_t v;
+        arb_init(v);
+        ok = expr_eval_constant(v, n, prec);
+        if (ok) arb_poly_set_arb(res, v);
+        arb_clear(v);
+        return ok;
+    }
+
+    switch (n->kind) {
+    case N_T:
+        arb_poly_zero(res);
+        arb_poly_set_coeff_si(res, 1, 1);
+        return 1;
+    case N_NEG:
+        if (!poly_node(res, n->a, prec)) return 0;
+        arb_poly_neg(res, res);
+        return 1;
+    case N_ADD: case N_SUB: case N_MUL:
+        if (!poly_node(res, n->a, prec)) return 0;
+        arb_poly_init(q);
+        ok = poly_node(q, n->b, prec);
+        if (ok) {
+            if (n->kind == N_ADD) arb_poly_add(res, res, q, prec);
+            else if (n->kind == N_SUB) arb_poly_sub(res, res, q, prec);
+            else if (arb_poly_degree(res) + arb_poly_degree(q) > EXPR_MAX_POLY_DEGREE) ok = 0;
+            else arb_poly_mul(res, res, q, prec);
+        }
+        arb_poly_clear(q);
+        return ok;
+    case N_DIV:
+        if (n->b->has_t) return 0;
+        if (!poly_node(res, n->a, prec)) return 0;
+        {
+            arb_t v;
+            arb_init(v);
+            ok = expr_eval_constant(v, n->b, prec) && !arb_contains_zero(v);
+            if (ok) arb_poly_scalar_div(res, res, v, prec);
+            arb_clear(v);
+        }
+        return ok;
+    case N_POW:
+        if (!n->int_exp || fmpz_sgn(n->k) < 0) return 0;
+        if (!poly_node(res, n->a, prec)) return 0;
+        {
+            slong d = arb_poly_degree(res);
+            if (d > 0 && fmpz_cmp_si(n->k, EXPR_MAX_POLY_DEGREE / d) > 0) return 0;
+            arb_poly_pow_ui(res, res, fmpz_get_ui(n->k), prec);
+        }
+        return 1;
+    default:
+        return 0;    /* functions of t, and t in an exponent or a divisor */
+    }
+}
+
+int vigen_expr_to_arb_poly(arb_poly_t res, const vigen_expr *e, slong prec)
+{
+    int ok = poly_node(res, e->root, prec);
+    if (!ok) arb_poly_zero(res);
+    return ok;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Closed-form integrals                                                      */
+
+/* res = int_0^x n(t) dt when n is built from polynomials in t, sin, cos and
+ * exp of linear arguments a t + b (a != 0), sums, and constant factors or
+ * divisors: then the antiderivative is exact and cheap, where rigorous
+ * quadrature at thousands of digits is slow.  Returns 0 (res undefined) for
+ * anything else. */
+static int closed_integral(arb_t res, const node *n, const arb_t x, slong prec)
+{
+    if (!n->has_t) {
+        if (!expr_eval_constant(res, n, prec)) return 0;
+        arb_mul(res, res, x, prec);
+        return 1;
+    }
+    arb_poly_t p;
+    arb_poly_init(p);
+    int ok = 0;
+    if (poly_node(p, n, prec)) {
+        arb_poly_integral(p, p, prec);
+        arb_poly_evaluate(res, p, x, prec);
+        arb_poly_clear(p);
+        return 1;
+    }
+    arb_t u, v;
+    arb_init(u);
+    arb_init(v);
+    switch (n->kind) {
+    case N_NEG:
+        ok = closed_integral(res, n->a, x, prec);
+        if (ok) arb_neg(res, res);
+        break;
+    case N_ADD: case N_SUB:
+        ok = closed_integral(u, n->a, x, prec) && closed_integral(v, n->b, x, prec);
+        if (ok) {
+            if (n->kind == N_ADD) arb_add(res, u, v, prec);
+            else arb_sub(res, u, v, prec);
+        }
+        break;
+    case N_MUL: {
+        const node *k = n->a->has_t ? n->b : n->a, *f = n->a->has_t ? n->a : n->b;
+        if (k->has_t) break;                       /* a product of two functions of t */
+        ok = expr_eval_constant(u, k, prec) && closed_integral(v, f, x, prec);
+        if (ok) arb_mul(res, u, v, prec);
+        break;
+    }
+    case N_DIV:
+        if (n->b->has_t) break;
+        ok = expr_eval_constant(u, n->b, prec) && !arb_contains_zero(u) && closed_integral(v, n->a, x, prec);
+        if (ok) arb_div(res, v, u, prec);
+        break;
+    case N_FUNC: {
+        /* f(a t + b): int_0^x = (F(a x + b) - F(b)) / a with F' = f */
+        expr_arb_plain_fn F = expr_functions[n->fn].antiderivative;
+        if (F == NULL || !poly_node(p, n->a, prec) || arb_poly_degree(p) != 1) break;
+        arb_srcptr b = arb_poly_get_coeff_ptr(p, 0);
+        arb_srcptr a = arb_poly_get_coeff_ptr(p, 1);
+        if (arb_contains_zero(a)) break;
+        arb_t zero, fx, fb;
+        arb_init(zero);
+        arb_init(fx);
+        arb_init(fb);
+        if (b == NULL) b = zero;
+        arb_mul(u, a, x, prec);
+        arb_add(u, u, b, prec);                    /* a x + b */
+        F(fx, u, prec);
+        F(fb, b, prec);
+        arb_sub(v, fx, fb, prec);
+        arb_div(res, v, a, prec);
+        ok = arb_is_finite(res);
+        arb_clear(zero);
+        arb_clear(fx);
+        arb_clear(fb);
+        break;
+    }
+    default:
+        break;
+    }
+    arb_clear(u);
+    arb_clear(v);
+    arb_poly_clear(p);
+    return ok;
+}
+
+int vigen_expr_integral_closed_form(arb_t res, const vigen_expr *e, const arb_t x, slong prec)
+{
+    return closed_integral(res, e->root, x, prec);
+}
+
