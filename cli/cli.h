@@ -9,7 +9,7 @@
 #include "vigen/error.h"
 
 enum {
-#define COMMAND(name, operand, summary, help) VIGEN_CMD_##name,
+#define COMMAND(name, operand, ask, summary, help) VIGEN_CMD_##name,
 #include "commands.def"
     VIGEN_CMD_COUNT
 };
@@ -25,7 +25,7 @@ enum {
 #define VIGEN_CLI_DEFAULT_DIGITS 34
 
 typedef struct {
-    const char *name, *operand, *summary, *help;
+    const char *name, *operand, *ask, *summary, *help;
 } vigen_cli_command;
 
 typedef struct {
@@ -81,7 +81,7 @@ void vigen_cli_print_command_help(FILE *out, int command); /* vigen help COMMAND
 void vigen_cli_print_usage(FILE *out, int command);   /* the usage line */
 
 /* The handlers, one file each; each returns the exit status. */
-#define COMMAND(name, operand, summary, help) int vigen_cmd_##name(const vigen_cli_args *args);
+#define COMMAND(name, operand, ask, summary, help) int vigen_cmd_##name(const vigen_cli_args *args);
 #include "commands.def"
 
 #endif

@@ -118,9 +118,16 @@ void vigen_cli_print_command_help(FILE *out, int command)
         fputs("\noptions:\n", out);
         print_options(out, command);
     }
-    fputs("\nThe options for every command (--max-memory, --max-instructions) and the exit\n"
-          "statuses (0 success, 1 a verdict of check, 2 bad input or usage, 3 a resource or\n"
-          "system failure) are in 'vigen help'.\n", out);
+    fputs("\noptions for every command:", out);
+    const char *sep = " ";
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (!applies(o, VIGEN_CMD_global)) continue;
+        fprintf(out, "%s%s%s%s", sep, vigen_cli_option_name(k), o->metavar ? " " : "", o->metavar ? o->metavar : "");
+        sep = ", ";
+    }
+    fputs("\nexit status: 0 success, 1 a verdict of check, 2 bad input or usage, 3 a resource\n"
+          "or system failure; both are explained in 'vigen help'.\n", out);
 }
 
 int vigen_cmd_help(const vigen_cli_args *args)

@@ -11,7 +11,7 @@
 typedef int (*handler_fn)(const vigen_cli_args *args);
 
 static const handler_fn handlers[VIGEN_CMD_COUNT] = {
-#define COMMAND(name, operand, summary, help) vigen_cmd_##name,
+#define COMMAND(name, operand, ask, summary, help) vigen_cmd_##name,
 #include "commands.def"
 };
 
@@ -80,11 +80,8 @@ static int run(int *command_out, int argc, char **argv)
     if (args.value[VIGEN_OPT_global_version]) return vigen_cmd_version(&args);
     if ((rc = apply_sandbox_options(&args)) >= 0) return rc;
     const char *operand = vigen_cli_commands[command].operand;
-    if (operand[0] != '\0' && operand[0] != '[' && args.operand == NULL) {
-        if (command == VIGEN_CMD_generate)
-            return vigen_cli_usage_error(command, "which spec file? give one, e.g. tableaux/specs/gauss_legendre_s2.lua");
-        return vigen_cli_usage_error(command, "which file? give a tableau or spec file, e.g. tableaux/published/gauss_2.lua");
-    }
+    if (operand[0] != '\0' && operand[0] != '[' && args.operand == NULL)
+        return vigen_cli_usage_error(command, "%s", vigen_cli_commands[command].ask);
     for (int k = 0; k < VIGEN_OPT_COUNT; k++)
         if (vigen_cli_options[k].command == command && vigen_cli_options[k].required && args.value[k] == NULL)
             return vigen_cli_usage_error(command, "%s is required: %s %s (%s)", vigen_cli_option_name(k),

@@ -7,7 +7,7 @@
 #include "cli.h"
 
 const vigen_cli_command vigen_cli_commands[VIGEN_CMD_COUNT] = {
-#define COMMAND(name, operand, summary, help) { #name, operand, summary, help },
+#define COMMAND(name, operand, ask, summary, help) { #name, operand, ask, summary, help },
 #include "commands.def"
 };
 

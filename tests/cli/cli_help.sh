@@ -93,6 +93,9 @@ has err "^vigen check: which file? give a tableau or spec file, e.g. tableaux/pu
 has err "^see 'vigen help check'$"
 status 2 generate
 short_error "generate without a spec"
+status 2 generate "$pub/gauss_2.lua"
+short_error "generate of a tableau file"
+has err "gauss_2.lua is a tableau file, not a spec"
 status 2 emit "$pub/gauss_2.lua"
 short_error "emit without --name"
 has err "^vigen emit: --name is required"
