@@ -1,0 +1,150 @@
+/* help.c — usage lines, `vigen help`, `vigen help COMMAND` and
+ * `vigen version`, all rendered from the tables of commands.def and, for the
+ * exit statuses, of status.def. */
+#include <string.h>
+#include "cli.h"
+
+/* What each exit status means; the status codes that give it are listed
+ * from status.def after the words. */
+static const char *const exit_meaning[] = {
+    "success",
+    "a verdict: check found something FAILED or NOT DECIDED, or entries differ\n"
+    "     from --against",
+    "bad input or usage",
+    "a resource or system failure",
+};
+enum { EXIT_STATUS_COUNT = sizeof exit_meaning / sizeof exit_meaning[0] };
+
+static int applies(const vigen_cli_option *o, int command) { return o->command == command; }
+
+/* "-q, --quiet", "--digits N", "-o FILE": the left column of an option. */
+static void option_label(char *buf, size_t size, const vigen_cli_option *o)
+{
+    snprintf(buf, size, "%s%s%s%s%s", o->short_name && o->long_name ? o->short_name : "",
+             o->short_name && o->long_name ? ", " : "", o->long_name ? o->long_name : o->short_name,
+             o->metavar ? " " : "", o->metavar ? o->metavar : "");
+}
+
+static void print_options(FILE *out, int command)
+{
+    char label[96];
+    size_t width = 0;
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        if (!applies(&vigen_cli_options[k], command)) continue;
+        option_label(label, sizeof label, &vigen_cli_options[k]);
+        if (strlen(label) > width) width = strlen(label);
+    }
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (!applies(o, command)) continue;
+        option_label(label, sizeof label, o);
+        fprintf(out, "  %-*s  ", (int)width, label);
+        for (const char *d = o->description; *d; d++) {
+            fputc(*d, out);
+            if (*d == '\n') fprintf(out, "  %-*s  ", (int)width, "");
+        }
+        fputc('\n', out);
+    }
+}
+
+void vigen_cli_print_usage(FILE *out, int command)
+{
+    const vigen_cli_command *c = &vigen_cli_commands[command];
+    fprintf(out, "usage: vigen %s%s%s", c->name, c->operand[0] ? " " : "", c->operand);
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (!applies(o, command)) continue;
+        fprintf(out, " %s%s%s%s%s", o->required ? "" : "[", vigen_cli_option_name(k), o->metavar ? " " : "",
+                o->metavar ? o->metavar : "", o->required ? "" : "]");
+    }
+    fputc('\n', out);
+}
+
+static void print_exit_statuses(FILE *out)
+{
+    fputs("exit status (every command):\n", out);
+    for (int e = 0; e < EXIT_STATUS_COUNT; e++) {
+        int col = fprintf(out, "  %d  %s", e, exit_meaning[e]);
+        if (e >= 2) {
+            /* the status codes of this exit status, wrapped under the words */
+            const char *sep = ":";
+            for (int code = 1; code < VIGEN_STATUS_COUNT; code++) {
+                if (vigen_status_exit_code(code) != e) continue;
+                const char *words = vigen_status_name(code);
+                if (col + 2 + (int)strlen(words) > 80) {
+                    fprintf(out, "%s\n     ", sep);
+                    col = 5;
+                } else col += fprintf(out, "%s", sep);
+                col += fprintf(out, " %s", words);
+                sep = ",";
+            }
+        }
+        fputc('\n', out);
+    }
+}
+
+void vigen_cli_print_help(FILE *out)
+{
+    fputs("usage: vigen COMMAND [OPTIONS]\n"
+          "\n"
+          "Certified symplectic partitioned Runge-Kutta methods.\n"
+          "\n"
+          "commands:\n", out);
+    size_t width = 0;
+    for (int c = 0; c < VIGEN_CMD_COUNT; c++) {
+        size_t n = strlen(vigen_cli_commands[c].name) + 1 + strlen(vigen_cli_commands[c].operand);
+        if (n > width) width = n;
+    }
+    for (int c = 0; c < VIGEN_CMD_COUNT; c++) {
+        char label[64];
+        snprintf(label, sizeof label, "%s %s", vigen_cli_commands[c].name, vigen_cli_commands[c].operand);
+        fprintf(out, "  %-*s  %s\n", (int)width, label, vigen_cli_commands[c].summary);
+    }
+    fputs("\noptions for every command, anywhere on the line (spec and tableau files run in\n"
+          "a Lua sandbox):\n", out);
+    print_options(out, VIGEN_CMD_global);
+    fputc('\n', out);
+    print_exit_statuses(out);
+    fputs("\nRun 'vigen help COMMAND' (or 'vigen COMMAND --help') for the options of a command.\n", out);
+}
+
+void vigen_cli_print_command_help(FILE *out, int command)
+{
+    vigen_cli_print_usage(out, command);
+    fprintf(out, "\n%s", vigen_cli_commands[command].help);
+    int any = 0;
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) any |= applies(&vigen_cli_options[k], command);
+    if (any) {
+        fputs("\noptions:\n", out);
+        print_options(out, command);
+    }
+    fputs("\noptions for every command:", out);
+    const char *sep = " ";
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (!applies(o, VIGEN_CMD_global)) continue;
+        fprintf(out, "%s%s%s%s", sep, vigen_cli_option_name(k), o->metavar ? " " : "", o->metavar ? o->metavar : "");
+        sep = ", ";
+    }
+    fputs("\nexit status: 0 success, 1 a verdict of check, 2 bad input or usage, 3 a resource\n"
+          "or system failure; both are explained in 'vigen help'.\n", out);
+}
+
+int vigen_cmd_help(const vigen_cli_args *args)
+{
+    if (args->operand == NULL) {
+        vigen_cli_print_help(stdout);
+        return 0;
+    }
+    int c = vigen_cli_command_index(args->operand);
+    if (c < 0) return vigen_cli_unknown_command(VIGEN_CMD_help, args->operand);
+    vigen_cli_print_command_help(stdout, c);
+    return 0;
+}
+
+int vigen_cmd_version(const vigen_cli_args *args)
+{
+    (void)args;
+    printf("vigen %s\n", VIGEN_VERSION);
+    return 0;
+}

@@ -1,0 +1,147 @@
+/* options.c — the tables of commands.def as arrays, and the one option
+ * parser every command uses: --opt VALUE, --opt=VALUE, -o VALUE, flags, the
+ * global options anywhere on the line, did-you-mean for mistyped options. */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli.h"
+
+const vigen_cli_command vigen_cli_commands[VIGEN_CMD_COUNT] = {
+#define COMMAND(name, operand, ask, summary, help) { #name, operand, ask, summary, help },
+#include "commands.def"
+};
+
+const vigen_cli_option vigen_cli_options[VIGEN_OPT_COUNT] = {
+#define OPTION(command, id, long_name, short_name, metavar, required, description) \
+    { VIGEN_CMD_##command, long_name, short_name, metavar, required, description },
+#include "commands.def"
+};
+
+const char *vigen_cli_option_name(int option)
+{
+    const vigen_cli_option *o = &vigen_cli_options[option];
+    return o->long_name ? o->long_name : o->short_name;
+}
+
+static void print_prefix(int command)
+{
+    if (command == VIGEN_CMD_global) fputs("vigen: ", stderr);
+    else fprintf(stderr, "vigen %s: ", vigen_cli_commands[command].name);
+}
+
+int vigen_cli_usage_error(int command, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    print_prefix(command);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    if (command == VIGEN_CMD_global) fputs("\nsee 'vigen help'\n", stderr);
+    else fprintf(stderr, "\nsee 'vigen help %s'\n", vigen_cli_commands[command].name);
+    return 2;
+}
+
+int vigen_cli_fail(int command, vigen_error *err)
+{
+    print_prefix(command);
+    fprintf(stderr, "%s\n", err->message ? err->message : vigen_status_name(err->code));
+    int status = vigen_status_exit_code(err->code);
+    vigen_error_clear(err);
+    return status;
+}
+
+int vigen_cli_whole(long long *out, const vigen_cli_args *args, int option, long long lo, long long hi)
+{
+    const char *text = args->value[option];
+    char *end = NULL;
+    long long v = strtoll(text, &end, 10);
+    if (end == text || *end != '\0' || v < lo || v > hi)
+        return vigen_cli_usage_error(args->command, "%s takes a whole number from %lld to %lld, not '%s'",
+                                     vigen_cli_option_name(option), lo, hi, text);
+    *out = v;
+    return -1;
+}
+
+/* The option of command (or a global one) called name, which is the whole
+ * word or, for long names, the part before '='; -1 when there is none. */
+static int find_option(int command, const char *word, size_t len)
+{
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (o->command != command && o->command != VIGEN_CMD_global) continue;
+        if (o->long_name && strlen(o->long_name) == len && strncmp(o->long_name, word, len) == 0) return k;
+        if (o->short_name && strcmp(o->short_name, word) == 0) return k;
+    }
+    return -1;
+}
+
+static int unknown_option(int command, const char *word)
+{
+    const char *names[2 * VIGEN_OPT_COUNT + 1];
+    size_t n = 0;
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (o->command != command && o->command != VIGEN_CMD_global) continue;
+        if (o->long_name) names[n++] = o->long_name;
+        if (o->short_name) names[n++] = o->short_name;
+    }
+    names[n] = NULL;
+    char *key = vigen_strdup(word);
+    char *eq = strchr(key, '=');
+    if (eq) *eq = '\0';
+    const char *near = vigen_nearest_name(key, names, 2);
+    free(key);
+    if (near) return vigen_cli_usage_error(command, "unknown option '%s'; did you mean '%s'?", word, near);
+    return vigen_cli_usage_error(command, "unknown option '%s'", word);
+}
+
+static int is_option_word(const char *word) { return word[0] == '-' && word[1] != '\0'; }
+
+int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, int *stop)
+{
+    const char *operand_kind = command == VIGEN_CMD_global ? "" : vigen_cli_commands[command].operand;
+    int options_end = 0;
+    for (int i = 0; i < argc; i++) {
+        const char *word = argv[i];
+        if (options_end || !is_option_word(word)) {
+            if (command == VIGEN_CMD_global) { *stop = i; return -1; }
+            if (operand_kind[0] == '\0')
+                return vigen_cli_usage_error(command, "takes no operand, not '%s'", word);
+            if (args->operand != NULL)
+                return vigen_cli_usage_error(command, "one %s at a time, not '%s' and '%s'",
+                                             operand_kind[0] == '[' ? "COMMAND" : operand_kind, args->operand, word);
+            args->operand = word;
+            continue;
+        }
+        if (strcmp(word, "--") == 0) { options_end = 1; continue; }
+        const char *eq = word[1] == '-' ? strchr(word, '=') : NULL;
+        int k = find_option(command, word, eq ? (size_t)(eq - word) : strlen(word));
+        if (k < 0) return unknown_option(command, word);
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (o->metavar == NULL) {
+            if (eq) return vigen_cli_usage_error(command, "%s takes no value, not '%s'", vigen_cli_option_name(k), eq + 1);
+            args->value[k] = "";
+        } else if (eq) args->value[k] = eq + 1;
+        else if (i + 1 < argc) args->value[k] = argv[++i];
+        else return vigen_cli_usage_error(command, "%s needs a value: %s %s", word, word, o->metavar);
+    }
+    if (stop) *stop = argc;
+    return -1;
+}
+
+int vigen_cli_command_index(const char *name)
+{
+    for (int c = 0; c < VIGEN_CMD_COUNT; c++)
+        if (strcmp(name, vigen_cli_commands[c].name) == 0) return c;
+    return -1;
+}
+
+int vigen_cli_unknown_command(int command, const char *name)
+{
+    const char *names[VIGEN_CMD_COUNT + 1];
+    for (int c = 0; c < VIGEN_CMD_COUNT; c++) names[c] = vigen_cli_commands[c].name;
+    names[VIGEN_CMD_COUNT] = NULL;
+    const char *near = vigen_nearest_name(name, names, 2);
+    if (near) return vigen_cli_usage_error(command, "unknown command '%s'; did you mean '%s'?", name, near);
+    return vigen_cli_usage_error(command, "unknown command '%s'", name);
+}
