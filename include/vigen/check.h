@@ -273,9 +273,13 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 
 /* Loads opt->path (and opt->against), checks, prints the report to out and
- * returns the exit status: 0 consistent and every stated claim holds, 1
- * something fails or cannot be decided, 2 unreadable input or usage error
- * (err then holds the message; nothing is printed to out). */
+ * returns the exit status.  When everything could be loaded and evaluated it
+ * is the verdict, rep->exit_code: 0 consistent and every stated claim holds,
+ * 1 something fails or cannot be decided.  Otherwise nothing is printed to
+ * out, err holds the message, and the status is vigen_status_exit_code of its
+ * code (status.def): 2 unreadable or invalid input (a file that describes no
+ * method included) or usage error, 3 a resource limit or the precision cap
+ * reached. */
 int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err);
 
 #endif

@@ -17,12 +17,12 @@ int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err)
     }
     vigen_tableau t, u;
     int rc = load_file(&t, opt->path, opt, err);
-    if (rc != VIGEN_OK) return rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION ? 1 : 2;
+    if (rc != VIGEN_OK) return vigen_status_exit_code(rc);
     if (opt->against) {
         rc = load_file(&u, opt->against, opt, err);
         if (rc != VIGEN_OK) {
             vigen_tableau_clear(&t);
-            return rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION ? 1 : 2;
+            return vigen_status_exit_code(rc);
         }
     }
     vigen_check_report rep;
@@ -31,7 +31,7 @@ int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err)
     int code;
     if (rc != VIGEN_OK) {
         vigen_error_prefix(err, "%s: ", opt->path);
-        code = rc == VIGEN_E_MATH || rc == VIGEN_E_PRECISION ? 1 : 2;
+        code = vigen_status_exit_code(rc);
     } else {
         if (opt->json) vigen_check_print_json(out, &rep);
         else vigen_check_print_text(out, &rep);
