@@ -131,7 +131,8 @@ static void compare_tableaux(vigen_check_report *rep, ctx_t *x, const ctx_t *y)
     mag_clear(sc);
 }
 
-
+/* --against: FILE2 read at the precision of the round; its decisions count
+ * in the checked tableau's context. */
 int chk_against(chk_round *rd, vigen_error *err)
 {
     (void)err;

@@ -241,7 +241,6 @@ static int diagnose(entry *culprit, arb_t fix, ctx_t *cx, const ctx_t *mx, cond 
     return found == 1;
 }
 
-
 /* Significant digits of a decimal literal ("-0.01250e-3" has 4), 0 when it
  * is not one. */
 static slong decimal_sig_digits(const char *text)

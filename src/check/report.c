@@ -13,7 +13,6 @@ void vigen_check_options_init(vigen_check_options *opt)
     opt->spec_digits = 34;
 }
 
-
 vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind)
 {
     if (rep->nproblems == rep->alloc_problems) {

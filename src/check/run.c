@@ -11,10 +11,7 @@ static int load_file(vigen_tableau *t, const char *path, const vigen_check_optio
 
 int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err)
 {
-    if (opt->path == NULL) {
-        vigen_error_set(err, VIGEN_E_USAGE, "no tableau file given");
-        return 2;
-    }
+    if (opt->path == NULL) return vigen_status_exit_code(vigen_error_set(err, VIGEN_E_USAGE, "no tableau file given"));
     vigen_tableau t, u;
     int rc = load_file(&t, opt->path, opt, err);
     if (rc != VIGEN_OK) return vigen_status_exit_code(rc);
