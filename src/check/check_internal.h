@@ -10,7 +10,7 @@
 #include <arb.h>
 #include <arb_mat.h>
 #include "vigen/check.h"
-#include "report/balls.h"
+#include "check/balls.h"
 
 #define CHK_DEFAULT_MAX_ORDER 8
 #define CHK_DEFAULT_MAX_PREC 4096

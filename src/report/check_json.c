@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
-#include "report/balls.h"
+#include "check/balls.h"
 #include "report/json.h"
 
 static void json_ball(FILE *out, const arb_t x, slong prec)

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
-#include "report/balls.h"
+#include "check/balls.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",

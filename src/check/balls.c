@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "vigen/error.h"
-#include "report/balls.h"
+#include "check/balls.h"
 
 /* Digits enough to see the difference between x and y (8 .. 45). */
 slong vigen_ball_digits_to_separate(const arb_t x, const arb_t y, slong prec)

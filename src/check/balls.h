@@ -1,7 +1,7 @@
 /* balls.h — balls and radii as short decimal text, for the messages of the
  * checker and its text and JSON reports. */
-#ifndef VIGEN_REPORT_BALLS_H
-#define VIGEN_REPORT_BALLS_H
+#ifndef VIGEN_CHECK_BALLS_H
+#define VIGEN_CHECK_BALLS_H
 
 #include <arb.h>
 
