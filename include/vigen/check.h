@@ -1,8 +1,8 @@
-/* check.h — `vigen check`: certify what a PRK tableau is (MATH.md section 1).
+/* check.h — `vigen check`: certify what a PRK tableau is.
  *
  * Everything is decided in ball arithmetic.  Each condition is a ball r = left
- * side - right side, with three outcomes (issue 3: a condition holds only when
- * its ball contains 0 and fails only when the ball excludes 0):
+ * side - right side, with three outcomes (a condition holds only when its ball
+ * contains 0 and fails only when the ball excludes 0):
  *   fails      the ball excludes 0 (certain);
  *   holds      the ball contains 0, and
  *                - when some entry the condition involves is a rounded decimal
@@ -43,9 +43,8 @@
  * the exit status (0): the threshold makes its radius meaningful, at most
  * 2^-10 of the terms compared.
  *
- * Notes: a rounded decimal with at most VIGEN_CHECK_NOTE_SHORT_DIGITS = 3
- * significant digits in a file whose longest decimals have at least
- * VIGEN_CHECK_NOTE_LONG_DIGITS = 10 is named, with its radius and the exact
+ * Notes: a rounded decimal with at most 3 significant digits in a file whose
+ * longest decimals have at least 10 is named, with its radius and the exact
  * fraction to write if it is exact ("0.5" -> "1/2").
  * The starting precision is adequate to the entries: enough bits for the
  * digits of every rounded decimal and of every exact literal (a number's
@@ -82,10 +81,6 @@
 /* A condition on rounded data holds when its ball contains 0 with a radius at
  * most 2^-VIGEN_CHECK_DATA_BITS of the size of its terms. */
 #define VIGEN_CHECK_DATA_BITS 10
-/* Short decimals that look exact: at most this many significant digits ... */
-#define VIGEN_CHECK_NOTE_SHORT_DIGITS 3
-/* ... in a file whose longest decimal has at least this many. */
-#define VIGEN_CHECK_NOTE_LONG_DIGITS 10
 
 #include <stdio.h>
 #include <arb.h>
@@ -95,7 +90,7 @@
 
 /* Hook for files that are not tableau files: loads path into t (uninitialised
  * on entry, initialised on success), generating the tableau when path is a
- * spec file.  vigen_source_load (source.h) has exactly this signature; with
+ * spec file.  vigen_source_load (vigen/method.h) has exactly this signature; with
  * NULL the checker reads tableau files only (vigen_tableau_load). */
 typedef int (*vigen_check_loader_fn)(vigen_tableau *t, const char *path, slong digits, vigen_error *err);
 
@@ -278,9 +273,13 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 
 /* Loads opt->path (and opt->against), checks, prints the report to out and
- * returns the exit status: 0 consistent and every stated claim holds, 1
- * something fails or cannot be decided, 2 unreadable input or usage error
- * (err then holds the message; nothing is printed to out). */
+ * returns the exit status.  When everything could be loaded and evaluated it
+ * is the verdict, rep->exit_code: 0 consistent and every stated claim holds,
+ * 1 something fails or cannot be decided.  Otherwise nothing is printed to
+ * out, err holds the message, and the status is vigen_status_exit_code of its
+ * code (status.def): 2 unreadable or invalid input (a file that describes no
+ * method included) or usage error, 3 a resource limit or the precision cap
+ * reached. */
 int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err);
 
 #endif

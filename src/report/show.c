@@ -5,6 +5,7 @@
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "vigen/show.h"
+#include "report/json.h"
 
 int vigen_show_parse_format(vigen_show_format *fmt, const char *name)
 {
@@ -89,37 +90,12 @@ int vigen_show_entry_strings(vigen_tableau *t, slong digits, char ***c, char ***
                            (long)(digits + 1));
 }
 
-/* Length of the valid UTF-8 sequence at p, or 0 when it is not one. */
-static int utf8_length(const unsigned char *p)
-{
-    int n = p[0] < 0x80 ? 1 : (p[0] >> 5) == 0x6 ? 2 : (p[0] >> 4) == 0xE ? 3 : (p[0] >> 3) == 0x1E ? 4 : 0;
-    for (int k = 1; k < n; k++)
-        if ((p[k] & 0xC0) != 0x80) return 0;
-    return n;
-}
-
-/* A JSON string: escapes, and U+FFFD for bytes that are not UTF-8 (RFC 8259
- * requires UTF-8; names come from untrusted files). */
-static void json_string(vigen_strbuf *sb, const char *text)
-{
-    vigen_strbuf_append(sb, "\"");
-    for (const unsigned char *p = (const unsigned char *)text; *p;) {
-        int n = utf8_length(p);
-        if (n == 0) { vigen_strbuf_append(sb, "\\ufffd"); p++; continue; }
-        if (*p == '"' || *p == '\\') vigen_strbuf_printf(sb, "\\%c", *p);
-        else if (*p < 0x20) vigen_strbuf_printf(sb, "\\u%04x", (unsigned)*p);
-        else vigen_strbuf_appendn(sb, (const char *)p, (size_t)n);
-        p += n;
-    }
-    vigen_strbuf_append(sb, "\"");
-}
-
 static void json_vector(vigen_strbuf *sb, const char *key, char **v, slong s)
 {
     vigen_strbuf_printf(sb, ", \"%s\": [", key);
     for (slong i = 0; i < s; i++) {
         if (i) vigen_strbuf_append(sb, ", ");
-        json_string(sb, v[i]);
+        vigen_json_string(sb, v[i]);
     }
     vigen_strbuf_append(sb, "]");
 }
@@ -131,7 +107,7 @@ static void json_matrix(vigen_strbuf *sb, const char *key, char **m, slong s)
         vigen_strbuf_append(sb, i ? ", [" : "[");
         for (slong j = 0; j < s; j++) {
             if (j) vigen_strbuf_append(sb, ", ");
-            json_string(sb, m[i * s + j]);
+            vigen_json_string(sb, m[i * s + j]);
         }
         vigen_strbuf_append(sb, "]");
     }
@@ -270,7 +246,7 @@ int vigen_show_render(char **out, vigen_tableau *t, vigen_show_format fmt, slong
     char **bp = t->has_bt ? bt : b;
     if (fmt == VIGEN_SHOW_JSON) {
         vigen_strbuf_append(&sb, "{\"name\": ");
-        json_string(&sb, t->name);
+        vigen_json_string(&sb, t->name);
         vigen_strbuf_printf(&sb, ", \"s\": %ld", (long)s);
         json_vector(&sb, "c", c, s);
         json_matrix(&sb, "A", A, s);

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # cli_check.sh VIGEN SRCDIR — `vigen check` from the command line: exit
 # status (0 consistent and claims hold, 1 something fails, 2 unreadable input
-# or usage), the JSON object, the typo diagnosis, --against, --max-order.
+# or usage, 3 a resource or precision cap), the JSON object, the typo diagnosis, --against, --max-order.
 set -u
 vigen=$1
 src=$2
@@ -273,6 +273,13 @@ run 2 "$pub/gauss_3.lua" --max-order 0
 run 2 "$pub/gauss_3.lua" --max-order 99
 run 2 "$pub/gauss_3.lua" --bogus
 run 2 "$pub/gauss_3.lua" --against "$work/does_not_exist.lua"
+
+# a spec that describes no method is bad input (2), not a verdict; a cap
+# reached is a resource failure (3): the status of each error code in status.def
+run 2 "$src/tests/data/bad_specs/repeated_nodes.lua"
+grep -q "are equal" "$work/stderr" || fail "repeated nodes: stderr lacks 'are equal'"
+run 3 "$src/tests/data/bad_specs/repeated_irrational.lua"
+grep -q "cap" "$work/stderr" || fail "repeated_irrational: stderr lacks 'cap'"
 
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"

@@ -1,0 +1,205 @@
+/* check_internal.h — what the files of the checker share: the three-valued
+ * verdict, entries and their exactness, the evaluation context (ctx_t) that
+ * every decision goes through, the row-sum and symplecticity conditions, and
+ * the state of one round of checks (chk_round) that the table of checks
+ * (checks.def) is run on.  Not installed: nothing outside src/check uses it.
+ */
+#ifndef VIGEN_CHECK_INTERNAL_H
+#define VIGEN_CHECK_INTERNAL_H
+
+#include <arb.h>
+#include <arb_mat.h>
+#include "vigen/check.h"
+#include "check/balls.h"
+
+#define CHK_DEFAULT_MAX_ORDER 8
+#define CHK_DEFAULT_MAX_PREC 4096
+
+/* Short decimals that look exact: at most this many significant digits ... */
+#define CHK_NOTE_SHORT_DIGITS 3
+/* ... in a file whose longest decimal has at least this many. */
+#define CHK_NOTE_LONG_DIGITS 10
+
+/* The verdict on one condition (see check.h for when each is given). */
+enum { HOLDS = 0, FAILS = 1, UNDECIDED = 2 };
+
+/* Entry names; At, bt, ct alias A, b, c when the tableau does not give them. */
+enum { M_A, M_AT, M_B, M_BT, M_C, M_CT };
+extern const char *const chk_matrix_names[6];   /* "A", "At", "b", "bt", "c", "ct" */
+
+typedef struct {
+    int mat;
+    slong i, j;
+} entry;
+
+/* Which entries are exact expressions (1) rather than rounded decimals or
+ * balls without texts (0); row-major for the matrices, as the texts. */
+typedef struct {
+    slong s;
+    unsigned char *A, *At, *b, *bt, *c, *ct;
+    int part[2];                 /* every entry of (A, b) resp. (At, bt) is exact */
+    int part_c[2];               /* ... and of c resp. ct */
+    int any_exact, any_rounded;
+    /* Every entry a + b sqrt(qd) with a, b rational, in Q (qd = 1) or in one
+     * real quadratic field Q(sqrt qd) (qd > 1 squarefree): den is a common
+     * denominator of every a and b; otherwise den = qd = 0. */
+    fmpz_t den, qd;
+    char **conj[6];              /* qd > 1: the conjugate entries a - b sqrt(qd) as texts, in the
+                                    order of the lists of chk_exactness_init (NULL when not given) */
+} exactness;
+
+/* Which condition a decision is about: its section, its shape (k, g, see
+ * chk_ctx_shape) and its identity within the section. */
+typedef struct {
+    int section;
+    slong k;
+    ulong g;
+    slong id[3];
+} cond_tag;
+
+/* For a tableau in Q(sqrt d): one round on the conjugate tableau (every
+ * sqrt(d) negated) records, per decision, the condition and an upper bound of
+ * |v'|, its value there; the round on the tableau itself replays the
+ * record in order and uses a bound only while every condition so far was the
+ * same (the sequences could differ where the two rounds' verdicts do, since
+ * later checks depend on earlier verdicts: the rest of that round then goes
+ * without bounds). */
+typedef struct {
+    cond_tag *tag;
+    mag_struct *bound;
+    slong n, alloc;
+    slong pos;                   /* replay: the next decision */
+    int in_step;                 /* replay: every decision so far matched the record */
+} conj_log;
+
+typedef struct {
+    slong s, prec;
+    int has_At, has_bt, has_ct;
+    const vigen_tableau *t;
+    const arb_mat_struct *A, *At;
+    arb_srcptr b, bt, c, ct;
+    const exactness *ex;
+    int strict;                  /* exact holds with a nonzero radius count as undecided */
+    int section;                 /* VIGEN_CHECK_SECT_* of the decisions being made */
+    vigen_check_holds *holds;    /* statistics per section (the report's) */
+    slong n_undecided, n_undecided_exact, n_unconfirmed;
+    slong n_undecided_short;     /* undecided: rounded data too short (ball containing 0, too wide) */
+    int last_within;             /* the last decision: a hold within the precision of the data */
+    int last_short;              /* the last decision: undecided, the data too short */
+    slong n_proved;              /* holds proved by the denominator bound */
+    slong rat_k;                 /* the condition being decided: a sum of products of rat_k */
+    ulong rat_g;                 /* entries, minus a constant with denominator rat_g (0: no bound) */
+    slong cond_id[3];            /* ... and which condition of its section it is */
+    ulong hash;                  /* of the sequence of verdicts */
+    conj_log *conj;              /* quadratic entries: the conjugate's bounds (NULL: none) */
+    int conj_recording;          /* this round runs on the conjugate tableau and fills conj */
+    const mag_struct *conj_bound;/* for the decision being made: an upper bound of |v'|, or NULL */
+} ctx_t;
+
+/* Up to two entries replaced by other values. */
+typedef struct {
+    int n;
+    entry e[2];                  /* canonical */
+    arb_srcptr value[2];
+} override;
+
+enum { C_ROWSUM_A, C_ROWSUM_AT, C_SUM_B, C_SUM_BT, C_BT_EQ_B, C_SYMP };
+
+typedef struct {
+    int type;
+    slong i, j;
+    int status;
+    int too_short;               /* undecided because the rounded data are too short */
+    arb_t r;                     /* left side - right side */
+} cond;
+
+/* The tableau at the midpoints of its balls (exact values), for the typo
+ * diagnosis. */
+typedef struct {
+    arb_mat_t A, At;
+    arb_ptr b, bt, c, ct;
+    ctx_t cx;
+} midpoints;
+
+
+/* One round of every check at one precision: what the checks of checks.def
+ * read and write. */
+typedef struct {
+    vigen_check_report *rep;
+    ctx_t *cx;                   /* the checked tableau at this round's precision */
+    vigen_tableau *t;
+    vigen_tableau *against;      /* FILE2 or NULL */
+    const exactness *ex_against;
+    int P;                       /* orders 1..P */
+    /* the row-sum and symplecticity conditions of this round, in the order
+     * decided, kept for the diagnosis that traces their failures to an entry */
+    cond *conds;
+    slong nconds, alloc_conds;
+    int have_mid;
+    midpoints mid;               /* the tableau at its midpoints (when have_mid) */
+} chk_round;
+
+/* A check: one row of checks.def. */
+typedef int (*chk_check_fn)(chk_round *r, vigen_error *err);
+
+#define X(id, name, fn, description) int fn(chk_round *r, vigen_error *err);
+#include "check/checks.def"
+#undef X
+
+/* report.c: problems filed into the report, its notes torn down */
+vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind);
+void chk_problems_clear(vigen_check_report *rep);
+void chk_notes_clear(vigen_check_report *rep);
+
+/* exactness.c: which entries are exact, and in which field (Q, Q(sqrt d)) */
+void chk_exactness_init(exactness *x, const vigen_tableau *t);
+void chk_exactness_clear(exactness *x);
+int chk_has_texts(const vigen_tableau *t);
+
+/* decide.c: the context of a round and the decision on one condition.
+ * chk_ctx_shape states the shape of the next condition (a sum of products of
+ * at most k entries minus a constant with denominator dividing g; g = 0: no
+ * proof by denominators) and its identity (a, b, c) within its section;
+ * chk_decide gives its verdict on r with scale an upper bound of the size of
+ * its terms, chk_decide2 with the scale |a| + |b| of a comparison a = b. */
+void chk_conj_log_init(conj_log *log);
+void chk_conj_log_clear(conj_log *log);
+void chk_conj_log_start(conj_log *log, int recording);
+void chk_ctx_init(ctx_t *cx, const vigen_tableau *t, const exactness *ex, vigen_check_holds *holds);
+void chk_ctx_shape(ctx_t *cx, slong k, ulong g, slong a, slong b, slong c);
+void chk_mid_mag(mag_t m, const arb_t x);
+int chk_decide(ctx_t *cx, const arb_t r, int exact, const mag_t scale);
+int chk_decide2(ctx_t *cx, const arb_t r, int exact, const arb_t a, const arb_t b);
+int chk_tri_of(slong fail, slong undecided);
+
+/* conditions.c: entries and the row-sum and symplecticity conditions */
+int chk_entry_eq(entry x, entry y);
+const char *chk_entry_text(const ctx_t *cx, entry e);
+override chk_ov1(entry e, arb_srcptr v);
+arb_srcptr chk_get(const ctx_t *cx, int mat, slong i, slong j, const override *ov);
+int chk_cond_is_rowsum(const cond *c);
+void chk_add_cond(cond *conds, slong *n, int type, slong i, slong j);
+void chk_cond_parts(arb_t value, arb_t expected, const ctx_t *cx, const cond *c, const override *ov);
+void chk_cond_eval(arb_t r, const ctx_t *cx, const cond *c, const override *ov);
+slong chk_cond_entries(entry *out, const ctx_t *cx, const cond *c);
+int chk_cond_involves(const ctx_t *cx, const cond *c, entry e);
+int chk_cond_exact(const ctx_t *cx, const cond *c);
+int chk_cond_decide(ctx_t *cx, const cond *c);
+const char *chk_cond_kind_words(int type);
+arb_srcptr chk_entry_value(const ctx_t *cx, entry e);
+char *chk_entry_name(entry e);
+
+/* diagnose.c: the enclosure of a condition over the balls of its entries */
+void chk_midpoints_init(midpoints *m, const ctx_t *cx);
+void chk_midpoints_clear(midpoints *m);
+void chk_cond_enclose(arb_t out, const ctx_t *cx, const ctx_t *mx, const cond *c, const entry *e, const arb_t fix);
+
+/* notes.c: the precision the literals ask for, notes on short decimals */
+void chk_collect_notes(vigen_check_report *rep, const vigen_tableau *t);
+slong chk_adequate_prec(const vigen_tableau *t);
+
+/* checks.c: one round of every check of checks.def */
+int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,
+                  const exactness *ex_against, int P, vigen_error *err);
+
+#endif

@@ -1,0 +1,57 @@
+/* checks.c — one round of `vigen check`: every check of checks.def, in the
+ * table's order, at the precision of the context.  The refinement loop
+ * (refine.c) runs rounds until the verdicts settle.
+ */
+#include <string.h>
+#include "check/check_internal.h"
+
+typedef struct {
+    const char *name;
+    chk_check_fn run;
+    const char *description;
+} chk_check_row;
+
+static const chk_check_row checks[] = {
+#define X(id, name, fn, description) {name, fn, description},
+#include "check/checks.def"
+#undef X
+};
+
+static void report_reset_round(vigen_check_report *rep)
+{
+    chk_problems_clear(rep);
+    rep->against_checked = 0;
+    rep->against_differences = 0;
+    rep->against_undecided = 0;
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {
+        rep->holds[k].exact = rep->holds[k].data = rep->holds[k].too_short = 0;
+        mag_zero(rep->holds[k].radius);
+    }
+}
+
+static void round_clear(chk_round *r)
+{
+    for (slong k = 0; k < r->nconds; k++) arb_clear(r->conds[k].r);
+    flint_free(r->conds);
+    if (r->have_mid) chk_midpoints_clear(&r->mid);
+}
+
+/* One round of every check at the precision of t (and against). */
+int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,
+                  const exactness *ex_against, int P, vigen_error *err)
+{
+    report_reset_round(rep);
+    if (cx->conj) chk_conj_log_start(cx->conj, cx->conj_recording);
+    chk_round r;
+    memset(&r, 0, sizeof(r));
+    r.rep = rep;
+    r.cx = cx;
+    r.t = t;
+    r.against = against;
+    r.ex_against = ex_against;
+    r.P = P;
+    int rc = VIGEN_OK;
+    for (size_t k = 0; k < sizeof(checks) / sizeof(checks[0]) && rc == VIGEN_OK; k++) rc = checks[k].run(&r, err);
+    round_clear(&r);
+    return rc;
+}

@@ -1,0 +1,187 @@
+/* notes.c — what the entries' literals ask: the starting precision that sees
+ * every digit of them, and the notes on short decimals among long ones that
+ * look like exact values typed as decimals.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "core/decimal.h"
+#include "core/expr.h"
+#include "check/check_internal.h"
+
+/* Decimal digits needed to see every literal of an exact expression: the
+ * digits of its longest number (all digits of the mantissa, leading zeros
+ * included, plus |exponent|: "1e-45" needs 46), plus, summed over the powers
+ * B^k with a whole-number literal exponent k, |k| log10 B (at least |k| 0.3;
+ * B the number before '^'; a parenthesised base counts |k| digits when |k| >= 10,
+ * nothing for small powers such as x^2). */
+static double literal_digits(const char *s)
+{
+    double numbers = 0, powers = 0;
+    double base = -1;            /* the number just before the current position, or -1 */
+    size_t i = 0, n = strlen(s);
+    while (i < n) {
+        char ch = s[i];
+        if ((ch >= '0' && ch <= '9') || (ch == '.' && s[i + 1] >= '0' && s[i + 1] <= '9')) {
+            size_t j = i;
+            double nd = 0;
+            while ((s[j] >= '0' && s[j] <= '9') || s[j] == '.') nd += s[j++] != '.';
+            double ex = 0;
+            if ((s[j] == 'e' || s[j] == 'E') &&
+                ((s[j + 1] >= '0' && s[j + 1] <= '9') ||
+                 ((s[j + 1] == '+' || s[j + 1] == '-') && s[j + 2] >= '0' && s[j + 2] <= '9'))) {
+                j++;
+                if (s[j] == '+' || s[j] == '-') j++;
+                while (s[j] >= '0' && s[j] <= '9') {
+                    if (ex < 1e9) ex = 10 * ex + (s[j] - '0');
+                    j++;
+                }
+            }
+            if (nd + ex > numbers) numbers = nd + ex;
+            char *buf = malloc(j - i + 1);
+            memcpy(buf, s + i, j - i);
+            buf[j - i] = '\0';
+            base = fabs(strtod(buf, NULL));
+            free(buf);
+            i = j;
+            continue;
+        }
+        if (ch == '^') {
+            double b = base;
+            size_t j = i + 1;
+            int paren = 0;
+            while (s[j] == ' ' || s[j] == '(' || s[j] == '+' || s[j] == '-') paren += s[j++] == '(';
+            if (s[j] >= '0' && s[j] <= '9') {
+                size_t k0 = j;
+                double k = 0;
+                while (s[j] >= '0' && s[j] <= '9') {
+                    if (k < 1e9) k = 10 * k + (s[j] - '0');
+                    j++;
+                }
+                while (s[j] == ' ') j++;
+                /* a whole number, not the start of 1/3, 2.5, 1e3 or 2^3 */
+                int whole = j > k0 && s[j] != '.' && s[j] != '/' && s[j] != 'e' && s[j] != 'E' && s[j] != '^' &&
+                            !(paren && s[j] != ')');
+                if (whole) {
+                    if (b < 0) powers += k >= 10 ? k : 0;
+                    else if (b != 0 && b != 1) powers += k * FLINT_MAX(fabs(log10(b)), 0.30103);
+                }
+            }
+            base = -1;
+            i++;
+            continue;
+        }
+        if (ch != ' ' && ch != '\t') base = -1;
+        i++;
+    }
+    return numbers + powers;
+}
+
+/* Digits needed by the entries: the longest rounded decimal, and the literals
+ * of every exact expression. */
+static double entries_digits(const vigen_tableau *t)
+{
+    slong s = t->s;
+    double d = 0;
+    char **lists[6] = {t->c_text, t->b_text, t->ct_text, t->bt_text, t->A_text, t->At_text};
+    slong lens[6] = {s, s, s, s, s * s, s * s};
+    for (int l = 0; l < 6; l++) {
+        if (lists[l] == NULL) continue;
+        for (slong k = 0; k < lens[l]; k++) {
+            const char *x = lists[l][k];
+            if (x == NULL) continue;
+            double n = vigen_decimal_is_rounded(x) ? (double)vigen_decimal_significant_digits(x) : literal_digits(x);
+            if (!vigen_decimal_is_rounded(x)) {
+                /* an exact part far smaller than the rest (1/2 + exp(-2000)) must
+                 * be visible at the starting precision, literal or not */
+                vigen_expr *e = NULL;
+                vigen_error err;
+                vigen_error_init(&err);
+                if (vigen_expr_parse(&e, x, 0, &err) == VIGEN_OK) {
+                    double span = vigen_expr_magnitude_span_bits(e) * 0.30102999566398120;
+                    if (span > n) n = span;
+                }
+                vigen_expr_free(e);
+                vigen_error_clear(&err);
+            }
+            if (n > d) d = n;
+        }
+    }
+    return d;
+}
+
+/* Short decimals that look exact: a rounded decimal with at most
+ * CHK_NOTE_SHORT_DIGITS significant digits in a file whose longest
+ * decimal has at least CHK_NOTE_LONG_DIGITS.  Three digits is where
+ * the rule for rounded data stops deciding on an entry alone (5 10^-3 of
+ * itself at most, above 2^-10); ten digits says the file meant to be precise,
+ * so a "0.5" among such entries is most likely the exact 1/2 typed as a
+ * decimal.  Zeros written with an exponent ("0e-50", a certified tiny value
+ * of a generated file) are meant as balls and not named. */
+void chk_collect_notes(vigen_check_report *rep, const vigen_tableau *t)
+{
+    chk_notes_clear(rep);
+    if (!chk_has_texts(t)) return;
+    slong s = t->s;
+    int has_At = t->has_At, has_bt = t->has_At && t->has_bt, has_ct = t->has_At && t->has_ct;
+    /* in the order of the file */
+    char **lists[6] = {t->c_text, t->A_text, t->b_text, has_At ? t->At_text : NULL, has_ct ? t->ct_text : NULL,
+                       has_bt ? t->bt_text : NULL};
+    const char *names[6] = {"c", "A", "b", "At", "ct", "bt"};
+    slong lens[6] = {s, s * s, s, s * s, s, s};
+    int matrix[6] = {0, 1, 0, 1, 0, 0};
+    slong longest = 0;
+    for (int l = 0; l < 6; l++)
+        for (slong k = 0; lists[l] && k < lens[l]; k++)
+            if (lists[l][k] && vigen_decimal_is_rounded(lists[l][k])) {
+                slong d = vigen_decimal_significant_digits(lists[l][k]);
+                if (d > longest) longest = d;
+            }
+    if (longest < CHK_NOTE_LONG_DIGITS) return;
+    slong alloc = 0;
+    for (int l = 0; l < 6; l++)
+        for (slong k = 0; lists[l] && k < lens[l]; k++) {
+            const char *x = lists[l][k];
+            if (x == NULL || !vigen_decimal_is_rounded(x)) continue;
+            slong d = vigen_decimal_significant_digits(x);
+            if (d > CHK_NOTE_SHORT_DIGITS) continue;
+            char *fraction = vigen_decimal_exact_fraction(x), *radius = vigen_decimal_half_unit(x);
+            if (fraction == NULL || radius == NULL ||
+                (strcmp(fraction, "0") == 0 && (strchr(x, 'e') != NULL || strchr(x, 'E') != NULL))) {
+                free(fraction);
+                free(radius);
+                continue;
+            }
+            if (rep->nnotes == alloc) {
+                alloc = alloc ? 2 * alloc : 8;
+                rep->notes = realloc(rep->notes, sizeof(vigen_check_note) * (size_t)alloc);
+            }
+            vigen_check_note *n = rep->notes + rep->nnotes++;
+            n->entry = matrix[l] ? vigen_strdup_printf("%s[%ld][%ld]", names[l], (long)(k / s + 1), (long)(k % s + 1))
+                                 : vigen_strdup_printf("%s[%ld]", names[l], (long)(k + 1));
+            /* the text without surrounding blanks */
+            const char *a = x;
+            while (*a == ' ' || *a == '\t') a++;
+            size_t len = strlen(a);
+            while (len > 0 && (a[len - 1] == ' ' || a[len - 1] == '\t')) len--;
+            n->text = malloc(len + 1);
+            memcpy(n->text, a, len);
+            n->text[len] = '\0';
+            n->digits = d;
+            n->radius = radius;
+            n->fraction = fraction;
+            n->message = vigen_strdup_printf("%s = \"%s\" is read as %s +/- %s (%ld significant digit%s); if it is "
+                                             "exact, write \"%s\"", n->entry, n->text, n->text, radius, (long)d,
+                                             d == 1 ? "" : "s", fraction);
+        }
+}
+
+slong chk_adequate_prec(const vigen_tableau *t)
+{
+    double d = entries_digits(t);
+    if (d > 1e7) d = 1e7;
+    slong p = (slong)ceil(d * 3.3219280948873623) + 64;
+    if (!chk_has_texts(t) && t->prec > p) p = t->prec;
+    return p < 128 ? 128 : p;
+}
+

@@ -1,0 +1,195 @@
+/* orders.c — the check of order conditions: every bicoloured tree up to order
+ * P (general H, separable H, each part alone), walked over the forests of
+ * trees.h with memoised vectors.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "check/check_internal.h"
+
+static void orders_reset(vigen_check_orders *o)
+{
+    free(o->fail_tree);
+    free(o->undecided_tree);
+    o->fail_tree = o->undecided_tree = NULL;
+    o->fail_order = o->undecided_order = 0;
+    o->evaluated_to = 0;
+    memset(&o->level, 0, sizeof(o->level));
+    memset(o->count, 0, sizeof(o->count));
+    memset(o->hold, 0, sizeof(o->hold));
+    memset(o->fail, 0, sizeof(o->fail));
+    memset(o->undecided, 0, sizeof(o->undecided));
+    memset(o->hold_data, 0, sizeof(o->hold_data));
+    memset(o->undecided_short, 0, sizeof(o->undecided_short));
+}
+
+/* data: for a hold, it holds within the precision of the data; for an
+ * undecided condition, the data are too short to decide it. */
+static void orders_record(vigen_check_orders *o, int n, int status, int data, const vigen_treeset *ts, int colour,
+                          const slong *ids, int k, const arb_t value, const arb_t expected)
+{
+    o->count[n]++;
+    if (status == HOLDS) {
+        o->hold[n]++;
+        o->hold_data[n] += data != 0;
+        return;
+    }
+    vigen_strbuf sb;
+    if (status == FAILS) {
+        o->fail[n]++;
+        if (o->fail_order) return;
+        o->fail_order = n;
+        vigen_strbuf_init(&sb);
+        vigen_forest_tree_append(&sb, ts, colour, ids, k);
+        o->fail_tree = sb.data;
+        arb_set(o->fail_value, value);
+        arb_set(o->fail_expected, expected);
+    } else {
+        o->undecided[n]++;
+        o->undecided_short[n] += data != 0;
+        if (o->undecided_order) return;
+        o->undecided_order = n;
+        vigen_strbuf_init(&sb);
+        vigen_forest_tree_append(&sb, ts, colour, ids, k);
+        o->undecided_tree = sb.data;
+        arb_set(o->undecided_value, value);
+        arb_set(o->undecided_expected, expected);
+    }
+}
+
+static void orders_finish(vigen_check_orders *o, int P)
+{
+    int bad = 0;
+    if (o->fail_order) bad = o->fail_order;
+    if (o->undecided_order && (!bad || o->undecided_order < bad)) bad = o->undecided_order;
+    if (!bad) {
+        o->level.value = P;
+        o->level.capped = 1;
+        o->level.undecided = 0;
+    } else {
+        o->level.value = bad - 1;
+        o->level.capped = 0;
+        o->level.undecided = o->fail_order != bad;
+    }
+    /* the level rests on every condition up to it */
+    o->level.within_data = 0;
+    for (int n = 1; n <= o->level.value && n <= VIGEN_TREE_MAX_ORDER; n++) o->level.within_data |= o->hold_data[n] > 0;
+    o->level.too_short = o->level.undecided && o->undecided[bad] > 0 && o->undecided_short[bad] == o->undecided[bad];
+}
+
+/* Every order condition of order 1..P.  Phi(F) of a forest F is the
+ * componentwise product over its trees u of w(u) = M_u Phi(u) (M = A for a
+ * black u, At for a white one); the condition of (colour, F) is
+ * bhat . Phi(F) = 1/gamma.  w is stored for trees of order <= P - 2 (the
+ * children of every tree of order <= P); for a tree u of order P - 1, which
+ * occurs only as the single child of a tree of order P, the condition is
+ * y . Phi(u) with the precomputed row vector y = bhat^T M_u. */
+int chk_orders(chk_round *rd, vigen_error *err)
+{
+    vigen_check_report *rep = rd->rep;
+    ctx_t *cx = rd->cx;
+    int P = rd->P;
+    vigen_treeset ts;
+    int rc = vigen_treeset_init(&ts, P - 1, err);
+    if (rc != VIGEN_OK) return rc;
+    slong s = cx->s, prec = cx->prec;
+    const arb_mat_struct *M[2] = {cx->A, cx->At};
+    arb_srcptr bh[2] = {cx->b, cx->bt};
+    slong nstore = P >= 3 ? ts.start[P - 1] : 0;
+    arb_ptr W = _arb_vec_init((nstore > 0 ? nstore : 1) * s);
+    arb_ptr prod = _arb_vec_init(P * s);
+    arb_ptr ones = _arb_vec_init(s);
+    arb_ptr y = _arb_vec_init(4 * s);
+    arb_ptr phi = _arb_vec_init(s);
+    arb_t v, r, inv;
+    arb_init(v);
+    arb_init(r);
+    arb_init(inv);
+    for (slong i = 0; i < s; i++) arb_one(ones + i);
+    for (int c = 0; c < 2; c++)
+        for (int col = 0; col < 2; col++)
+            for (slong j = 0; j < s; j++) {
+                arb_ptr yj = y + (2 * c + col) * s + j;
+                arb_zero(yj);
+                for (slong i = 0; i < s; i++) arb_addmul(yj, bh[c] + i, arb_mat_entry(M[col], i, j), prec);
+            }
+
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_reset(&rep->orders[f]);
+    cx->section = VIGEN_CHECK_SECT_ORDER;
+
+    for (int n = 1; n <= P; n++) {
+        vigen_forest_iter it;
+        vigen_forest_iter_init(&it, &ts, n - 1);
+        while (vigen_forest_iter_next(&it)) {
+            int k = it.k;
+            const slong *ids = it.ids;
+            arb_t val[2];
+            arb_init(val[0]);
+            arb_init(val[1]);
+            if (k == 1 && ts.trees[ids[0]].order > P - 2) {
+                slong u = ids[0];
+                const vigen_tree *tu = ts.trees + u;
+                const slong *ch = vigen_treeset_children(&ts, u);
+                _arb_vec_set(phi, ones, s);
+                for (int q = 0; q < tu->nchildren; q++)
+                    for (slong i = 0; i < s; i++) arb_mul(phi + i, phi + i, W + ch[q] * s + i, prec);
+                for (int c = 0; c < 2; c++)
+                    arb_dot(val[c], NULL, 0, y + (2 * c + tu->colour) * s, 1, phi, 1, s, prec);
+            } else {
+                for (int d = it.changed; d < k; d++) {
+                    arb_srcptr wd = W + ids[d] * s;
+                    if (d == 0) _arb_vec_set(prod, wd, s);
+                    else
+                        for (slong i = 0; i < s; i++) arb_mul(prod + d * s + i, prod + (d - 1) * s + i, wd + i, prec);
+                }
+                arb_srcptr ph = k ? prod + (k - 1) * s : ones;
+                for (int c = 0; c < 2; c++) arb_dot(val[c], NULL, 0, bh[c], 1, ph, 1, s, prec);
+                if (n <= P - 2)
+                    for (int c = 0; c < 2; c++) {
+                        slong id = ts.start[n] + 2 * it.index + c;
+                        for (slong i = 0; i < s; i++)
+                            arb_dot(W + id * s + i, NULL, 0, arb_mat_entry(M[c], i, 0), 1, ph, 1, s, prec);
+                    }
+            }
+            ulong gamma = vigen_forest_tree_gamma(&ts, ids, k);
+            arb_one(inv);
+            arb_div_ui(inv, inv, gamma, prec);
+            for (int c = 0; c < 2; c++) {
+                arb_sub(r, val[c], inv, prec);
+                int flags = vigen_forest_tree_flags(&ts, c, ids, k);
+                /* a monochromatic tree involves one part only */
+                int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
+                chk_ctx_shape(cx, n, gamma, n, it.index, c);   /* b Phi has n factors; 1/gamma */
+                int st = chk_decide2(cx, r, exact, val[c], inv);
+                int data = st == HOLDS ? cx->last_within : cx->last_short;
+                orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, data, &ts, c, ids, k, val[c], inv);
+                if (flags & VIGEN_TREE_SEPARABLE)
+                    orders_record(&rep->orders[VIGEN_CHECK_SEPARABLE], n, st, data, &ts, c, ids, k, val[c], inv);
+                if (flags & VIGEN_TREE_MONO)
+                    orders_record(&rep->orders[c == VIGEN_TREE_BLACK ? VIGEN_CHECK_A_ALONE : VIGEN_CHECK_AT_ALONE],
+                                  n, st, data, &ts, c, ids, k, val[c], inv);
+            }
+            arb_clear(val[0]);
+            arb_clear(val[1]);
+        }
+        vigen_forest_iter_clear(&it);
+        int all_failed = 1;
+        for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+            rep->orders[f].evaluated_to = n;
+            all_failed &= rep->orders[f].fail_order != 0;
+        }
+        if (all_failed) break;   /* nothing above can change any order */
+    }
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_finish(&rep->orders[f], P);
+
+    arb_clear(v);
+    arb_clear(r);
+    arb_clear(inv);
+    _arb_vec_clear(W, (nstore > 0 ? nstore : 1) * s);
+    _arb_vec_clear(prod, P * s);
+    _arb_vec_clear(ones, s);
+    _arb_vec_clear(y, 4 * s);
+    _arb_vec_clear(phi, s);
+    vigen_treeset_clear(&ts);
+    return VIGEN_OK;
+}
+

@@ -1,0 +1,94 @@
+/* report.c — the report of `vigen check`: options and report set up and torn
+ * down, and the list of problems the checks file into it.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "check/check_internal.h"
+
+void vigen_check_options_init(vigen_check_options *opt)
+{
+    memset(opt, 0, sizeof(*opt));
+    opt->max_order = CHK_DEFAULT_MAX_ORDER;
+    opt->max_prec = CHK_DEFAULT_MAX_PREC;
+    opt->spec_digits = 34;
+}
+
+vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind)
+{
+    if (rep->nproblems == rep->alloc_problems) {
+        rep->alloc_problems = rep->alloc_problems ? 2 * rep->alloc_problems : 16;
+        rep->problems = flint_realloc(rep->problems, sizeof(vigen_check_problem) * (size_t)rep->alloc_problems);
+    }
+    vigen_check_problem *p = rep->problems + rep->nproblems++;
+    memset(p, 0, sizeof(*p));
+    p->kind = kind;
+    arb_init(p->value);
+    arb_init(p->expected);
+    return p;
+}
+
+void chk_problems_clear(vigen_check_report *rep)
+{
+    for (slong k = 0; k < rep->nproblems; k++) {
+        vigen_check_problem *p = rep->problems + k;
+        arb_clear(p->value);
+        arb_clear(p->expected);
+        free(p->value_json);
+        free(p->expected_json);
+        free(p->message);
+    }
+    flint_free(rep->problems);
+    rep->problems = NULL;
+    rep->nproblems = rep->alloc_problems = 0;
+}
+
+void vigen_check_report_init(vigen_check_report *rep)
+{
+    memset(rep, 0, sizeof(*rep));
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+        arb_init(rep->orders[f].fail_value);
+        arb_init(rep->orders[f].fail_expected);
+        arb_init(rep->orders[f].undecided_value);
+        arb_init(rep->orders[f].undecided_expected);
+    }
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_init(rep->holds[k].radius);
+    rep->claim_order = -1;
+    rep->claim_symplectic = -1;
+}
+
+void chk_notes_clear(vigen_check_report *rep)
+{
+    for (slong k = 0; k < rep->nnotes; k++) {
+        vigen_check_note *n = rep->notes + k;
+        free(n->entry);
+        free(n->text);
+        free(n->radius);
+        free(n->fraction);
+        free(n->message);
+    }
+    free(rep->notes);
+    rep->notes = NULL;
+    rep->nnotes = 0;
+}
+
+void vigen_check_report_clear(vigen_check_report *rep)
+{
+    chk_problems_clear(rep);
+    chk_notes_clear(rep);
+    for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
+        free(rep->orders[f].fail_tree);
+        free(rep->orders[f].undecided_tree);
+        arb_clear(rep->orders[f].fail_value);
+        arb_clear(rep->orders[f].fail_expected);
+        arb_clear(rep->orders[f].undecided_value);
+        arb_clear(rep->orders[f].undecided_expected);
+    }
+    for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_clear(rep->holds[k].radius);
+    free(rep->path);
+    free(rep->name);
+    flint_free(rep->rational_denominator);
+    flint_free(rep->quadratic_d);
+    flint_free(rep->quadratic_denominator);
+    memset(rep, 0, sizeof(*rep));
+}
+

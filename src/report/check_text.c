@@ -1,0 +1,334 @@
+/* check_text.c — the text report of `vigen check` (vigen_check_print_text).
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "vigen/check.h"
+#include "check/balls.h"
+
+static const char *family_title[VIGEN_CHECK_FAMILIES] = {
+    "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",
+    "(ct, At, bt) alone as an RK method"};
+
+static const char *const within_words = "within the precision of the data";
+
+static void print_level_words(FILE *out, const vigen_check_level *L)
+{
+    if (L->capped) fprintf(out, "%d or more", L->value);
+    else if (L->undecided) fprintf(out, "at least %d", L->value);
+    else fprintf(out, "%d", L->value);
+    if (L->within_data) fprintf(out, " %s", within_words);
+    if (!L->capped && L->undecided)
+        fprintf(out, " (order %d undecided%s)", L->value + 1,
+                L->too_short ? ": the data are too short to decide" : " at this precision");
+}
+
+static void print_ball(FILE *out, const arb_t x, slong digits)
+{
+    char *s = vigen_ball_str(x, digits);
+    fputs(s, out);
+    free(s);
+}
+
+static void print_bad_tree(FILE *out, const vigen_check_orders *o, const char *indent)
+{
+    const vigen_check_level *L = &o->level;
+    if (L->capped) return;
+    int undecided = L->undecided;
+    const char *tree = undecided ? o->undecided_tree : o->fail_tree;
+    if (tree == NULL) return;
+    fprintf(out, "%s%s tree: %s (order %d): sum bhat_i Phi_i = ", indent, undecided ? "first undecided" : "first failing",
+            tree, L->value + 1);
+    slong digits = vigen_ball_digits_to_separate(undecided ? o->undecided_value : o->fail_value,
+                                      undecided ? o->undecided_expected : o->fail_expected, 128);
+    print_ball(out, undecided ? o->undecided_value : o->fail_value, digits);
+    fputs(", 1/gamma = ", out);
+    print_ball(out, undecided ? o->undecided_expected : o->fail_expected, digits);
+    arb_t d;
+    arb_init(d);
+    arb_srcptr dv = undecided ? o->undecided_value : o->fail_value, de = undecided ? o->undecided_expected : o->fail_expected;
+    arb_sub(d, dv, de, FLINT_MAX(arb_bits(dv), arb_bits(de)) + 64);
+    char *ds = vigen_ball_str(d, 6);
+    fprintf(out, " (defect %s%s)\n", ds[0] == '[' ? "in " : "", ds);
+    free(ds);
+    arb_clear(d);
+}
+
+static const char *tri_word(int v, const char *yes, const char *no)
+{
+    return v == VIGEN_CHECK_YES ? yes : v == VIGEN_CHECK_NO ? no : "undecided at this precision";
+}
+
+/* tri_word, saying why when undecided for short data */
+static const char *tri_word_data(int v, const char *yes, const char *no, int too_short)
+{
+    if (v == VIGEN_CHECK_UNDECIDED && too_short) return "undecided (the data are too short to decide)";
+    return tri_word(v, yes, no);
+}
+
+/* " within the precision of the data (radius <= X)" when some holding
+ * condition of the section was decided on rounded entries. */
+static void print_within(FILE *out, const vigen_check_holds *h)
+{
+    if (h->data == 0) return;
+    char *r = vigen_mag_str(h->radius);
+    fprintf(out, " %s (radius <= %s)", within_words, r);
+    free(r);
+}
+
+/* B(4), B(4)* when it holds within the precision of the data (returns 1 then) */
+static int print_assumption(FILE *out, const char *name, const vigen_check_level *L)
+{
+    if (L->capped) fprintf(out, "%s(>=%d)", name, L->value);
+    else if (L->undecided) fprintf(out, "%s(%d, %d undecided%s)", name, L->value, L->value + 1,
+                                   L->too_short ? ": data too short" : "");
+    else fprintf(out, "%s(%d)", name, L->value);
+    if (L->within_data) fputc('*', out);
+    return L->within_data;
+}
+
+/* A long integer for the text report: its first and last digits and its
+ * length ("30000...0000 (870 digits)"); short ones whole.  JSON has them whole. */
+static char *short_integer(const char *digits)
+{
+    size_t n = strlen(digits);
+    if (n <= 40) return vigen_strdup(digits);
+    return vigen_strdup_printf("%.12s...%s (%lu digits)", digits, digits + n - 8, (unsigned long)n);
+}
+
+void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
+{
+    fputs(rep->path ? rep->path : "tableau", out);
+    if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
+    fprintf(out, ": %ld stage%s, %s\n", (long)rep->s, rep->s == 1 ? "" : "s",
+            rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
+    if (rep->rational_denominator) {
+        char *D = short_integer(rep->rational_denominator);
+        fprintf(out, "  entries: exact rationals, common denominator D = %s; ", D);
+        free(D);
+    } else if (rep->quadratic_d) {
+        char *D = short_integer(rep->quadratic_denominator);
+        fprintf(out, "  entries: exact, in Q(sqrt(%s)): a + b sqrt(%s), common denominator D = %s; ", rep->quadratic_d,
+                rep->quadratic_d, D);
+        free(D);
+    } else
+        fprintf(out, "  entries: %s; ",
+                rep->rounded_entries && rep->exact_entries ? "rounded decimals (half-ulp balls) and exact expressions"
+                : rep->rounded_entries ? "rounded decimals (half-ulp balls) or balls"
+                                       : "exact expressions");
+    if (rep->rounds > 1)
+        fprintf(out, "checked at %ld bits (%ld evaluations, from %ld bits)\n", (long)rep->prec, (long)rep->rounds,
+                (long)rep->prec_first);
+    else fprintf(out, "checked at %ld bits (1 evaluation)\n", (long)rep->prec);
+    if (rep->rational_denominator)
+        fputs("  a condition fails when its ball excludes 0; it holds, proved, when its ball lies inside\n"
+              "  (-1/(D^k g), 1/(D^k g)), k entries per term and g the denominator of its constant: the value is a\n"
+              "  multiple of 1/(D^k g), so 0; otherwise it is undecided\n", out);
+    else if (rep->quadratic_d)
+        fprintf(out, "  a condition fails when its ball excludes 0; it holds, proved, when |v| |v'| (D^k g)^2 < 1, v' the same\n"
+                     "  condition on the conjugate tableau (sqrt(%s) -> -sqrt(%s)), k entries per term and g the denominator\n"
+                     "  of its constant: v v' (D^k g)^2 is an integer m^2 - %s n^2, so m = n = 0 and v = 0; otherwise it\n"
+                     "  holds only with a radius below 2^-(prec/2) of its terms and the same verdicts at two precisions,\n"
+                     "  else it is undecided\n",
+                rep->quadratic_d, rep->quadratic_d, rep->quadratic_d);
+    else if (!rep->exact_entries)
+        fputs("  a condition fails when its ball excludes 0 and holds, within the precision of the data, when it\n"
+              "  contains 0 with a radius at most 2^-10 of its terms; a wider ball is undecided (the data are too\n"
+              "  short to decide)\n", out);
+    else if (!rep->rounded_entries)
+        fputs("  a condition fails when its ball excludes 0; it holds when its ball contains 0 with a radius below\n"
+              "  2^-(prec/2) of its terms, with the same verdicts at two precisions; otherwise it is undecided.\n"
+              "  These holds are numerical confirmations, not proofs (entries outside Q and one Q(sqrt d): only\n"
+              "  rational and real quadratic tableaux are proved); the precision starts above the span of the\n"
+              "  entries' parts, so that a part like exp(-2000) is seen\n", out);
+    else
+        fputs("  a condition fails when its ball excludes 0 and holds when it contains 0: within the precision of\n"
+              "  the data when it involves a rounded entry and its radius is at most 2^-10 of its terms; on exact\n"
+              "  entries only with a radius below 2^-(prec/2) of its terms and the same verdicts at two precisions;\n"
+              "  otherwise it is undecided\n", out);
+    for (slong k = 0; k < rep->nnotes && k < 10; k++) fprintf(out, "  note: %s\n", rep->notes[k].message);
+    if (rep->nnotes > 10)
+        fprintf(out, "  note: ... and %ld more short decimals (all of them with --json)\n", (long)(rep->nnotes - 10));
+
+    fprintf(out, "row sums      %s", tri_word_data(rep->consistent, "hold", "FAIL",
+                                                  rep->holds[VIGEN_CHECK_SECT_ROWSUM].too_short > 0));
+    if (rep->consistent == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_ROWSUM]);
+    fprintf(out, " (%ld conditions: c_i = sum_j a_ij%s, sum b = 1", (long)rep->row_total,
+            rep->has_ct ? ", ct_i = sum_j at_ij" : "");
+    if (rep->row_fail) fprintf(out, "; %ld fail", (long)rep->row_fail);
+    if (rep->row_undecided) fprintf(out, "; %ld undecided", (long)rep->row_undecided);
+    fputs(")\n", out);
+    fprintf(out, "symplectic    %s", tri_word_data(rep->symplectic, "yes", "no",
+                                                  rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0));
+    if (rep->symplectic == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC]);
+    fprintf(out, " (%ld condition%s: %sb_i %s_ij + b_j a_ji - b_i b_j = 0", (long)rep->sym_total,
+            rep->sym_total == 1 ? "" : "s", rep->has_bt ? "bt = b, " : "", rep->has_At ? "at" : "a");
+    if (rep->sym_fail) fprintf(out, "; %ld fail", (long)rep->sym_fail);
+    if (rep->sym_undecided) fprintf(out, "; %ld undecided", (long)rep->sym_undecided);
+    fputs(")\n", out);
+    if (rep->has_bt && rep->symplectic != VIGEN_CHECK_YES)
+        fprintf(out, "              for separable H (b_i at_ij + bt_j a_ji - b_i bt_j = 0 suffices): %s\n",
+                tri_word_data(rep->symplectic_separable, "yes", "no",
+                              rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0));
+
+    const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
+    fputs("order         ", out);
+    print_level_words(out, &g->level);
+    fprintf(out, "   (orders 1..%d checked)\n", rep->max_order);
+    print_bad_tree(out, g, "              ");
+    if (rep->holds[VIGEN_CHECK_SECT_ORDER].data > 0) {
+        char *r = vigen_mag_str(rep->holds[VIGEN_CHECK_SECT_ORDER].radius);
+        fprintf(out, "              (%ld conditions hold within the precision of the data: radius <= %s)\n",
+                (long)rep->holds[VIGEN_CHECK_SECT_ORDER].data, r);
+        free(r);
+    }
+    if (rep->holds[VIGEN_CHECK_SECT_ORDER].too_short > 0)
+        fprintf(out, "              (%ld conditions undecided: the data are too short to decide, their balls contain 0 "
+                     "but are wider than 2^-%d of their terms)\n",
+                (long)rep->holds[VIGEN_CHECK_SECT_ORDER].too_short, VIGEN_CHECK_DATA_BITS);
+
+    fputs("  order  conditions   hold   fail  undecided |  separable     A alone    At alone\n", out);
+    for (int n = 1; n <= g->evaluated_to; n++) {
+        fprintf(out, "  %5d  %10ld %6ld %6ld %10ld |", n, (long)g->count[n], (long)g->hold[n], (long)g->fail[n],
+                (long)g->undecided[n]);
+        for (int f = 1; f < VIGEN_CHECK_FAMILIES; f++) {
+            char buf[64];
+            snprintf(buf, sizeof(buf), "%ld/%ld", (long)rep->orders[f].hold[n], (long)rep->orders[f].count[n]);
+            fprintf(out, " %11s", buf);
+        }
+        fputc('\n', out);
+    }
+    if (g->evaluated_to + 1 == rep->max_order)
+        fprintf(out, "  (order %d not evaluated: every family already fails)\n", rep->max_order);
+    else if (g->evaluated_to < rep->max_order)
+        fprintf(out, "  (orders %d..%d not evaluated: every family already fails)\n", g->evaluated_to + 1,
+                rep->max_order);
+    fputs("  (x/y: conditions holding / conditions of that family)\n", out);
+
+    for (int f = 1; f < VIGEN_CHECK_FAMILIES; f++) {
+        const vigen_check_orders *o = &rep->orders[f];
+        if (f == VIGEN_CHECK_AT_ALONE && !rep->has_At) {
+            fprintf(out, "%s: same as (c, A, b) (At = A)\n", family_title[f]);
+            continue;
+        }
+        fprintf(out, "%s: ", family_title[f]);
+        print_level_words(out, &o->level);
+        if (f == VIGEN_CHECK_SEPARABLE && o->level.value == g->level.value && o->level.capped == g->level.capped &&
+            o->level.undecided == g->level.undecided && o->level.within_data == g->level.within_data &&
+            o->level.too_short == g->level.too_short) {
+            fputs(" (same)\n", out);
+            continue;
+        }
+        fputc('\n', out);
+        const char *mine = o->level.undecided ? o->undecided_tree : o->fail_tree;
+        const char *general = g->level.undecided ? g->undecided_tree : g->fail_tree;
+        if (!(mine && general && strcmp(mine, general) == 0 && o->level.value == g->level.value))
+            print_bad_tree(out, o, "  ");
+    }
+
+    fputs("simplifying assumptions\n", out);
+    int starred = 0;
+    for (int part = 0; part < (rep->has_At ? 2 : 1); part++) {
+        fprintf(out, "  %-13s ", part ? "(ct, At, bt):" : "(c, A, b):");
+        starred |= print_assumption(out, "B", &rep->B[part]);
+        fputc(' ', out);
+        starred |= print_assumption(out, "C", &rep->C[part]);
+        fputc(' ', out);
+        starred |= print_assumption(out, "D", &rep->D[part]);
+        fputs(", stage order ", out);
+        const vigen_check_level *S = &rep->stage_order[part];
+        if (S->capped) fprintf(out, ">= %d", S->value);
+        else fprintf(out, "%d", S->value);
+        if (S->within_data) fputc('*', out);
+        starred |= S->within_data;
+        if (!S->capped && S->undecided) fputs(S->too_short ? " (undecided above: data too short)" : " (undecided above)", out);
+        fputc('\n', out);
+    }
+    if (!rep->has_At) fputs("  (ct, At, bt):  same (At = A)\n", out);
+    if (starred) {
+        char *r = vigen_mag_str(rep->holds[VIGEN_CHECK_SECT_SIMPLIFYING].radius);
+        fprintf(out, "  (*: holds %s, radius <= %s)\n", within_words, r);
+        free(r);
+    }
+
+    if (rep->claim_order >= 0 || rep->claim_symplectic >= 0) {
+        fputs("claims       ", out);
+        if (rep->claim_order >= 0)
+            fprintf(out, " order = %d: %s%s%s%s;", rep->claim_order,
+                    rep->claim_order_beyond ? "undecided (beyond the orders that can be evaluated)"
+                                            : tri_word_data(rep->claim_order_status, "holds", "FALSE",
+                                                            rep->claim_order_too_short),
+                    rep->claim_order_within_data ? " " : "", rep->claim_order_within_data ? within_words : "",
+                    rep->claim_order_separable ? " (for separable H)" : "");
+        if (rep->claim_symplectic >= 0)
+            fprintf(out, " symplectic = %s: %s%s%s%s;", rep->claim_symplectic ? "true" : "false",
+                    tri_word_data(rep->claim_symplectic_status, "holds", "FALSE",
+                                  rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0),
+                    rep->claim_symplectic_within_data ? " " : "",
+                    rep->claim_symplectic_within_data ? within_words : "",
+                    rep->claim_symplectic_separable ? " (for separable H)" : "");
+        fputc('\n', out);
+    }
+    if (rep->against_checked && rep->against_stages > 0) {
+        fprintf(out, "against       the tableaux cannot be compared: %ld stage%s here, %ld there\n", (long)rep->s,
+                rep->s == 1 ? "" : "s", (long)rep->against_stages);
+    } else if (rep->against_checked) {
+        fprintf(out, "against       %ld entr%s differ%s beyond the certified precision",
+                (long)rep->against_differences, rep->against_differences == 1 ? "y" : "ies",
+                rep->against_differences == 1 ? "s" : "");
+        if (rep->against_undecided) fprintf(out, ", %ld undecided", (long)rep->against_undecided);
+        if (rep->holds[VIGEN_CHECK_SECT_AGAINST].data > 0) {
+            char *r = vigen_mag_str(rep->holds[VIGEN_CHECK_SECT_AGAINST].radius);
+            fprintf(out, " (%ld agree within the precision of the data, radius <= %s)",
+                    (long)rep->holds[VIGEN_CHECK_SECT_AGAINST].data, r);
+            free(r);
+        }
+        fputc('\n', out);
+    }
+
+    if (rep->undecided_left)
+        fprintf(out, "undecided     %ld conditions at %ld bits: %s\n", (long)rep->undecided_left, (long)rep->prec,
+                rep->undecided_reason ? rep->undecided_reason : "");
+    if (rep->nproblems) {
+        fputs("problems\n", out);
+        /* symplecticity pairs: the first 20; everything else: up to 40 lines */
+        slong pairs = 0, pairs_shown = 0, other_shown = 0, other_hidden = 0;
+        for (slong k = 0; k < rep->nproblems; k++) {
+            const vigen_check_problem *p = rep->problems + k;
+            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
+        }
+        for (slong k = 0; k < rep->nproblems; k++) {
+            const vigen_check_problem *p = rep->problems + k;
+            /* a diagnosis is filed once per kind of condition, with one message */
+            if (k > 0 && p->diagnosed && rep->problems[k - 1].diagnosed &&
+                strcmp(p->message, rep->problems[k - 1].message) == 0)
+                continue;
+            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) {
+                if (pairs_shown < 20) {
+                    fprintf(out, "  %s\n", p->message);
+                    if (++pairs_shown == 20 && pairs > 20)
+                        fprintf(out, "  ... and %ld more pairs (all of them with --json)\n", (long)(pairs - 20));
+                }
+                continue;
+            }
+            if (other_shown < 40) {
+                fprintf(out, "  %s\n", p->message);
+                other_shown++;
+            } else other_hidden++;
+        }
+        if (other_hidden) fprintf(out, "  ... and %ld more problems (all of them with --json)\n", (long)other_hidden);
+    } else fputs("problems      none\n", out);
+    fprintf(out, "trees: %s\n", vigen_tree_notation_help());
+    int within = rep->consistent_within_data || rep->claim_order_within_data || rep->claim_symplectic_within_data;
+    /* exit 1 with nothing certainly false: undecided, not failed */
+    int failed = rep->consistent == VIGEN_CHECK_NO || (rep->claim_order >= 0 && rep->claim_order_status == VIGEN_CHECK_NO) ||
+                 (rep->claim_symplectic >= 0 && rep->claim_symplectic_status == VIGEN_CHECK_NO) ||
+                 rep->against_differences > 0;
+    fprintf(out, "result        %s (exit %d)\n",
+            rep->exit_code != 0 && !failed ? "NOT DECIDED: nothing is certainly false, but not everything could be "
+                                             "decided (see the undecided conditions above)"
+            : rep->exit_code != 0 ? "FAILED: see the problems above"
+            : within ? "consistent; every stated claim holds (some only within the precision of the data)"
+                     : "consistent; every stated claim holds",
+            rep->exit_code);
+}
+
