@@ -15,7 +15,8 @@
  *   - the globals table is strict: reading an unknown name is an error that
  *     lists the spec-file vocabulary;
  *   - the vocabulary: node and basis family constructors (one closure per name,
- *     the node names taken from nodes.h's list) and the ball library (ball.c).
+ *     the names taken from families.h, that is from nodes.def and basis.def)
+ *     and the ball library (ball.c).
  *
  * The sandbox struct is the allocator's user data, so the hook and the
  * allocator reach it through lua_getallocf.
@@ -30,8 +31,9 @@
 #include <lualib.h>
 
 #include "lua/ball.h"
-#include "method/nodes.h"
+#include "lua/float_text.h"
 #include "lua/sandbox.h"
+#include "method/families.h"
 
 #define MIB ((size_t)1 << 20)
 
@@ -49,8 +51,6 @@ struct vigen_sandbox {
     char *display;                  /* file name for messages ("spec.lua") */
 };
 
-/* The basis families of the spec vocabulary (the node families come from nodes.h). */
-const char *const vigen_basis_family_names[] = { "monomials", "trig", "legendre", "chebyshev_t", NULL };
 static const char *const function_names = "sqrt, exp, log, sin, cos, tan, pi, exact";
 
 static char family_mt_key;          /* registry key of the family descriptor metatable */
@@ -76,43 +76,6 @@ void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits)
 lua_State *vigen_sandbox_state(vigen_sandbox *sb) { return sb->L; }
 
 void vigen_sandbox_lift_memory_cap(vigen_sandbox *sb) { sb->memory_limit = (size_t)-1 / 2; }
-
-/* ------------------------------------------------------------------ floats */
-
-size_t vigen_float_format(char *buf, size_t size, double x)
-{
-    char *text = NULL;
-    for (int digits = 1; digits <= 17; digits++) {
-        free(text);
-        text = vigen_strdup_printf("%.*g", digits, x);
-        if (x != x || strtod(text, NULL) == x) break;
-    }
-    size_t n = strlen(text);
-    if (strspn(text, "-0123456789") == n) {     /* Lua shows integral floats with ".0" */
-        char *t = vigen_strdup_printf("%s.0", text);
-        free(text);
-        text = t;
-        n += 2;
-    }
-    if (size > 0) {
-        size_t k = n < size - 1 ? n : size - 1;
-        memcpy(buf, text, k);
-        buf[k] = '\0';
-    }
-    free(text);
-    return n;
-}
-
-/* Pushes the text of a float (in Lua memory, so nothing leaks if a later call raises). */
-const char *vigen_push_float_text(lua_State *L, double x)
-{
-    luaL_Buffer b;
-    size_t n = vigen_float_format(NULL, 0, x);
-    char *p = luaL_buffinitsize(L, &b, n + 1);
-    vigen_float_format(p, n + 1, x);
-    luaL_pushresultsize(&b, n);
-    return lua_tostring(L, -1);
-}
 
 /* ------------------------------------------------------------------ caps */
 

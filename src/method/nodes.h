@@ -1,5 +1,6 @@
 /* nodes.h — certified quadrature-node families on [0, 1].
  *
+ * The families are the rows of nodes.def; their names are in families.h.
  * Every family returns s nodes in increasing order as arb balls, each certified
  * to contain the exact node, mapped from [-1, 1] by x -> (1 + x)/2 where the
  * family is classically defined on [-1, 1].  Nodes that are exactly 0, 1/2 or 1
@@ -20,9 +21,7 @@
 
 #include <arb.h>
 #include "vigen/error.h"
-
-/* Largest s accepted by any family (keeps polynomial degrees sane). */
-#define VIGEN_NODES_MAX_S 256
+#include "method/families.h"
 
 /* Writes s nodes into nodes (an arb vector of length s, already initialised).
  * Errors: VIGEN_E_SPEC for an unknown family name (the message lists the known
@@ -30,11 +29,5 @@
  * s real nodes (chebyshev_quadrature(8)); VIGEN_E_PRECISION if roots cannot be
  * isolated at this precision (the caller retries higher). */
 int vigen_nodes_family(arb_ptr nodes, const char *family, slong s, slong prec, vigen_error *err);
-
-/* 1 if name is a known node family. */
-int vigen_nodes_is_family(const char *name);
-
-/* NULL-terminated list of the family names, for messages and --help. */
-extern const char *const vigen_nodes_family_names[];
 
 #endif
