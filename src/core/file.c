@@ -1,6 +1,6 @@
-/* file.c — writing output files: atomically (a temporary file next to the
- * target, then rename), so that a failed write never leaves a truncated file,
- * and with the target's permissions kept. */
+/* file.c — input files read whole, and output files written atomically (a
+ * temporary file next to the target, then rename), so that a failed write
+ * never leaves a truncated file, with the target's permissions kept. */
 #define _DEFAULT_SOURCE /* mkstemp, realpath, fchmod, lstat */
 #include <errno.h>
 #include <limits.h>
@@ -12,6 +12,42 @@
 #include <unistd.h>
 
 #include "core/file.h"
+
+int vigen_read_file(char **data, size_t *len, const char *path, size_t max_len, vigen_error *err)
+{
+    *data = NULL;
+    *len = 0;
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) return vigen_error_set(err, VIGEN_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    size_t n = 0, cap = 1 << 16;
+    char *buf = malloc(cap);
+    int code = buf ? VIGEN_OK : vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
+    while (code == VIGEN_OK) {
+        if (cap - n < 2) {
+            char *p = realloc(buf, cap * 2);
+            if (p == NULL) { code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path); break; }
+            buf = p;
+            cap *= 2;
+        }
+        size_t got = fread(buf + n, 1, cap - n - 1, f);
+        n += got;
+        if (got == 0) {
+            if (ferror(f)) code = vigen_error_set(err, VIGEN_E_IO, "%s: cannot read: %s", path, strerror(errno));
+            break;
+        }
+        if (n > max_len)
+            code = vigen_error_set(err, VIGEN_E_LIMIT, "%s: the file is larger than %zu bytes", path, max_len);
+    }
+    fclose(f);
+    if (code != VIGEN_OK) {
+        free(buf);
+        return code;
+    }
+    buf[n] = '\0';
+    *data = buf;
+    *len = n;
+    return VIGEN_OK;
+}
 
 /* Writes everything or fails (no partial output left behind). */
 static int write_all(int fd, const char *text, size_t n)

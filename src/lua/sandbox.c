@@ -21,7 +21,6 @@
  * The sandbox struct is the allocator's user data, so the hook and the
  * allocator reach it through lua_getallocf.
  */
-#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -30,6 +29,7 @@
 #include <lauxlib.h>
 #include <lualib.h>
 
+#include "core/file.h"
 #include "lua/ball.h"
 #include "lua/float_text.h"
 #include "lua/sandbox.h"
@@ -296,33 +296,16 @@ int vigen_sandbox_run_string(vigen_sandbox *sb, const char *text, const char *ch
 int vigen_sandbox_run_file(vigen_sandbox *sb, const char *path, vigen_error *err)
 {
     set_display(sb, path);
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) return vigen_error_set(err, VIGEN_E_IO, "%s: cannot open: %s", path, strerror(errno));
-    size_t len = 0, cap = 1 << 16;
-    char *data = malloc(cap);
-    int code = data ? VIGEN_OK : vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
-    while (code == VIGEN_OK) {
-        if (cap - len < 2) {
-            char *p = realloc(data, cap * 2);
-            if (p == NULL) { code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path); break; }
-            data = p;
-            cap *= 2;
-        }
-        size_t got = fread(data + len, 1, cap - len - 1, f);
-        len += got;
-        if (got == 0) {
-            if (ferror(f)) code = vigen_error_set(err, VIGEN_E_IO, "%s: cannot read: %s", path, strerror(errno));
-            break;
-        }
-        if (len > sb->memory_limit) {
-            char *lim = memory_text(sb->memory_limit);
-            code = vigen_error_set(err, VIGEN_E_LIMIT,
-                                   "%s: the file is larger than the sandbox's memory cap (%s); "
-                                   "if it really needs more, raise the cap with the option --max-memory MIB", path, lim);
-            free(lim);
-        }
+    char *data = NULL;
+    size_t len = 0;
+    int code = vigen_read_file(&data, &len, path, sb->memory_limit, err);
+    if (code == VIGEN_E_LIMIT) {
+        char *lim = memory_text(sb->memory_limit);
+        vigen_error_set(err, VIGEN_E_LIMIT,
+                        "%s: the file is larger than the sandbox's memory cap (%s); "
+                        "if it really needs more, raise the cap with the option --max-memory MIB", path, lim);
+        free(lim);
     }
-    fclose(f);
     if (code == VIGEN_OK) code = run_buffer(sb, data, len, err);
     free(data);
     return code;
