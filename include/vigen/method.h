@@ -34,7 +34,10 @@ void vigen_method_free(vigen_method *m);
 int vigen_method_is_generated(const vigen_method *m);
 /* The tableau (t uninitialised on entry, initialised on success): generated
  * with `digits` certified digits, or read from the tableau file and evaluated
- * at a precision adequate for `digits` digits. */
+ * at a precision adequate for `digits` digits.  digits <= 0 asks for a
+ * tableau file's tableau as stated (entry texts, balls not evaluated, prec 0;
+ * an emitter evaluating the texts itself wants this); a spec refuses it
+ * with VIGEN_E_USAGE. */
 int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err);
 
 /* The generator: the tableau of the Galerkin variational integrator of the

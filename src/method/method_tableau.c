@@ -1,6 +1,6 @@
 /* method_tableau.c — the "tableau" row of methods.def: a tableau file, read
- * once; every tableau asked for is a copy of its texts evaluated at a
- * precision adequate for the digits asked for. */
+ * once; every tableau asked for is a copy of its texts, evaluated at a
+ * precision adequate for the digits asked for (or not at all for digits 0). */
 #include <stdlib.h>
 #include "method/galerkin.h"
 #include "method/methods.h"
@@ -33,6 +33,7 @@ int vigen_method_tableau_tableau(vigen_tableau *t, void *state, slong digits, vi
 {
     tableau_state *st = state;
     vigen_tableau_copy(t, &st->read);
+    if (digits <= 0) return VIGEN_OK;   /* as stated: texts only */
     int rc = vigen_tableau_evaluate(t, vigen_galerkin_initial_prec(digits, t->s), err);
     if (rc != VIGEN_OK) {
         vigen_error_prefix(err, "%s: ", st->path);

@@ -498,6 +498,9 @@ static void test_method_files(void)
         CHECK(vigen_method_is_generated(m) == 1);
         check_midpoint(m, 20, &err);    /* asked twice, at two precisions, from the one run */
         check_midpoint(m, 60, &err);
+        vigen_tableau t;    /* a spec has no tableau "as stated" */
+        CHECK(vigen_method_tableau(&t, m, 0, &err) == VIGEN_E_USAGE);
+        vigen_error_clear(&err);
         vigen_method_free(m);
         m = NULL;
     }
@@ -510,6 +513,13 @@ static void test_method_files(void)
         CHECK(vigen_method_is_generated(m) == 0);
         check_midpoint(m, 20, &err);
         check_midpoint(m, 60, &err);
+        vigen_tableau t;    /* as stated: the texts of the file, nothing evaluated */
+        CHECK(vigen_method_tableau(&t, m, 0, &err) == VIGEN_OK);
+        if (err.code == VIGEN_OK) {
+            CHECK(t.prec == 0 && t.s == 1 && strcmp(t.A_text[0], "1/2") == 0 && strcmp(t.b_text[0], "1") == 0);
+            CHECK(strcmp(t.nodes, "gauss_legendre(1)") == 0 && !t.has_At);
+            vigen_tableau_clear(&t);
+        }
         vigen_method_free(m);
         m = NULL;
     }
