@@ -1,23 +1,27 @@
-/* method.h — where tableaux come from: a spec file run through the
- * generator, or a tableau file read as it is.  Used by generate, show, check
- * and emit, which all accept either kind of file. */
+/* method.h — where tableaux come from: a method file, run once in the Lua
+ * sandbox and recognised by its fields (the kinds are the rows of
+ * src/method/methods.def): a spec run through the generator, or a tableau
+ * file read as it is.  Used by generate, show, check and emit, which all
+ * accept either kind of file. */
 #ifndef VIGEN_METHOD_H
 #define VIGEN_METHOD_H
 
 #include "vigen/error.h"
 #include "vigen/tableau.h"
 
-/* 1 if the file returns a table with an A field (a tableau), 0 if it looks
- * like a spec (nodes and basis), negative with err set when it cannot be run. */
+/* Runs the file once: 1 if it is a tableau file (a table with s or A), 0 if
+ * a spec (nodes or basis), negative with err set when it cannot be run or is
+ * neither.  Superseded by vigen_method_load, which keeps what the run read. */
 int vigen_source_is_tableau(const char *path, vigen_error *err);
 
-/* Loads path into t (uninitialised on entry; initialised on success).  A spec
- * is generated with `digits` certified digits; a tableau file is loaded and
- * evaluated at a precision adequate for `digits` digits. */
+/* vigen_method_load, vigen_method_tableau and vigen_method_free in one call:
+ * the tableau of the file at path (t uninitialised on entry; initialised on
+ * success), the file run once. */
 int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_error *err);
 
 /* A method file, run once: a spec (its tableau is generated at the digits
- * asked for) or a tableau file (read as it is).  Every command that takes a
+ * asked for) or a tableau file (read as it is).  A file of neither kind is
+ * refused with one message naming the file and the fields of each kind.  Every command that takes a
  * FILE loads it with vigen_method_load and asks for tableaux with
  * vigen_method_tableau, as often as it needs, without running the file again. */
 typedef struct vigen_method vigen_method;
@@ -30,7 +34,10 @@ void vigen_method_free(vigen_method *m);
 int vigen_method_is_generated(const vigen_method *m);
 /* The tableau (t uninitialised on entry, initialised on success): generated
  * with `digits` certified digits, or read from the tableau file and evaluated
- * at a precision adequate for `digits` digits. */
+ * at a precision adequate for `digits` digits.  digits <= 0 asks for a
+ * tableau file's tableau as stated (entry texts, balls not evaluated, prec 0;
+ * an emitter evaluating the texts itself wants this); a spec refuses it
+ * with VIGEN_E_USAGE. */
 int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err);
 
 /* The generator: the tableau of the Galerkin variational integrator of the

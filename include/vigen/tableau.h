@@ -47,10 +47,15 @@ typedef struct {
 /* Allocates an s-stage tableau with all balls zero and no texts. */
 void vigen_tableau_init(vigen_tableau *t, slong s);
 void vigen_tableau_clear(vigen_tableau *t);
+/* dst (uninitialised on entry) becomes a deep copy of src: texts, balls and
+ * metadata. */
+void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src);
 
-/* Reads a tableau file in the sandbox.  Messages name the file and the entry
- * ("gauss2.lua: A[2][1]: ..."): missing fields, wrong sizes, Lua floats,
- * unparsable expressions.  Does not evaluate; call vigen_tableau_evaluate. */
+/* Reads a tableau file (run once in a fresh sandbox).  Messages name the file
+ * and the entry ("gauss2.lua: A[2][1]: ..."): missing fields, wrong sizes, Lua
+ * floats, unparsable expressions.  Does not evaluate; call
+ * vigen_tableau_evaluate.  A command that accepts a spec as well loads the
+ * file with vigen_method_load (vigen/method.h). */
 int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_limits *limits,
                        vigen_error *err);
 
@@ -70,7 +75,8 @@ int vigen_tableau_texts_from_balls(vigen_tableau *t, slong digits, vigen_error *
 char *vigen_tableau_to_lua(const vigen_tableau *t);
 
 /* Writes text to path atomically (temporary file in the same directory, then
- * rename); "-" means standard output. */
+ * rename); "-" means standard output.  Failures are VIGEN_E_WRITE (exit
+ * status 3).  Implemented in src/core/file.c. */
 int vigen_write_file_atomic(const char *path, const char *text, vigen_error *err);
 
 /* max over i, j of |b_i at_ij + b_j a_ji - b_i b_j| as a ball (contains 0 for a

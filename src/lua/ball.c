@@ -19,7 +19,7 @@
 
 #include "lua/ball.h"
 #include "core/expr.h"
-#include "lua/sandbox.h"
+#include "lua/float_text.h"
 
 typedef struct {
     slong prec;

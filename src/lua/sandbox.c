@@ -15,12 +15,12 @@
  *   - the globals table is strict: reading an unknown name is an error that
  *     lists the spec-file vocabulary;
  *   - the vocabulary: node and basis family constructors (one closure per name,
- *     the node names taken from nodes.h's list) and the ball library (ball.c).
+ *     the names taken from families.h, that is from nodes.def and basis.def)
+ *     and the ball library (ball.c).
  *
  * The sandbox struct is the allocator's user data, so the hook and the
  * allocator reach it through lua_getallocf.
  */
-#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,10 +29,12 @@
 #include <lauxlib.h>
 #include <lualib.h>
 
+#include "core/file.h"
 #include "lua/ball.h"
 #include "core/expr.h"
-#include "method/nodes.h"
+#include "lua/float_text.h"
 #include "lua/sandbox.h"
+#include "method/families.h"
 
 #define MIB ((size_t)1 << 20)
 
@@ -50,8 +52,6 @@ struct vigen_sandbox {
     char *display;                  /* file name for messages ("spec.lua") */
 };
 
-/* The basis families of the spec vocabulary (the node families come from nodes.h). */
-const char *const vigen_basis_family_names[] = { "monomials", "trig", "legendre", "chebyshev_t", NULL };
 
 static char family_mt_key;          /* registry key of the family descriptor metatable */
 
@@ -76,43 +76,6 @@ void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits)
 lua_State *vigen_sandbox_state(vigen_sandbox *sb) { return sb->L; }
 
 void vigen_sandbox_lift_memory_cap(vigen_sandbox *sb) { sb->memory_limit = (size_t)-1 / 2; }
-
-/* ------------------------------------------------------------------ floats */
-
-size_t vigen_float_format(char *buf, size_t size, double x)
-{
-    char *text = NULL;
-    for (int digits = 1; digits <= 17; digits++) {
-        free(text);
-        text = vigen_strdup_printf("%.*g", digits, x);
-        if (x != x || strtod(text, NULL) == x) break;
-    }
-    size_t n = strlen(text);
-    if (strspn(text, "-0123456789") == n) {     /* Lua shows integral floats with ".0" */
-        char *t = vigen_strdup_printf("%s.0", text);
-        free(text);
-        text = t;
-        n += 2;
-    }
-    if (size > 0) {
-        size_t k = n < size - 1 ? n : size - 1;
-        memcpy(buf, text, k);
-        buf[k] = '\0';
-    }
-    free(text);
-    return n;
-}
-
-/* Pushes the text of a float (in Lua memory, so nothing leaks if a later call raises). */
-const char *vigen_push_float_text(lua_State *L, double x)
-{
-    luaL_Buffer b;
-    size_t n = vigen_float_format(NULL, 0, x);
-    char *p = luaL_buffinitsize(L, &b, n + 1);
-    vigen_float_format(p, n + 1, x);
-    luaL_pushresultsize(&b, n);
-    return lua_tostring(L, -1);
-}
 
 /* ------------------------------------------------------------------ caps */
 
@@ -333,33 +296,16 @@ int vigen_sandbox_run_string(vigen_sandbox *sb, const char *text, const char *ch
 int vigen_sandbox_run_file(vigen_sandbox *sb, const char *path, vigen_error *err)
 {
     set_display(sb, path);
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) return vigen_error_set(err, VIGEN_E_IO, "%s: cannot open: %s", path, strerror(errno));
-    size_t len = 0, cap = 1 << 16;
-    char *data = malloc(cap);
-    int code = data ? VIGEN_OK : vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
-    while (code == VIGEN_OK) {
-        if (cap - len < 2) {
-            char *p = realloc(data, cap * 2);
-            if (p == NULL) { code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path); break; }
-            data = p;
-            cap *= 2;
-        }
-        size_t got = fread(data + len, 1, cap - len - 1, f);
-        len += got;
-        if (got == 0) {
-            if (ferror(f)) code = vigen_error_set(err, VIGEN_E_IO, "%s: cannot read: %s", path, strerror(errno));
-            break;
-        }
-        if (len > sb->memory_limit) {
-            char *lim = memory_text(sb->memory_limit);
-            code = vigen_error_set(err, VIGEN_E_LIMIT,
-                                   "%s: the file is larger than the sandbox's memory cap (%s); "
-                                   "if it really needs more, raise the cap with the option --max-memory MIB", path, lim);
-            free(lim);
-        }
+    char *data = NULL;
+    size_t len = 0;
+    int code = vigen_read_file(&data, &len, path, sb->memory_limit, err);
+    if (code == VIGEN_E_LIMIT) {
+        char *lim = memory_text(sb->memory_limit);
+        vigen_error_set(err, VIGEN_E_LIMIT,
+                        "%s: the file is larger than the sandbox's memory cap (%s); "
+                        "if it really needs more, raise the cap with the option --max-memory MIB", path, lim);
+        free(lim);
     }
-    fclose(f);
     if (code == VIGEN_OK) code = run_buffer(sb, data, len, err);
     free(data);
     return code;

@@ -1,5 +1,8 @@
 /* sandbox.h — a Lua 5.4 state for untrusted spec and tableau files.
  *
+ * vigen_sandbox_new is where every Lua state of vigen is made, so that spec
+ * files and tableau files run with the same libraries, vocabulary and caps.
+ *
  * Spec and tableau files are code written by someone else.  The sandbox opens
  * only the base, math, string and table libraries, removes dofile, loadfile,
  * load, require, collectgarbage, string.dump and the io/os/package/debug
@@ -12,8 +15,9 @@
  * global is an error listing the vocabulary below.
  *
  * The sandbox also provides the vocabulary of spec files (node and basis family
- * constructors such as gauss_legendre(3) and trig(5)) and the ball library
- * (see ball.h) that Lua basis functions compute with.
+ * constructors such as gauss_legendre(3) and trig(5), one per row of
+ * src/method/nodes.def and basis.def) and the ball library (see ball.h) that
+ * Lua basis functions compute with.
  */
 #ifndef VIGEN_SANDBOX_H
 #define VIGEN_SANDBOX_H
@@ -53,17 +57,5 @@ int vigen_sandbox_pcall(vigen_sandbox *sb, int nargs, int nresults, vigen_error 
  * and returns 1; otherwise returns 0.  Never raises a Lua error. */
 enum { VIGEN_FAMILY_NODES = 1, VIGEN_FAMILY_BASIS = 2 };
 int vigen_sandbox_get_family(lua_State *L, int idx, int *kind, const char **family, long *s);
-
-/* NULL-terminated names of the basis families (monomials, trig, legendre,
- * chebyshev_t); the node families are nodes.h's vigen_nodes_family_names. */
-extern const char *const vigen_basis_family_names[];
-
-/* Writes the shortest decimal text that reads back as x, the way Lua shows a
- * float ("0.3333333333333333", "0.5", "3.0", "1e+300"), snprintf-style: returns
- * the length needed, writes at most size bytes (NUL included). */
-size_t vigen_float_format(char *buf, size_t size, double x);
-/* Pushes that text as a Lua string (Lua memory: nothing leaks if a later call
- * raises) and returns it. */
-const char *vigen_push_float_text(lua_State *L, double x);
 
 #endif

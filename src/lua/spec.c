@@ -1,6 +1,8 @@
-/* spec.c — loading and validating method spec files.
+/* spec.c — reading and validating method spec files, and calling their Lua
+ * basis functions.
  *
- * The file runs in a sandbox (sandbox.c); the table it returns is then checked
+ * The file runs in a sandbox (sandbox.c, once per command: the method
+ * registry runs it and hands the table here); the table it returned is checked
  * by a C function that itself runs under vigen_sandbox_pcall, so that nothing
  * the table does (a memory error while reading it, say) can raise a Lua error
  * outside a protected call.  Every C allocation made during the check is
@@ -19,8 +21,10 @@
 #include <lauxlib.h>
 
 #include "lua/ball.h"
-#include "method/nodes.h"
+#include "lua/float_text.h"
+#include "lua/quote.h"
 #include "lua/spec.h"
+#include "method/families.h"
 
 static const char *const known_fields[] = { "name", "description", "source", "nodes", "basis", NULL };
 
@@ -85,23 +89,6 @@ static int refuse_float(load_ctx *cx, const char *entry, double x)
     free(f);
     free(frac);
     return cx->err.code;
-}
-
-static void append_lua_string(vigen_strbuf *b, const char *s)
-{
-    vigen_strbuf_append(b, "\"");
-    for (; *s; s++) {
-        unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\') {
-            char esc[3] = { '\\', (char)ch, 0 };
-            vigen_strbuf_append(b, esc);
-        } else if (ch < 32 || ch == 127) {
-            vigen_strbuf_printf(b, "\\%03d", ch);
-        } else {
-            vigen_strbuf_appendn(b, s, 1);
-        }
-    }
-    vigen_strbuf_append(b, "\"");
 }
 
 static char *join_names(const char *const *names)
@@ -295,7 +282,7 @@ static int check_nodes_list(lua_State *L, int idx, load_ctx *cx)
         code = vigen_expr_parse(&sp->node_exprs[i], cx->src, 0, &cx->err);
         if (code) vigen_error_prefix(&cx->err, "%s: %s: ", sp->path, cx->entry);
         if (i) vigen_strbuf_append(&cx->text, ", ");
-        append_lua_string(&cx->text, cx->src);
+        vigen_lua_quote(&cx->text, cx->src);
     }
     vigen_strbuf_append(&cx->text, "}");
     sp->nodes_text = cx->text.data;
@@ -396,14 +383,14 @@ static int check_basis_list(lua_State *L, int idx, load_ctx *cx)
             item->kind = VIGEN_SPEC_ITEM_LUA;
             item->label = vigen_strdup_printf("<Lua function, %s>", cx->entry);
             item->lua_ref = luaL_ref(L, LUA_REGISTRYINDEX);      /* pops the function */
-            append_lua_string(&cx->text, "<Lua function>");
+            vigen_lua_quote(&cx->text, "<Lua function>");
         } else {
             lua_pop(L, 1);
             item->kind = VIGEN_SPEC_ITEM_EXPR;
             item->label = vigen_strdup(cx->src);
             code = vigen_expr_parse(&item->expr, cx->src, 1, &cx->err);
             if (code) vigen_error_prefix(&cx->err, "%s: %s: ", sp->path, cx->entry);
-            append_lua_string(&cx->text, cx->src);
+            vigen_lua_quote(&cx->text, cx->src);
         }
     }
     vigen_strbuf_append(&cx->text, "}");
@@ -448,8 +435,7 @@ static int check_basis(lua_State *L, int table, load_ctx *cx)
         }
     } else if (t == LUA_TSTRING) {
         const char *str = lua_tostring(L, idx);
-        int is_family = 0;
-        for (int i = 0; vigen_basis_family_names[i]; i++) is_family |= strcmp(str, vigen_basis_family_names[i]) == 0;
+        int is_family = vigen_basis_is_family(str);
         calls = basis_calls();
         if (strcmp(str, "lagrange") == 0) {
             sp->basis_kind = VIGEN_SPEC_BASIS_LAGRANGE;
@@ -518,43 +504,65 @@ static int validate(lua_State *L)
 
 /* ------------------------------------------------------------------ API */
 
-int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
+int vigen_spec_detect(lua_State *L, int idx)
+{
+    if (!lua_istable(L, idx)) return 0;
+    idx = lua_absindex(L, idx);
+    int found = raw_field(L, idx, "nodes") != LUA_TNIL;
+    lua_pop(L, 1);
+    found |= raw_field(L, idx, "basis") != LUA_TNIL;
+    lua_pop(L, 1);
+    return found;
+}
+
+int vigen_spec_from_table(vigen_spec **out, vigen_sandbox *sb, const char *path, vigen_error *err)
 {
     *out = NULL;
     vigen_spec *sp = xcalloc(1, sizeof *sp);
     sp->path = vigen_strdup(path);
-    int code = vigen_sandbox_new(&sp->sandbox, limits, err);
-    if (code == VIGEN_OK) code = vigen_sandbox_run_file(sp->sandbox, path, err);
-    if (code == VIGEN_OK) {
-        lua_State *L = vigen_sandbox_state(sp->sandbox);
-        load_ctx cx;
-        memset(&cx, 0, sizeof cx);
-        cx.spec = sp;
-        vigen_error_init(&cx.err);
-        vigen_strbuf_init(&cx.text);
-        if (!lua_checkstack(L, 3)) {
-            code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
-        } else {
-            lua_pushcfunction(L, validate);
-            lua_insert(L, -2);
-            lua_pushlightuserdata(L, &cx);
-            code = vigen_sandbox_pcall(sp->sandbox, 2, 0, err);
-        }
-        if (code == VIGEN_OK && cx.err.code != VIGEN_OK)
-            code = vigen_error_set(err, cx.err.code, "%s", cx.err.message ? cx.err.message : "invalid spec");
-        vigen_error_clear(&cx.err);
-        for (size_t i = 0; i < cx.n_warnings; i++) free(cx.warnings[i]);
-        free(cx.warnings);
-        vigen_strbuf_clear(&cx.text);
-        free(cx.entry);
-        free(cx.src);
+    sp->sandbox = sb;
+    lua_State *L = vigen_sandbox_state(sb);
+    load_ctx cx;
+    memset(&cx, 0, sizeof cx);
+    cx.spec = sp;
+    vigen_error_init(&cx.err);
+    vigen_strbuf_init(&cx.text);
+    int code;
+    if (!lua_checkstack(L, 3)) {
+        code = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
+    } else {
+        lua_pushcfunction(L, validate);
+        lua_insert(L, -2);
+        lua_pushlightuserdata(L, &cx);
+        code = vigen_sandbox_pcall(sb, 2, 0, err);
     }
+    if (code == VIGEN_OK && cx.err.code != VIGEN_OK)
+        code = vigen_error_set(err, cx.err.code, "%s", cx.err.message ? cx.err.message : "invalid spec");
+    vigen_error_clear(&cx.err);
+    for (size_t i = 0; i < cx.n_warnings; i++) free(cx.warnings[i]);
+    free(cx.warnings);
+    vigen_strbuf_clear(&cx.text);
+    free(cx.entry);
+    free(cx.src);
     if (code != VIGEN_OK) {
-        vigen_spec_free(sp);
+        vigen_spec_free(sp);    /* frees the sandbox too */
         return code;
     }
     *out = sp;
     return VIGEN_OK;
+}
+
+int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
+{
+    *out = NULL;
+    vigen_sandbox *sb = NULL;
+    int code = vigen_sandbox_new(&sb, limits, err);
+    if (code == VIGEN_OK) code = vigen_sandbox_run_file(sb, path, err);
+    if (code != VIGEN_OK) {
+        vigen_sandbox_free(sb);
+        return code;
+    }
+    return vigen_spec_from_table(out, sb, path, err);
 }
 
 void vigen_spec_free(vigen_spec *spec)

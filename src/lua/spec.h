@@ -18,6 +18,7 @@
 #include "vigen/error.h"
 #include "core/expr.h"
 #include "lua/sandbox.h"
+#include "vigen/limits.h"
 
 enum { VIGEN_SPEC_NODES_LIST, VIGEN_SPEC_NODES_FAMILY };
 enum { VIGEN_SPEC_BASIS_LAGRANGE, VIGEN_SPEC_BASIS_FAMILY, VIGEN_SPEC_BASIS_LIST };
@@ -51,13 +52,22 @@ typedef struct {
     vigen_sandbox *sandbox;      /* kept alive for Lua basis functions */
 } vigen_spec;
 
-/* Loads and validates a spec.  Unknown fields of the spec table are warned
- * about (vigen_warn), not refused.  Messages start with "PATH: " and name the field
- * ("nodes[2]", "basis[3]"), e.g.
+/* 1 if the value at idx looks like a spec (a table with nodes or basis),
+ * else 0.  Raw reads; may raise only "not enough memory" (call it protected). */
+int vigen_spec_detect(lua_State *L, int idx);
+
+/* Reads and validates the spec that the file at path returned: the value on
+ * top of sb's stack (vigen_sandbox_run_file).  Takes sb: the spec keeps it
+ * alive for its Lua basis functions, and it is freed on failure.  Unknown
+ * fields of the spec table are warned about (vigen_warn), not refused.
+ * Messages start with "PATH: " and name the field ("nodes[2]", "basis[3]"), e.g.
  *   spec.lua: nodes[2] is the Lua float 0.3333333333333333; write the exact string "1/3"
  *   spec.lua:4: unknown name 'gauss' (node families: gauss_legendre, ...)
  *   spec.lua: nodes: unknown node family 'gaus' (known: gauss_legendre, ...)
  * The checks needing arithmetic (repeated nodes, singular M) belong to galerkin.c. */
+int vigen_spec_from_table(vigen_spec **out, vigen_sandbox *sb, const char *path, vigen_error *err);
+/* The same for a file not run yet: a fresh sandbox with these limits, the
+ * file run once, then vigen_spec_from_table. */
 int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limits *limits,
                     vigen_error *err);
 void vigen_spec_free(vigen_spec *spec);

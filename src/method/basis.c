@@ -1,11 +1,13 @@
-/* basis.c — basis functions: families, Lagrange polynomials, expressions and
- * Lua functions, with their values and rigorous integrals. */
+/* basis.c — basis functions: the families of basis.def, Lagrange
+ * polynomials, expressions and Lua functions, with their values and rigorous
+ * integrals. */
 #include <stdlib.h>
 #include <string.h>
 #include <acb_calc.h>
 #include <arb_poly.h>
 #include <flint/fmpz_poly.h>
 #include "method/basis.h"
+#include "method/families.h"
 
 enum { FN_POLY, FN_TRIG, FN_EXPR, FN_LUA };
 
@@ -86,42 +88,89 @@ static void shifted_chebyshev_t(fmpz_poly_t p, slong k)
     fmpz_poly_clear(t0); fmpz_poly_clear(t1); fmpz_poly_clear(x2); fmpz_poly_clear(tmp);
 }
 
+/* ---- the families of basis.def: psi_{i+1} of each, 0-based i ---------- */
+
+static void basis_monomial(basis_fn *f, fmpz_poly_t p, slong i, slong prec)
+{
+    fmpz_poly_zero(p);
+    fmpz_poly_set_coeff_si(p, i, 1);
+    set_poly_fmpz(f, p, prec);
+    f->label = i == 0 ? vigen_strdup("1") : i == 1 ? vigen_strdup("t") : vigen_strdup_printf("t^%ld", (long)i);
+}
+
+static void basis_legendre(basis_fn *f, fmpz_poly_t p, slong i, slong prec)
+{
+    shifted_legendre(p, i);
+    set_poly_fmpz(f, p, prec);
+    f->label = vigen_strdup_printf("P_%ld(2t-1)", (long)i);
+}
+
+static void basis_chebyshev_t(basis_fn *f, fmpz_poly_t p, slong i, slong prec)
+{
+    shifted_chebyshev_t(p, i);
+    set_poly_fmpz(f, p, prec);
+    f->label = vigen_strdup_printf("T_%ld(2t-1)", (long)i);
+}
+
+/* 1, cos(pi t), sin(pi t), cos(2 pi t), sin(2 pi t), ... */
+static void basis_trig(basis_fn *f, fmpz_poly_t p, slong i, slong prec)
+{
+    (void)p;
+    (void)prec;
+    f->kind = FN_TRIG;
+    f->k = (i + 1) / 2;
+    f->is_cos = (i == 0) || (i % 2 == 1);
+    if (i == 0) f->label = vigen_strdup("1");
+    else if (f->k == 1) f->label = vigen_strdup(f->is_cos ? "cos(pi*t)" : "sin(pi*t)");
+    else f->label = vigen_strdup_printf("%s(%ld*pi*t)", f->is_cos ? "cos" : "sin", (long)f->k);
+}
+
+typedef void (*basis_family_fn)(basis_fn *f, fmpz_poly_t p, slong i, slong prec);
+
+static const struct {
+    const char *name;
+    basis_family_fn fn;
+} basis_families[] = {
+#define X(name, fn, description) { #name, fn },
+#include "method/basis.def"
+#undef X
+};
+
+const char *const vigen_basis_family_names[] = {
+#define X(name, fn, description) #name,
+#include "method/basis.def"
+#undef X
+    NULL };
+
+#define BASIS_NUM_FAMILIES ((slong)(sizeof(basis_families) / sizeof(basis_families[0])))
+
+static basis_family_fn basis_lookup(const char *name)
+{
+    for (slong k = 0; name != NULL && k < BASIS_NUM_FAMILIES; k++)
+        if (strcmp(basis_families[k].name, name) == 0) return basis_families[k].fn;
+    return NULL;
+}
+
+int vigen_basis_is_family(const char *name) { return basis_lookup(name) != NULL; }
+
 static int init_family(vigen_basis *B, const char *family, slong prec, vigen_error *err)
 {
+    basis_family_fn fn = basis_lookup(family);
+    if (fn == NULL) {
+        vigen_strbuf known;
+        vigen_strbuf_init(&known);
+        for (slong k = 0; k < BASIS_NUM_FAMILIES; k++)
+            vigen_strbuf_printf(&known, "%s%s", k ? ", " : "", basis_families[k].name);
+        int rc = vigen_error_set(err, VIGEN_E_SPEC, "unknown basis family '%s' (known: %s)",
+                                 family ? family : "(none)", known.data);
+        vigen_strbuf_clear(&known);
+        return rc;
+    }
     fmpz_poly_t p;
     fmpz_poly_init(p);
-    int rc = VIGEN_OK;
-    for (slong i = 0; i < B->count; i++) {
-        basis_fn *f = &B->fns[i];
-        if (strcmp(family, "monomials") == 0) {
-            fmpz_poly_zero(p);
-            fmpz_poly_set_coeff_si(p, i, 1);
-            set_poly_fmpz(f, p, prec);
-            f->label = i == 0 ? vigen_strdup("1") : i == 1 ? vigen_strdup("t") : vigen_strdup_printf("t^%ld", (long)i);
-        } else if (strcmp(family, "legendre") == 0) {
-            shifted_legendre(p, i);
-            set_poly_fmpz(f, p, prec);
-            f->label = vigen_strdup_printf("P_%ld(2t-1)", (long)i);
-        } else if (strcmp(family, "chebyshev_t") == 0) {
-            shifted_chebyshev_t(p, i);
-            set_poly_fmpz(f, p, prec);
-            f->label = vigen_strdup_printf("T_%ld(2t-1)", (long)i);
-        } else if (strcmp(family, "trig") == 0) {
-            /* 1, cos(pi t), sin(pi t), cos(2 pi t), sin(2 pi t), ... */
-            f->kind = FN_TRIG;
-            f->k = (i + 1) / 2;
-            f->is_cos = (i == 0) || (i % 2 == 1);
-            if (i == 0) f->label = vigen_strdup("1");
-            else if (f->k == 1) f->label = vigen_strdup(f->is_cos ? "cos(pi*t)" : "sin(pi*t)");
-            else f->label = vigen_strdup_printf("%s(%ld*pi*t)", f->is_cos ? "cos" : "sin", (long)f->k);
-        } else {
-            rc = vigen_error_set(err, VIGEN_E_SPEC, "unknown basis family '%s' (known: monomials, trig, legendre, chebyshev_t)",
-                                 family);
-            break;
-        }
-    }
+    for (slong i = 0; i < B->count; i++) fn(&B->fns[i], p, i, prec);
     fmpz_poly_clear(p);
-    return rc;
+    return VIGEN_OK;
 }
 
 /* Lagrange polynomials l_j(t) = prod_{k != j} (t - c_k)/(c_j - c_k). */

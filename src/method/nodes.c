@@ -35,26 +35,9 @@
 
 typedef int (*nodes_fn)(arb_ptr nodes, slong s, slong wp, vigen_error *err);
 
-static int nodes_gauss_legendre(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_gauss_lobatto(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_radau_left(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_radau_right(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_chebyshev_quadrature(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_chebyshev_gauss(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_chebyshev_lobatto(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-static int nodes_equispaced(arb_ptr nodes, slong s, slong wp, vigen_error *err);
-
-/* The one list of families (X-macro): name, smallest s, implementation.  The
- * name table, the lookup and the dispatch are all generated from it. */
-#define VIGEN_NODE_FAMILIES(X)                                   \
-    X(gauss_legendre,       1, nodes_gauss_legendre)             \
-    X(gauss_lobatto,        2, nodes_gauss_lobatto)              \
-    X(radau_left,           1, nodes_radau_left)                 \
-    X(radau_right,          1, nodes_radau_right)                \
-    X(chebyshev_quadrature, 1, nodes_chebyshev_quadrature)       \
-    X(chebyshev_gauss,      1, nodes_chebyshev_gauss)            \
-    X(chebyshev_lobatto,    2, nodes_chebyshev_lobatto)          \
-    X(equispaced,           2, nodes_equispaced)
+#define X(name, min_s, fn, description) static int fn(arb_ptr nodes, slong s, slong wp, vigen_error *err);
+#include "method/nodes.def"
+#undef X
 
 typedef struct {
     const char *name;
@@ -62,13 +45,18 @@ typedef struct {
     nodes_fn fn;
 } nodes_family;
 
-#define NODES_ENTRY(name, min_s, fn) { #name, min_s, fn },
-static const nodes_family nodes_families[] = { VIGEN_NODE_FAMILIES(NODES_ENTRY) };
-#undef NODES_ENTRY
+/* lookup and dispatch table, and the name list, from nodes.def */
+#define X(name, min_s, fn, description) { #name, min_s, fn },
+static const nodes_family nodes_families[] = {
+#include "method/nodes.def"
+};
+#undef X
 
-#define NODES_NAME(name, min_s, fn) #name,
-const char *const vigen_nodes_family_names[] = { VIGEN_NODE_FAMILIES(NODES_NAME) NULL };
-#undef NODES_NAME
+#define X(name, min_s, fn, description) #name,
+const char *const vigen_nodes_family_names[] = {
+#include "method/nodes.def"
+    NULL };
+#undef X
 
 #define NODES_NUM_FAMILIES ((slong)(sizeof(nodes_families) / sizeof(nodes_families[0])))
 

@@ -1,28 +1,18 @@
 /* nodes.h — certified quadrature-node families on [0, 1].
  *
+ * The families, their smallest s and what their nodes are: the rows of
+ * nodes.def (names for messages in families.h).
  * Every family returns s nodes in increasing order as arb balls, each certified
  * to contain the exact node, mapped from [-1, 1] by x -> (1 + x)/2 where the
  * family is classically defined on [-1, 1].  Nodes that are exactly 0, 1/2 or 1
  * mathematically are returned as exact balls (radius 0).
- *
- *   gauss_legendre(s)        roots of P_s                        s >= 1
- *   gauss_lobatto(s)         -1, 1 and roots of P'_{s-1}          s >= 2
- *   radau_left(s)            roots of P_s + P_{s-1} (contains -1) s >= 1
- *   radau_right(s)           roots of P_s - P_{s-1} (contains +1) s >= 1
- *   chebyshev_quadrature(s)  roots of Chebyshev's G_s (equal-weight quadrature);
- *                            s = 8 and s >= 10 have complex roots: refused
- *   chebyshev_gauss(s)       roots of T_s: cos((2k-1) pi / (2s))  s >= 1
- *   chebyshev_lobatto(s)     cos(k pi / (s-1)), k = 0..s-1        s >= 2
- *   equispaced(s)            k/(s-1), k = 0..s-1                  s >= 2
  */
 #ifndef VIGEN_NODES_H
 #define VIGEN_NODES_H
 
 #include <arb.h>
 #include "vigen/error.h"
-
-/* Largest s accepted by any family (keeps polynomial degrees sane). */
-#define VIGEN_NODES_MAX_S 256
+#include "method/families.h"
 
 /* Writes s nodes into nodes (an arb vector of length s, already initialised).
  * Errors: VIGEN_E_SPEC for an unknown family name (the message lists the known
@@ -30,11 +20,5 @@
  * s real nodes (chebyshev_quadrature(8)); VIGEN_E_PRECISION if roots cannot be
  * isolated at this precision (the caller retries higher). */
 int vigen_nodes_family(arb_ptr nodes, const char *family, slong s, slong prec, vigen_error *err);
-
-/* 1 if name is a known node family. */
-int vigen_nodes_is_family(const char *name);
-
-/* NULL-terminated list of the family names, for messages and --help. */
-extern const char *const vigen_nodes_family_names[];
 
 #endif

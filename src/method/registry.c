@@ -1,62 +1,144 @@
-/* registry.c — load a tableau from a tableau file or a spec file. */
+/* registry.c — method files (vigen/method.h): the file run once in a
+ * sandbox, its table recognised by the rows of methods.def and handed to the
+ * reader of its kind, which then makes the tableaux asked for. */
+#include <stdlib.h>
 #include <lauxlib.h>
 #include "method/galerkin.h"
-#include "lua/sandbox.h"
+#include "method/methods.h"
 #include "vigen/method.h"
-#include "lua/spec.h"
-#include <stdlib.h>
+
+enum {
+#define X(id, name, detect, read, tableau, release, generated, fields, description) VIGEN_METHOD_##id,
+#include "method/methods.def"
+#undef X
+    VIGEN_METHOD_KINDS
+};
+
+typedef struct {
+    const char *name;
+    int (*detect)(lua_State *L, int idx);
+    int (*read)(void **state, vigen_sandbox *sb, const char *path, vigen_error *err);
+    int (*tableau)(vigen_tableau *t, void *state, slong digits, vigen_error *err);
+    void (*release)(void *state);
+    int generated;
+    const char *fields;
+    const char *description;
+} method_kind;
+
+static const method_kind kinds[] = {
+#define X(id, name, detect, read, tableau, release, generated, fields, description)                            \
+    { name, detect, read, tableau, release, generated, fields, description },
+#include "method/methods.def"
+#undef X
+};
 
 struct vigen_method {
-    char *path;
-    int generated;
-    vigen_spec *spec;   /* generated: the loaded spec */
+    const method_kind *kind;
+    void *state;
 };
+
+/* Runs protected: 1 = the value the file returned; returns the index of the
+ * first kind that accepts it, or -1. */
+static int detect_protected(lua_State *L)
+{
+    int found = -1;
+    for (int k = 0; k < VIGEN_METHOD_KINDS && found < 0; k++)
+        if (kinds[k].detect(L, 1)) found = k;
+    lua_pushinteger(L, found);
+    return 1;
+}
+
+/* The file at path run once in a fresh sandbox, and its kind: on success
+ * *sb holds the sandbox with the file's value on top and *kind its row (NULL
+ * when no row accepts the value; err then says what a method file needs). */
+static int run_and_detect(vigen_sandbox **sb, const method_kind **kind, const char *path,
+                          const vigen_sandbox_limits *limits, vigen_error *err)
+{
+    *kind = NULL;
+    int rc = vigen_sandbox_new(sb, limits, err);
+    if (rc == VIGEN_OK) rc = vigen_sandbox_run_file(*sb, path, err);
+    lua_State *L = rc == VIGEN_OK ? vigen_sandbox_state(*sb) : NULL;
+    if (rc == VIGEN_OK && !lua_checkstack(L, 4)) rc = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
+    if (rc == VIGEN_OK) {
+        lua_pushcfunction(L, detect_protected);
+        lua_pushvalue(L, -2);
+        rc = vigen_sandbox_pcall(*sb, 1, 1, err);
+    }
+    if (rc == VIGEN_OK) {
+        lua_Integer k = lua_tointeger(L, -1);
+        lua_pop(L, 1);
+        if (k >= 0) {
+            *kind = &kinds[k];
+            return VIGEN_OK;
+        }
+        vigen_strbuf b;
+        vigen_strbuf_init(&b);
+        if (lua_istable(L, -1))
+            vigen_strbuf_printf(&b, "%s: the table the file returns has none of the fields of a method file; give it ", path);
+        else
+            vigen_strbuf_printf(&b, "%s: the file returns a %s; it must return a table with ", path, luaL_typename(L, -1));
+        for (int i = 0; i < VIGEN_METHOD_KINDS; i++)
+            vigen_strbuf_printf(&b, "%s%s", i == 0 ? "" : i + 1 < VIGEN_METHOD_KINDS ? ", " : " or ", kinds[i].fields);
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s", b.data);
+        vigen_strbuf_clear(&b);
+    }
+    vigen_sandbox_free(*sb);
+    *sb = NULL;
+    return rc;
+}
+
+int vigen_method_load(vigen_method **out, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
+{
+    *out = NULL;
+    vigen_sandbox *sb = NULL;
+    const method_kind *kind;
+    int rc = run_and_detect(&sb, &kind, path, limits, err);
+    if (rc != VIGEN_OK) return rc;
+    vigen_method *m = calloc(1, sizeof(*m));
+    if (m == NULL) {
+        vigen_sandbox_free(sb);
+        return vigen_error_set(err, VIGEN_E_MEMORY, "out of memory");
+    }
+    m->kind = kind;
+    rc = kind->read(&m->state, sb, path, err);
+    if (rc != VIGEN_OK) {
+        free(m);
+        return rc;
+    }
+    *out = m;
+    return VIGEN_OK;
+}
+
+void vigen_method_free(vigen_method *m)
+{
+    if (m == NULL) return;
+    m->kind->release(m->state);
+    free(m);
+}
+
+int vigen_method_is_generated(const vigen_method *m) { return m->kind->generated; }
+
+int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err)
+{
+    return m->kind->tableau(t, m->state, digits, err);
+}
 
 int vigen_source_is_tableau(const char *path, vigen_error *err)
 {
     vigen_sandbox *sb = NULL;
-    if (vigen_sandbox_new(&sb, NULL, err) != VIGEN_OK) return -1;
-    if (vigen_sandbox_run_file(sb, path, err) != VIGEN_OK) { vigen_sandbox_free(sb); return -1; }
-    vigen_sandbox_lift_memory_cap(sb);
-    lua_State *L = vigen_sandbox_state(sb);
-    /* a tableau has s or A; anything else is read as a spec, whose loader
-     * explains what is missing.  Raw reads: the file is untrusted. */
-    int is_tableau = 1;
-    if (lua_istable(L, -1)) {
-        lua_pushliteral(L, "A");
-        lua_rawget(L, -2);
-        int has_A = !lua_isnil(L, -1);
-        lua_pop(L, 1);
-        lua_pushliteral(L, "s");
-        lua_rawget(L, -2);
-        int has_s = !lua_isnil(L, -1);
-        lua_pop(L, 1);
-        is_tableau = has_A || has_s;
-    }
+    const method_kind *kind;
+    if (run_and_detect(&sb, &kind, path, NULL, err) != VIGEN_OK) return -1;
     vigen_sandbox_free(sb);
-    return is_tableau;
+    return kind == &kinds[VIGEN_METHOD_TABLEAU];
 }
 
 int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_error *err)
 {
-    int kind = vigen_source_is_tableau(path, err);
-    if (kind < 0) return err->code;
-    if (kind == 0) {
-        vigen_spec *spec = NULL;
-        int rc = vigen_spec_load(&spec, path, NULL, err);
-        if (rc != VIGEN_OK) return rc;
-        rc = vigen_galerkin_generate(t, spec, digits, err);
-        vigen_spec_free(spec);
-        return rc;
-    }
-    int rc = vigen_tableau_load(t, path, NULL, err);
+    vigen_method *m = NULL;
+    int rc = vigen_method_load(&m, path, NULL, err);
     if (rc != VIGEN_OK) return rc;
-    slong prec = vigen_galerkin_initial_prec(digits, t->s);
-    rc = vigen_tableau_evaluate(t, prec, err);
-    if (rc != VIGEN_OK) {
-        vigen_error_prefix(err, "%s: ", path);
-        vigen_tableau_clear(t);
-    }
+    rc = vigen_method_tableau(t, m, digits, err);
+    vigen_method_free(m);
     return rc;
 }
 
@@ -67,46 +149,5 @@ int vigen_generate_file(vigen_tableau *out, const char *path, slong digits, vige
     if (rc != VIGEN_OK) return rc;
     rc = vigen_galerkin_generate(out, spec, digits, err);
     vigen_spec_free(spec);
-    return rc;
-}
-
-int vigen_method_load(vigen_method **out, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
-{
-    *out = NULL;
-    int kind = vigen_source_is_tableau(path, err);
-    if (kind < 0) return err->code;
-    vigen_method *m = calloc(1, sizeof(*m));
-    if (m == NULL) return vigen_error_set(err, VIGEN_E_MEMORY, "out of memory");
-    m->path = vigen_strdup(path);
-    m->generated = kind == 0;
-    if (m->generated) {
-        int rc = vigen_spec_load(&m->spec, path, limits, err);
-        if (rc != VIGEN_OK) { vigen_method_free(m); return rc; }
-    }
-    *out = m;
-    return VIGEN_OK;
-}
-
-void vigen_method_free(vigen_method *m)
-{
-    if (m == NULL) return;
-    if (m->spec) vigen_spec_free(m->spec);
-    free(m->path);
-    free(m);
-}
-
-int vigen_method_is_generated(const vigen_method *m) { return m->generated; }
-
-int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err)
-{
-    if (m->generated) return vigen_galerkin_generate(t, m->spec, digits, err);
-    int rc = vigen_tableau_load(t, m->path, NULL, err);
-    if (rc != VIGEN_OK) return rc;
-    slong prec = vigen_galerkin_initial_prec(digits, t->s);
-    rc = vigen_tableau_evaluate(t, prec, err);
-    if (rc != VIGEN_OK) {
-        vigen_error_prefix(err, "%s: ", m->path);
-        vigen_tableau_clear(t);
-    }
     return rc;
 }

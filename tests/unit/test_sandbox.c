@@ -1,11 +1,14 @@
-/* test_sandbox.c — the Lua sandbox (caps, escapes, messages, vocabulary) and
- * the ball library that Lua basis functions compute with. */
+/* test_sandbox.c — the Lua sandbox (caps, escapes, messages, vocabulary),
+ * the ball library that Lua basis functions compute with, and the Lua string
+ * literals vigen writes. */
 #include <string.h>
 
 #include <lauxlib.h>
 #include <lualib.h>
 
 #include "lua/ball.h"
+#include "lua/float_text.h"
+#include "lua/quote.h"
 #include "lua/sandbox.h"
 #include "testlib.h"
 
@@ -323,6 +326,42 @@ static void test_float_format(void)
     CHECK(vigen_float_format(small, sizeof small, 1.0 / 3.0) == 18 && strcmp(small, "0.3") == 0);
 }
 
+/* A literal from vigen_lua_quote, read back by Lua, is the text itself. */
+static void test_quote(void)
+{
+    static const char *const texts[] = {
+        "1/2 - sqrt(3)/6", "", "say \"hi\"", "back\\slash", "\nleading newline", "a]]b", "a]]b]=]c]==]",
+        "line\r\nbreak", "{\"0\", \"1/2\"}",
+    };
+    vigen_error err;
+    vigen_error_init(&err);
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        vigen_strbuf chunk;
+        vigen_strbuf_init(&chunk);
+        vigen_strbuf_append(&chunk, "return ");
+        vigen_lua_quote(&chunk, texts[i]);
+        vigen_sandbox *sb = NULL;
+        CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+        int code = sb ? vigen_sandbox_run_string(sb, chunk.data, "@quote.lua", &err) : VIGEN_E_MEMORY;
+        CHECK_MSG(code == VIGEN_OK, "%s: %s", chunk.data, err.message);
+        if (code == VIGEN_OK) {
+            lua_State *L = vigen_sandbox_state(sb);
+            size_t len;
+            const char *back = lua_tolstring(L, -1, &len);
+            CHECK_MSG(back && len == strlen(texts[i]) && memcmp(back, texts[i], len) == 0, "%s", chunk.data);
+        }
+        vigen_error_clear(&err);
+        vigen_sandbox_free(sb);
+        vigen_strbuf_clear(&chunk);
+    }
+    /* text that needs no escape stays a plain "..." literal */
+    vigen_strbuf b;
+    vigen_strbuf_init(&b);
+    vigen_lua_quote(&b, "1/3");
+    CHECK(strcmp(b.data, "\"1/3\"") == 0);
+    vigen_strbuf_clear(&b);
+}
+
 /* ------------------------------------------------------------------ balls */
 
 /* Evaluates the Lua function returned by chunk at t; res gets the value. */
@@ -514,6 +553,7 @@ int main(void)
     test_memory_cap();
     test_vocabulary();
     test_float_format();
+    test_quote();
     test_balls();
     TEST_MAIN_END();
 }

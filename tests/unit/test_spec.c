@@ -1,5 +1,6 @@
-/* test_spec.c — loading and validating spec files, and calling Lua basis
- * functions.  Spec files are written to a temporary directory, so every
+/* test_spec.c — loading and validating spec files, calling Lua basis
+ * functions, and method files (vigen/method.h): a spec or a tableau file
+ * recognised from the one run of the file.  Spec files are written to a temporary directory, so every
  * message can be checked to start with the file's path. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdlib.h>
@@ -7,6 +8,7 @@
 #include <unistd.h>
 
 #include "lua/spec.h"
+#include "vigen/method.h"
 #include "testlib.h"
 
 static char *tmpdir;
@@ -467,6 +469,86 @@ static void test_memory_cap(void)
     vigen_error_clear(&err);
 }
 
+/* The one-stage Gauss method (the implicit midpoint rule): c = a = 1/2, b = 1. */
+static void check_midpoint(vigen_method *m, slong digits, vigen_error *err)
+{
+    vigen_tableau t;
+    CHECK_MSG(vigen_method_tableau(&t, m, digits, err) == VIGEN_OK, "%s", err->message);
+    if (err->code != VIGEN_OK) return;
+    arb_t half;
+    arb_init(half);
+    arb_set_d(half, 0.5);
+    CHECK(t.s == 1);
+    CHECK(arb_contains(t.c, half) && arb_contains(arb_mat_entry(t.A, 0, 0), half));
+    CHECK(arb_contains_si(t.b, 1));
+    CHECK(t.prec > 0 && arb_rel_accuracy_bits(t.c) > 3 * digits);
+    arb_clear(half);
+    vigen_tableau_clear(&t);
+}
+
+static void test_method_files(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_method *m = NULL;
+
+    char *spec = write_spec("m_spec.lua", "return { name = 'midpoint', nodes = gauss_legendre(1), basis = 'lagrange' }");
+    CHECK_MSG(vigen_method_load(&m, spec, NULL, &err) == VIGEN_OK, "%s", err.message);
+    if (m) {
+        CHECK(vigen_method_is_generated(m) == 1);
+        check_midpoint(m, 20, &err);    /* asked twice, at two precisions, from the one run */
+        check_midpoint(m, 60, &err);
+        vigen_tableau t;    /* a spec has no tableau "as stated" */
+        CHECK(vigen_method_tableau(&t, m, 0, &err) == VIGEN_E_USAGE);
+        vigen_error_clear(&err);
+        vigen_method_free(m);
+        m = NULL;
+    }
+
+    /* a tableau file carries nodes and basis as descriptions: still a tableau */
+    char *tab = write_spec("m_tableau.lua", "return { name = 'midpoint', s = 1, c = {'1/2'}, A = {{'1/2'}}, b = {1}, "
+                                           "nodes = 'gauss_legendre(1)', basis = '\"lagrange\"' }");
+    CHECK_MSG(vigen_method_load(&m, tab, NULL, &err) == VIGEN_OK, "%s", err.message);
+    if (m) {
+        CHECK(vigen_method_is_generated(m) == 0);
+        check_midpoint(m, 20, &err);
+        check_midpoint(m, 60, &err);
+        vigen_tableau t;    /* as stated: the texts of the file, nothing evaluated */
+        CHECK(vigen_method_tableau(&t, m, 0, &err) == VIGEN_OK);
+        if (err.code == VIGEN_OK) {
+            CHECK(t.prec == 0 && t.s == 1 && strcmp(t.A_text[0], "1/2") == 0 && strcmp(t.b_text[0], "1") == 0);
+            CHECK(strcmp(t.nodes, "gauss_legendre(1)") == 0 && !t.has_At);
+            vigen_tableau_clear(&t);
+        }
+        vigen_method_free(m);
+        m = NULL;
+    }
+
+    /* a spec's own messages come through unchanged */
+    char *partial = write_spec("m_partial.lua", "return { name = 'x', basis = 'lagrange' }");
+    CHECK(vigen_method_load(&m, partial, NULL, &err) == VIGEN_E_SPEC && m == NULL);
+    CHECK(starts_with(err.message, partial) && contains(err.message, "nodes is missing"));
+
+    /* of no kind: one message naming the file and what each kind needs */
+    char *none = write_spec("m_none.lua", "return { name = 'x' }");
+    CHECK(vigen_method_load(&m, none, NULL, &err) == VIGEN_E_SPEC && m == NULL);
+    CHECK_MSG(starts_with(err.message, none) && contains(err.message, "nodes and basis") &&
+              contains(err.message, "s, c, A and b"), "%s", err.message);
+    char *scalar = write_spec("m_scalar.lua", "return 'gauss'");
+    CHECK(vigen_method_load(&m, scalar, NULL, &err) == VIGEN_E_SPEC && m == NULL);
+    CHECK_MSG(starts_with(err.message, scalar) && contains(err.message, "returns a string"), "%s", err.message);
+
+    /* the thin wrappers agree */
+    CHECK(vigen_source_is_tableau(tab, &err) == 1);
+    CHECK(vigen_source_is_tableau(spec, &err) == 0);
+    free(spec);
+    free(tab);
+    free(partial);
+    free(none);
+    free(scalar);
+    vigen_error_clear(&err);
+}
+
 int main(void)
 {
     char templ[] = "/tmp/vigen-test-spec-XXXXXX";
@@ -481,6 +563,7 @@ int main(void)
     test_unknown_fields();
     test_call_basis();
     test_memory_cap();
+    test_method_files();
 
     /* remove the temporary files */
     for (size_t i = 0; i < n_written; i++) {

@@ -1,0 +1,47 @@
+/* quote.c — Lua string literals (quote.h).  Long brackets rather than
+ * backslash escapes keep expressions and nested literals readable in the
+ * file; only a carriage return, which a long bracket does not keep, needs
+ * escapes. */
+#include <string.h>
+
+#include "lua/quote.h"
+
+void vigen_lua_quote(vigen_strbuf *out, const char *text)
+{
+    if (strpbrk(text, "\"\\\n\r") == NULL) {
+        vigen_strbuf_printf(out, "\"%s\"", text);
+        return;
+    }
+    if (strchr(text, '\r') != NULL) {
+        /* a long bracket would read \r\n back as \n: escape instead */
+        vigen_strbuf_append(out, "\"");
+        for (const char *p = text; *p; p++) {
+            unsigned char ch = (unsigned char)*p;
+            if (ch == '"' || ch == '\\') vigen_strbuf_printf(out, "\\%c", ch);
+            else if (ch < 32 || ch == 127) vigen_strbuf_printf(out, "\\%03d", ch);
+            else vigen_strbuf_appendn(out, p, 1);
+        }
+        vigen_strbuf_append(out, "\"");
+        return;
+    }
+    int level = 0;
+    vigen_strbuf close;
+    vigen_strbuf_init(&close);
+    for (;;) {
+        vigen_strbuf_clear(&close);
+        vigen_strbuf_append(&close, "]");
+        for (int i = 0; i < level; i++) vigen_strbuf_append(&close, "=");
+        vigen_strbuf_append(&close, "]");
+        if (strstr(text, close.data) == NULL) break;
+        level++;
+    }
+    vigen_strbuf_clear(&close);
+    vigen_strbuf_append(out, "[");
+    for (int i = 0; i < level; i++) vigen_strbuf_append(out, "=");
+    /* Lua drops a newline right after the opening bracket: double it */
+    vigen_strbuf_append(out, text[0] == '\n' ? "[\n" : "[");
+    vigen_strbuf_append(out, text);
+    vigen_strbuf_append(out, "]");
+    for (int i = 0; i < level; i++) vigen_strbuf_append(out, "=");
+    vigen_strbuf_append(out, "]");
+}
