@@ -21,6 +21,7 @@
 #include <arb.h>
 #include <arb_mat.h>
 #include "vigen/error.h"
+#include "vigen/file.h"
 #include "vigen/limits.h"
 
 typedef struct {
@@ -73,11 +74,6 @@ int vigen_tableau_texts_from_balls(vigen_tableau *t, slong digits, vigen_error *
 
 /* Serialises as a tableau file (Lua) into a string; deterministic. */
 char *vigen_tableau_to_lua(const vigen_tableau *t);
-
-/* Writes text to path atomically (temporary file in the same directory, then
- * rename); "-" means standard output.  Failures are VIGEN_E_WRITE (exit
- * status 3).  Implemented in src/core/file.c. */
-int vigen_write_file_atomic(const char *path, const char *text, vigen_error *err);
 
 /* max over i, j of |b_i at_ij + b_j a_ji - b_i b_j| as a ball (contains 0 for a
  * symplectic method).  Requires At. */
