@@ -121,11 +121,13 @@ char *vigen_emit_identifier(const char *name);
  * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
 int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
 
-/* Loads FILE for emission: a tableau file as it is; a spec generated with
+/* Loads FILE for emission, once (vigen_method_load), and asks it for the
+ * tableau (vigen_method_tableau): a tableau file as it is; a spec generated with
  * vigen_emit_spec_digits(real) digits, doubled (up to 960) while the emitter
  * still finds a value it cannot round, with allow_inexact honoured only at
  * the last attempt.  Renders into *h, *c, *ident; t is left initialised
- * (on success and on failures after loading); *loaded says whether it is. */
+ * (on success and on failures after loading); *loaded says whether it is.
+ * VIGEN_E_INEXACT: an entry cannot be rounded (the data are too short). */
 int vigen_emit_load_render(vigen_tableau *t, int *loaded, const char *file, vigen_emit_options *opt, char **h,
                            char **c, char **ident, vigen_error *err);
 

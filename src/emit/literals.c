@@ -55,7 +55,7 @@ int vigen_emit_tiny_zero(const emit_ctx *E, const arb_t x)
 }
 
 /* Records why x cannot be rounded (the message is rewritten with advice by
- * precision_message once more precision has not helped). */
+ * vigen_emit_precision_message once more precision has not helped). */
 static int refuse(emit_ctx *E, int kind, slong ref, const char *label)
 {
     E->fail_kind = kind;

@@ -239,7 +239,7 @@ static const char *pptr(const plan *P, slong c, const slong *buf, char *tmp, siz
 
 /* The nonzero merged coefficients of row r of M (or of vector v) over the
  * classes cls, as terms on the work arrays of the nodes id(P, f). */
-static int put_terms(emit_xop *op, emit_ctx *E, const plan *P, const arb_mat_t M, arb_srcptr v, slong r,
+static int plan_terms(emit_xop *op, emit_ctx *E, const plan *P, const arb_mat_t M, arb_srcptr v, slong r,
                      const slong *cls, slong ncls, slong (*id)(const plan *, slong), const slong *buf,
                      const char *label)
 {
@@ -333,19 +333,19 @@ static int plan_explicit(emit_explicit *X, emit_ctx *E, const plan *P)
         emit_xop *op = X->ops + X->nops++;
         if (a == id_uq(P)) {
             op->op = XOP_UPDATE_Q;
-            rc = put_terms(op, E, P, NULL, E->b, 0, P->fcls, P->nf, id_fn, buf, "b (merged)");
+            rc = plan_terms(op, E, P, NULL, E->b, 0, P->fcls, P->nf, id_fn, buf, "b (merged)");
         } else if (a == id_up(P)) {
             op->op = XOP_UPDATE_P;
-            rc = put_terms(op, E, P, NULL, E->bt, 0, P->gcls, P->ng, id_gn, buf, "bt (merged)");
+            rc = plan_terms(op, E, P, NULL, E->bt, 0, P->gcls, P->ng, id_gn, buf, "bt (merged)");
         } else if (a < P->nq) {
             op->op = XOP_STAGE_Q;
             op->dst = (long)buf[a];
-            rc = put_terms(op, E, P, E->A, NULL, P->qrep[a], P->fcls, P->nf, id_fn, buf, "A row (merged)");
+            rc = plan_terms(op, E, P, E->A, NULL, P->qrep[a], P->fcls, P->nf, id_fn, buf, "A row (merged)");
         } else if (a < P->nq + P->np) {
             slong c = a - P->nq;
             op->op = XOP_STAGE_P;
             op->dst = (long)buf[a];
-            rc = put_terms(op, E, P, E->At, NULL, P->prep[c], P->gcls, P->ng, id_gn, buf, "At row (merged)");
+            rc = plan_terms(op, E, P, E->At, NULL, P->prep[c], P->gcls, P->ng, id_gn, buf, "At row (merged)");
         } else {
             int isf = a < P->nq + P->np + P->nf;
             slong e = isf ? a - P->nq - P->np : a - P->nq - P->np - P->nf;
