@@ -6,6 +6,7 @@
  * naming the file, the line and the slot.  The shipped PRK templates declare
  * exactly the slots the PRK builder supplies (rendering them succeeds in
  * test_emit; here: every declared name is used). */
+#define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -158,8 +159,24 @@ static void test_shipped(void)
     }
 }
 
+/* The templates directory: $VIGEN_TEMPLATE_DIR first, the variant's folder
+ * below it. */
+static void test_dir(void)
+{
+    setenv("VIGEN_TEMPLATE_DIR", "/somewhere/templates", 1);
+    char *d = vigen_template_dir("prk");
+    CHECK(strcmp(d, "/somewhere/templates/prk") == 0);
+    free(d);
+    unsetenv("VIGEN_TEMPLATE_DIR");
+    d = vigen_template_dir("prk");
+    size_t n = strlen(d);
+    CHECK(n >= 14 && strcmp(d + n - 14, "/templates/prk") == 0);
+    free(d);
+}
+
 int main(void)
 {
+    test_dir();
     test_rendering();
     test_contract();
     test_malformed();
