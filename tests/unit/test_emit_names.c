@@ -7,16 +7,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "testlib.h"
 #include "vigen/emit.h"
 
-static int failures = 0;
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-            failures++;                                                              \
-        }                                                                            \
-    } while (0)
 
 static char *slurp(const char *path)
 {
@@ -59,7 +52,7 @@ int main(void)
         snprintf(want, sizeof want, "%s_", words[k]);
         if (strcmp(id, want) != 0) {
             fprintf(stderr, "keyword %s became %s\n", words[k], id);
-            failures++;
+            testlib_failures++;
         }
         free(id);
     }
@@ -79,16 +72,15 @@ int main(void)
             for (char *w = strtok(p + strlen("set(keywords"), " \n"); w; w = strtok(NULL, " \n")) {
                 int found = 0;
                 for (int k = 0; k < n; k++) found |= strcmp(w, words[k]) == 0;
-                if (!found) { fprintf(stderr, "VigenStepper.cmake keyword %s is not in c_keywords.def\n", w); failures++; }
+                if (!found) { fprintf(stderr, "VigenStepper.cmake keyword %s is not in c_keywords.def\n", w); testlib_failures++; }
                 count++;
             }
             if (count != n) {
                 fprintf(stderr, "VigenStepper.cmake lists %d keywords, c_keywords.def %d\n", count, n);
-                failures++;
+                testlib_failures++;
             }
         }
         free(cm);
     }
-    if (failures) fprintf(stderr, "%d check(s) failed\n", failures);
-    return failures ? 1 : 0;
+    TEST_MAIN_END();
 }

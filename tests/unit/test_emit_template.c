@@ -10,16 +10,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "testlib.h"
 #include "emit/template.h"
 
-static int failures = 0;
-#define CHECK(cond)                                                                  \
-    do {                                                                             \
-        if (!(cond)) {                                                               \
-            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond); \
-            failures++;                                                              \
-        }                                                                            \
-    } while (0)
 
 static void standard_slots(vigen_slots *S)
 {
@@ -57,7 +50,7 @@ static void expect_text(const char *text, const char *want)
     CHECK(rc == VIGEN_OK);
     if (rc != VIGEN_OK || strcmp(out, want) != 0) {
         fprintf(stderr, "  template:\n%s\n  got:\n%s\n  want:\n%s\n", text, out, want);
-        failures++;
+        testlib_failures++;
     }
     free(out);
 }
@@ -71,7 +64,7 @@ static void expect_error(const char *text, const char *where, const char *slot, 
     if (rc != VIGEN_E_TEMPLATE || strstr(out, where) == NULL || strstr(out, slot) == NULL || strstr(out, what) == NULL ||
         strchr(out, '\n') != NULL) {
         fprintf(stderr, "  template:\n%s\n  message: %s\n  want: %s, %s, %s\n", text, out, where, slot, what);
-        failures++;
+        testlib_failures++;
     }
     free(out);
 }
@@ -153,7 +146,7 @@ static void test_shipped(void)
             const char *body = end + 2;
             if (!strstr(body, inl) && !strstr(body, blk) && !strstr(body, flag) && !strstr(body, neg)) {
                 fprintf(stderr, "%s: slot %s declared but never used\n", files[f], w);
-                failures++;
+                testlib_failures++;
             }
         }
     }
@@ -181,6 +174,5 @@ int main(void)
     test_contract();
     test_malformed();
     test_shipped();
-    if (failures) fprintf(stderr, "%d check(s) failed\n", failures);
-    return failures ? 1 : 0;
+    TEST_MAIN_END();
 }
