@@ -67,28 +67,26 @@ void vigen_slots_text(vigen_slots *s, const char *name, const char *text)
     slot_new(s, name, VIGEN_SLOT_TEXT)->text = vigen_strdup(text);
 }
 
+/* The formatted text (heap). */
+static char *vformat(const char *fmt, va_list ap)
+{
+    va_list aq;
+    va_copy(aq, ap);
+    int n = vsnprintf(NULL, 0, fmt, aq);
+    va_end(aq);
+    char *s = malloc((size_t)(n > 0 ? n : 0) + 1);
+    if (s == NULL) abort();
+    vsnprintf(s, (size_t)(n > 0 ? n : 0) + 1, fmt, ap);
+    return s;
+}
+
 void vigen_slots_textf(vigen_slots *s, const char *name, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    vigen_strbuf sb;
-    vigen_strbuf_init(&sb);
-    vigen_strbuf_append(&sb, "");
-    char buf[512];
-    int n = vsnprintf(buf, sizeof buf, fmt, ap);
+    char *text = vformat(fmt, ap);
     va_end(ap);
-    if (n >= 0 && (size_t)n < sizeof buf) {
-        vigen_strbuf_append(&sb, buf);
-    } else {
-        char *big = malloc((size_t)n + 1);
-        if (big == NULL) abort();
-        va_start(ap, fmt);
-        vsnprintf(big, (size_t)n + 1, fmt, ap);
-        va_end(ap);
-        vigen_strbuf_append(&sb, big);
-        free(big);
-    }
-    slot_new(s, name, VIGEN_SLOT_TEXT)->text = sb.data;
+    slot_new(s, name, VIGEN_SLOT_TEXT)->text = text;
 }
 
 void vigen_slots_flag(vigen_slots *s, const char *name, int on) { slot_new(s, name, VIGEN_SLOT_FLAG)->on = on != 0; }
@@ -99,12 +97,7 @@ void vigen_slot_line(vigen_slot *slot, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    char *line = malloc((size_t)n + 1);
-    if (line == NULL) abort();
-    va_start(ap, fmt);
-    vsnprintf(line, (size_t)n + 1, fmt, ap);
+    char *line = vformat(fmt, ap);
     va_end(ap);
     if (slot->nlines == slot->cap) {
         slot->cap = slot->cap ? 2 * slot->cap : 16;
@@ -228,7 +221,9 @@ static int valid_name(const char *s)
     return 1;
 }
 
-/* One ordinary line: inline slots, and a block slot when it ends the line. */
+/* One ordinary line: inline slots, and a block slot when it ends the line.
+ * A line of a section that is off is checked all the same (output NULL):
+ * the contract must not depend on the flags of one rendering. */
 static int render_line(vigen_strbuf *out, render_ctx *R, long lineno, const char *line, size_t len, int newline)
 {
     size_t i = 0, start = 0;
@@ -254,7 +249,7 @@ static int render_line(vigen_strbuf *out, render_ctx *R, long lineno, const char
             if (j + 2 != len)
                 return fail(R, lineno, "block slot @@%s@@ must end its line", name);
             if (lookup(&v, R, lineno, name, VIGEN_SLOT_LINES) != VIGEN_OK) return VIGEN_E_TEMPLATE;
-            for (size_t l = 0; l < v->nlines; l++) {
+            for (size_t l = 0; out && l < v->nlines; l++) {
                 vigen_strbuf_appendn(out, line, i);
                 vigen_strbuf_append(out, v->lines[l]);
                 vigen_strbuf_append(out, "\n");
@@ -262,10 +257,13 @@ static int render_line(vigen_strbuf *out, render_ctx *R, long lineno, const char
             return VIGEN_OK;
         }
         if (lookup(&v, R, lineno, name, VIGEN_SLOT_TEXT) != VIGEN_OK) return VIGEN_E_TEMPLATE;
-        vigen_strbuf_appendn(out, line + start, i - start);
-        vigen_strbuf_append(out, v->text);
+        if (out) {
+            vigen_strbuf_appendn(out, line + start, i - start);
+            vigen_strbuf_append(out, v->text);
+        }
         i = start = j + 1;
     }
+    if (out == NULL) return VIGEN_OK;
     vigen_strbuf_appendn(out, line + start, len - start);
     if (newline) vigen_strbuf_append(out, "\n");
     return VIGEN_OK;
@@ -314,8 +312,8 @@ int vigen_template_render(char **out, const char *text, const char *file, const 
         } else if (mark == 3) {
             if (depth == 0) rc = fail(&R, lineno, "malformed mark '%s' (no open @if)", "@end@");
             else depth--;
-        } else if (active[depth]) {
-            rc = render_line(&sb, &R, lineno, p, len, nl != NULL);
+        } else {
+            rc = render_line(active[depth] ? &sb : NULL, &R, lineno, p, len, nl != NULL);
         }
         if (nl == NULL) break;
         p = nl + 1;
@@ -330,6 +328,9 @@ int vigen_template_render(char **out, const char *text, const char *file, const 
     for (size_t d = 0; d < R.ndeclared && rc == VIGEN_OK; d++)
         if (vigen_slots_find(slots, R.declared[d]) == NULL)
             rc = fail(&R, 1, "slot %s is declared but unknown: the emitter supplies no such slot", R.declared[d]);
+    /* and the declaration lists what the template uses, nothing more */
+    for (size_t d = 0; d < R.ndeclared && rc == VIGEN_OK; d++)
+        if (R.decl_used[d] == 0) rc = fail(&R, 1, "slot %s is declared but never used", R.declared[d]);
     for (size_t d = 0; d < R.ndeclared; d++) free(R.declared[d]);
     free(R.declared);
     free(R.decl_used);

@@ -20,10 +20,11 @@
  *                   "!"); sections nest.
  *
  * Every other character is copied as it is.  The contract is checked both
- * ways: a mark naming a slot that the declaration leaves out, a declared
- * slot the emitter does not supply, a slot used as the wrong kind and a
- * malformed mark are errors (VIGEN_E_TEMPLATE) naming the template file, the
- * line and the slot.  Rendering depends on the template and the slots only.
+ * ways, on every line (those of sections that are off too): a mark naming a
+ * slot that the declaration leaves out, a declared slot the emitter does not
+ * supply or no mark uses, a slot used as the wrong kind and a malformed mark
+ * are errors (VIGEN_E_TEMPLATE) naming the template file, the line and the
+ * slot.  Rendering depends on the template and the slots only.
  */
 #ifndef VIGEN_TEMPLATE_H
 #define VIGEN_TEMPLATE_H

@@ -75,7 +75,7 @@ static void test_rendering(void)
     expect_text("/* vigen-template slots: NAME EMPTY */\nint @NAME@_x;@EMPTY@ /* @NAME@@NAME@ */\n",
                 "int gauss2_x; /* gauss2gauss2 */\n");
     /* a declaration may span lines */
-    expect_text("/* vigen-template slots: NAME\n *   EMPTY */\n@NAME@\n", "gauss2\n");
+    expect_text("/* vigen-template slots: NAME\n *   EMPTY */\n@NAME@@EMPTY@\n", "gauss2\n");
     /* a block slot: every line preceded by what comes before the mark */
     expect_text("/* vigen-template slots: BODY NONE */\n{\n    @@BODY@@\n}\n * @@NONE@@\nend\n",
                 "{\n    x = 1;\n    if (x) {\n        y = 2;\n    }\n}\nend\n");
@@ -95,7 +95,11 @@ static void test_contract(void)
     /* unknown: declared, but the emitter supplies no such slot (line 1) */
     expect_error("/* vigen-template slots: NAME STAGES */\n@NAME@\n", "t.in:1", "STAGES", "unknown");
     /* missing: declared and used, but no value supplied (the line of the use) */
-    expect_error("/* vigen-template slots: NAME ORDER */\n\n\n@ORDER@\n", "t.in:4", "ORDER", "missing");
+    expect_error("/* vigen-template slots: NAME ORDER */\n@NAME@\n\n@ORDER@\n", "t.in:4", "ORDER", "missing");
+    /* declared, supplied, never used: the declaration must say what is used */
+    expect_error("/* vigen-template slots: NAME ON */\n@NAME@\n", "t.in:1", "ON", "never used");
+    /* a section that is off is checked all the same */
+    expect_error("/* vigen-template slots: OFF */\n@if OFF@\n@REAL@\n@end@\n", "t.in:3", "REAL", "not declared");
     /* the wrong kind: a flag as text, text as a block, a block as a flag */
     expect_error("/* vigen-template slots: ON */\nx @ON@\n", "t.in:2", "ON", "inline");
     expect_error("/* vigen-template slots: NAME */\n  @@NAME@@\n", "t.in:2", "NAME", "block");
