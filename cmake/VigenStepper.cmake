@@ -14,7 +14,8 @@
 # linked to vigen::runtime.  A program then does
 #   target_link_libraries(app PRIVATE <target>)
 # and `#include "<name>.h"`.  TABLEAU is relative to the current source
-# directory.  NAME must be a C identifier (it prefixes every emitted symbol);
+# directory.  NAME must be a C identifier (it prefixes every emitted symbol)
+# and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
 # REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
 # decimal entries as written when they have too few digits for REAL).
 # Compile the program without -ffast-math (the emitted code refuses it).
@@ -35,8 +36,10 @@ function(vigen_add_stepper)
   endif()
 
   # The emitter would sanitise any other name (and then write other files):
-  # accept only names it keeps as they are (see vigen_emit_identifier in
-  # generator/emit.c for the same rule and keyword list).
+  # accept only names it keeps as they are.  The rule is vigen_emit_identifier
+  # (src/emit/names.c); the keyword list is src/emit/c_keywords.def, which an
+  # installed package does not carry: the words below are that table's rows,
+  # in its order, and change with it.
   set(keywords auto break case char const continue default do double else enum extern float for
       goto if inline int long register restrict return short signed sizeof static struct switch
       typedef union unsigned void volatile while bool true false asm typeof main)
@@ -66,7 +69,9 @@ function(vigen_add_stepper)
   endif()
   set(deps "${tableau}" vigen::vigen)
   if(vigen_TEMPLATE_DIR)
-    list(APPEND deps "${vigen_TEMPLATE_DIR}/stepper.c.in" "${vigen_TEMPLATE_DIR}/stepper.h.in")
+    # every variant's templates (templates/<variant>/*.in)
+    file(GLOB templates "${vigen_TEMPLATE_DIR}/*/*.in")
+    list(APPEND deps ${templates})
   endif()
   get_filename_component(tableau_base "${tableau}" NAME)
 

@@ -4,7 +4,7 @@
  *              [--allow-inexact] [-q]
  *
  * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
- * templates/stepper.h.in and templates/stepper.c.in (see template.h) and
+ * templates/prk/stepper.h.in and templates/prk/stepper.c.in and
  * linked against the runtime library (runtime/include/vigen/runtime.h).
  *
  * - FILE is a tableau file or a spec file (nodes and basis, as for vigen
@@ -16,7 +16,7 @@
  *   from the certified balls to the target type: 53, 64 or 113 bits, printed
  *   as exact C hex-float literals.  When a ball straddles a rounding boundary
  *   the tableau is re-evaluated at higher precision; an entry given as a
- *   rounded decimal with too few digits is refused (VIGEN_E_PRECISION, with a
+ *   rounded decimal with too few digits is refused (VIGEN_E_INEXACT, with a
  *   message naming the entry and what to do: more digits, an exact entry, or
  *   --allow-inexact) unless --allow-inexact asks for the decimal as written to
  *   be rounded: then one warning lists how many entries were rounded so.  An
@@ -47,13 +47,19 @@
  *   a step is reused at the start of the next (first same as last) when the
  *   tableau has a zero row and a row equal to b.
  *
- * Data handed to the templates (fields of the Lua table): NAME, UNAME, REAL,
- * SFX, HAM, STEPPER_TYPE, real_check, header (comment lines), coef_lines,
- * tableau_name, s, order, c[i], a[i][j], at[i][j], b[i], bt[i] (literals;
- * false = exact zero; c never false), extrap ("lagrange" or "copy"),
- * inv[j][m] (1/(c_j - c_m)), explicit_mode ("none", "separable", "general"),
- * explicit_separable, nx, copy_q0, copy_p0, xops, fsal, fsal_swaps,
- * nevals_f, nevals_g.
+ * Variants: src/emit/variants.def lists the steppers the emitter can write
+ * (today one, "prk": the partitioned Runge-Kutta stepper above, for double,
+ * long double and float128).  Each is a template directory
+ * templates/<variant>/ (stepper.h.in, stepper.c.in: readable C with
+ * @NAME@ and @@BLOCK@@ slots and @if FLAG@ sections, every slot declared in
+ * the template's first comment) and a slot builder in C that computes every
+ * slot from the tableau.  The PRK slots: NAME, UNAME, TABLEAU_NAME, REAL,
+ * SFX, HAM, STEPPER_TYPE, STAGES, ORDER, COEF_HEAD, NARRAYS, NX, texts;
+ * HEADER and COEF_LINES, comment lines; DOUBLE, LONG_DOUBLE, FLOAT128,
+ * IMPLICIT, EXPLICIT, LAGRANGE, COPY_Q0, COPY_P0, FSAL, HAS_UPDATE_Q,
+ * HAS_UPDATE_P, flags; and the blocks of C lines of the stage loops, the
+ * Newton matrix, the extrapolation and the explicit step.
+ * docs/templates.md describes each slot and how to add a variant.
  */
 #ifndef VIGEN_EMIT_H
 #define VIGEN_EMIT_H
@@ -91,9 +97,10 @@ slong vigen_emit_spec_digits(int real);
  * *c_text are heap strings; *ident receives the sanitised name.  Warnings
  * (vigen_warn, after success only): entries emitted as exact zeros, one per
  * entry, and with allow_inexact one summary of the entries rounded as
- * written.  VIGEN_E_PRECISION: an entry cannot be rounded correctly; the
+ * written.  VIGEN_E_INEXACT: an entry cannot be rounded correctly; the
  * message names it (not the file: callers prefix the path) and says what to
- * do. */
+ * do.  VIGEN_E_TEMPLATE: the variant's templates and its slots do not
+ * match (the message names the template, line and slot). */
 int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
                       char **ident, vigen_error *err);
 
@@ -114,11 +121,13 @@ char *vigen_emit_identifier(const char *name);
  * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
 int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
 
-/* Loads FILE for emission: a tableau file as it is; a spec generated with
+/* Loads FILE for emission, once (vigen_method_load), and asks it for the
+ * tableau (vigen_method_tableau): a tableau file as it is; a spec generated with
  * vigen_emit_spec_digits(real) digits, doubled (up to 960) while the emitter
  * still finds a value it cannot round, with allow_inexact honoured only at
  * the last attempt.  Renders into *h, *c, *ident; t is left initialised
- * (on success and on failures after loading); *loaded says whether it is. */
+ * (on success and on failures after loading); *loaded says whether it is.
+ * VIGEN_E_INEXACT: an entry cannot be rounded (the data are too short). */
 int vigen_emit_load_render(vigen_tableau *t, int *loaded, const char *file, vigen_emit_options *opt, char **h,
                            char **c, char **ident, vigen_error *err);
 

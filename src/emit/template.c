@@ -1,183 +1,341 @@
-/* template.c — renders the stepper templates (C text with //$ Lua lines and ${expr}
- * slots, compiled line by line into one Lua function so that Lua's error
- * messages point at template lines. */
+/* template.c — the template engine (slot declaration, inline and block
+ * slots, flag sections; see template.h), the slot sets it renders with, and
+ * the one lookup of the templates directory. */
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <lua.h>
-#include <lauxlib.h>
-#include <lualib.h>
+#include <sys/stat.h>
+#if defined(__linux__)
+#include <unistd.h>
+#endif
 #include "emit/template.h"
 
-void vigen_template_quote(vigen_strbuf *sb, const char *text)
+/* ------------------------------------------------------------- slot sets */
+
+void vigen_slots_init(vigen_slots *s) { memset(s, 0, sizeof *s); }
+
+static void slot_free(vigen_slot *v)
 {
-    vigen_strbuf_append(sb, "\"");
-    for (const unsigned char *c = (const unsigned char *)text; *c; c++) {
-        if (*c == '"' || *c == '\\') {
-            char e[3] = { '\\', (char)*c, 0 };
-            vigen_strbuf_append(sb, e);
-        } else if (*c < 0x20 || *c > 0x7e) {
-            vigen_strbuf_printf(sb, "\\%03u", (unsigned)*c);
-        } else {
-            vigen_strbuf_appendn(sb, (const char *)c, 1);
-        }
+    free(v->name);
+    free(v->text);
+    for (size_t k = 0; k < v->nlines; k++) free(v->lines[k]);
+    free(v->lines);
+    memset(v, 0, sizeof *v);
+}
+
+void vigen_slots_clear(vigen_slots *s)
+{
+    for (size_t k = 0; k < s->n; k++) {
+        slot_free(s->v[k]);
+        free(s->v[k]);
     }
-    vigen_strbuf_append(sb, "\"");
+    free(s->v);
+    memset(s, 0, sizeof *s);
 }
 
-/* Lua prelude, on the template's first line (no newline) so that line
- * numbers match.  D is the data table; _o appends output; _s converts a
- * slot value, refusing floats, booleans and nil. */
-static const char prelude[] =
-    "local D = ...; local _b, _n = {}, 0; "
-    "local function _o(x) _n = _n + 1; _b[_n] = x end; "
-    "local function _s(v, e) local ty = math.type(v); "
-    "if type(v) == 'string' then return v elseif ty == 'integer' then return tostring(v) end; "
-    "error('slot ${' .. e .. '} has a ' .. (ty or type(v)) .. ' value, not a string or integer', 2) end; "
-    "local _G0 = _G; "
-    "local _ENV = setmetatable({}, { __index = function(_, k) local v = D[k]; "
-    "if v == nil then v = _G0[k] end; if v == nil then error('unknown name ' .. tostring(k), 2) end; "
-    "return v end }); ";
-
-/* Appends the Lua statement that outputs text[0..n) literally. */
-static void emit_text(vigen_strbuf *lua, const char *text, size_t n)
+const vigen_slot *vigen_slots_find(const vigen_slots *s, const char *name)
 {
-    if (n == 0) return;
-    char *tmp = malloc(n + 1);
-    if (tmp == NULL) abort();
-    memcpy(tmp, text, n);
-    tmp[n] = 0;
-    vigen_strbuf_append(lua, "_o(");
-    vigen_template_quote(lua, tmp);
-    vigen_strbuf_append(lua, ") ");
-    free(tmp);
+    for (size_t k = 0; k < s->n; k++)
+        if (strcmp(s->v[k]->name, name) == 0) return s->v[k];
+    return NULL;
 }
 
-/* Compiles one non-code template line (without its newline) into Lua. */
-static int compile_line(vigen_strbuf *lua, const char *line, size_t len, int newline,
-                        const char *chunkname, long lineno, vigen_error *err)
+/* A fresh slot of that name (an earlier one of the name is replaced). */
+static vigen_slot *slot_new(vigen_slots *s, const char *name, int kind)
+{
+    vigen_slot *v = (vigen_slot *)vigen_slots_find(s, name);
+    if (v) {
+        slot_free(v);
+    } else {
+        if (s->n == s->cap) {
+            s->cap = s->cap ? 2 * s->cap : 32;
+            s->v = realloc(s->v, s->cap * sizeof *s->v);
+            if (s->v == NULL) abort();
+        }
+        v = calloc(1, sizeof *v);
+        if (v == NULL) abort();
+        s->v[s->n++] = v;
+    }
+    v->name = vigen_strdup(name);
+    v->kind = kind;
+    return v;
+}
+
+void vigen_slots_text(vigen_slots *s, const char *name, const char *text)
+{
+    slot_new(s, name, VIGEN_SLOT_TEXT)->text = vigen_strdup(text);
+}
+
+/* The formatted text (heap). */
+static char *vformat(const char *fmt, va_list ap)
+{
+    va_list aq;
+    va_copy(aq, ap);
+    int n = vsnprintf(NULL, 0, fmt, aq);
+    va_end(aq);
+    char *s = malloc((size_t)(n > 0 ? n : 0) + 1);
+    if (s == NULL) abort();
+    vsnprintf(s, (size_t)(n > 0 ? n : 0) + 1, fmt, ap);
+    return s;
+}
+
+void vigen_slots_textf(vigen_slots *s, const char *name, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    char *text = vformat(fmt, ap);
+    va_end(ap);
+    slot_new(s, name, VIGEN_SLOT_TEXT)->text = text;
+}
+
+void vigen_slots_flag(vigen_slots *s, const char *name, int on) { slot_new(s, name, VIGEN_SLOT_FLAG)->on = on != 0; }
+
+vigen_slot *vigen_slots_lines(vigen_slots *s, const char *name) { return slot_new(s, name, VIGEN_SLOT_LINES); }
+
+void vigen_slot_line(vigen_slot *slot, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    char *line = vformat(fmt, ap);
+    va_end(ap);
+    if (slot->nlines == slot->cap) {
+        slot->cap = slot->cap ? 2 * slot->cap : 16;
+        slot->lines = realloc(slot->lines, slot->cap * sizeof *slot->lines);
+        if (slot->lines == NULL) abort();
+    }
+    slot->lines[slot->nlines++] = line;
+}
+
+/* ------------------------------------------------------------- rendering */
+
+static const char decl_opener[] = "/* vigen-template slots:";
+
+typedef struct {
+    const char *file;
+    const vigen_slots *slots;
+    char **declared;     /* names in the declaration */
+    long *decl_used;     /* line of the first use, 0: unused */
+    size_t ndeclared;
+    vigen_error *err;
+} render_ctx;
+
+static int is_name_start(char c) { return c >= 'A' && c <= 'Z'; }
+static int is_name_char(char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_'; }
+
+static int fail(render_ctx *R, long line, const char *fmt, const char *name)
+{
+    char *what = vigen_strdup_printf(fmt, name);
+    vigen_error_set(R->err, VIGEN_E_TEMPLATE, "template %s:%ld: %s", R->file, line, what);
+    free(what);
+    return VIGEN_E_TEMPLATE;
+}
+
+/* The slot a mark names, checked against the declaration and the kind the
+ * mark needs. */
+static int lookup(const vigen_slot **out, render_ctx *R, long line, const char *name, int kind)
+{
+    static const char *const kinds[] = { "an inline @NAME@ text", "a block @@NAME@@", "an @if flag" };
+    size_t d = 0;
+    while (d < R->ndeclared && strcmp(R->declared[d], name) != 0) d++;
+    if (d == R->ndeclared) return fail(R, line, "slot %s is used but not declared in the first-line slots comment", name);
+    if (R->decl_used[d] == 0) R->decl_used[d] = line;
+    const vigen_slot *v = vigen_slots_find(R->slots, name);
+    if (v == NULL) return fail(R, line, "slot %s is missing: the emitter supplies no value for it", name);
+    if (v->kind != kind) {
+        char *msg = vigen_strdup_printf("slot %%s is used as %s, but the emitter supplies %s", kinds[kind], kinds[v->kind]);
+        fail(R, line, msg, name);
+        free(msg);
+        return VIGEN_E_TEMPLATE;
+    }
+    *out = v;
+    return VIGEN_OK;
+}
+
+/* Reads the declaration comment; *end points after it (and its newline);
+ * *lines counts the lines it spans. */
+static int read_declaration(render_ctx *R, const char *text, const char **end, long *lines)
+{
+    if (strncmp(text, decl_opener, sizeof decl_opener - 1) != 0)
+        return fail(R, 1, "%s: the template must open with the comment /* vigen-template slots: NAME ... */",
+                    "no slot declaration");
+    const char *p = text + sizeof decl_opener - 1;
+    const char *close = strstr(p, "*/");
+    if (close == NULL) return fail(R, 1, "%s: the slot declaration comment is not closed", "malformed mark");
+    *lines = 1;
+    while (p < close) {
+        if (*p == '\n') { (*lines)++; p++; continue; }
+        if (*p == ' ' || *p == '\t' || *p == '*') { p++; continue; }
+        const char *q = p;
+        while (q < close && !(*q == ' ' || *q == '\t' || *q == '\n' || *q == '*')) q++;
+        const char *r = p;
+        while (r < q && is_name_char(*r)) r++;
+        if (r != q || !is_name_start(*p)) {
+            char *bad = vigen_strdup_printf("%.*s", (int)(q - p), p);
+            fail(R, *lines, "malformed slot name '%s' in the slot declaration (names are [A-Z][A-Z0-9_]*)", bad);
+            free(bad);
+            return VIGEN_E_TEMPLATE;
+        }
+        R->declared = realloc(R->declared, (R->ndeclared + 1) * sizeof *R->declared);
+        R->decl_used = realloc(R->decl_used, (R->ndeclared + 1) * sizeof *R->decl_used);
+        if (R->declared == NULL || R->decl_used == NULL) abort();
+        R->declared[R->ndeclared] = vigen_strdup_printf("%.*s", (int)(q - p), p);
+        R->decl_used[R->ndeclared++] = 0;
+        p = q;
+    }
+    p = close + 2;
+    if (*p == '\n') p++;
+    *end = p;
+    return VIGEN_OK;
+}
+
+/* A line that is only a section mark: kind 1 @if, 2 @else@, 3 @end@ (0: not
+ * one); for @if, the name and negation. */
+static int section_mark(const char *line, size_t len, char *name, size_t cap, int *negate)
+{
+    size_t a = 0, b = len;
+    while (a < b && (line[a] == ' ' || line[a] == '\t')) a++;
+    while (b > a && (line[b - 1] == ' ' || line[b - 1] == '\t')) b--;
+    size_t n = b - a;
+    const char *m = line + a;
+    if (n == 6 && memcmp(m, "@else@", 6) == 0) return 2;
+    if (n == 5 && memcmp(m, "@end@", 5) == 0) return 3;
+    if (n > 5 && memcmp(m, "@if ", 4) == 0 && m[n - 1] == '@') {
+        size_t i = 4;
+        *negate = m[i] == '!';
+        if (*negate) i++;
+        size_t k = n - 1 - i;
+        if (k >= cap) k = cap - 1;
+        memcpy(name, m + i, k);
+        name[k] = 0;
+        return 1;
+    }
+    return 0;
+}
+
+static int valid_name(const char *s)
+{
+    if (!is_name_start(*s)) return 0;
+    for (; *s; s++)
+        if (!is_name_char(*s)) return 0;
+    return 1;
+}
+
+/* One ordinary line: inline slots, and a block slot when it ends the line.
+ * A line of a section that is off is checked all the same (output NULL):
+ * the contract must not depend on the flags of one rendering. */
+static int render_line(vigen_strbuf *out, render_ctx *R, long lineno, const char *line, size_t len, int newline)
 {
     size_t i = 0, start = 0;
     while (i < len) {
-        if (line[i] == '$' && i + 1 < len && line[i + 1] == '{') {
-            emit_text(lua, line + start, i - start);
-            size_t j = i + 2;
-            int depth = 1;
-            while (j < len) {
-                if (line[j] == '{') depth++;
-                else if (line[j] == '}' && --depth == 0) break;
-                j++;
+        if (line[i] != '@') { i++; continue; }
+        int block = i + 1 < len && line[i + 1] == '@';
+        size_t n0 = i + (block ? 2 : 1), j = n0;
+        while (j < len && is_name_char(line[j])) j++;
+        char name[64];
+        size_t k = j - n0 < sizeof name - 1 ? j - n0 : sizeof name - 1;
+        memcpy(name, line + n0, k);
+        name[k] = 0;
+        int closed = j < len && line[j] == '@' && (!block || (j + 1 < len && line[j + 1] == '@'));
+        if (!closed || k == 0 || !is_name_start(name[0])) {
+            char *shown = vigen_strdup_printf("%.*s", (int)((j < len ? j + 1 : len) - i), line + i);
+            fail(R, lineno, "malformed mark '%s' (slots are @NAME@ or a line ending in @@NAME@@, NAME in [A-Z][A-Z0-9_]*)",
+                 shown);
+            free(shown);
+            return VIGEN_E_TEMPLATE;
+        }
+        const vigen_slot *v;
+        if (block) {
+            if (j + 2 != len)
+                return fail(R, lineno, "block slot @@%s@@ must end its line", name);
+            if (lookup(&v, R, lineno, name, VIGEN_SLOT_LINES) != VIGEN_OK) return VIGEN_E_TEMPLATE;
+            for (size_t l = 0; out && l < v->nlines; l++) {
+                vigen_strbuf_appendn(out, line, i);
+                vigen_strbuf_append(out, v->lines[l]);
+                vigen_strbuf_append(out, "\n");
             }
-            if (j >= len)
-                return vigen_error_set(err, VIGEN_E_SYNTAX, "%s:%ld: unterminated ${ slot", chunkname, lineno);
-            char *expr = malloc(j - i - 1);
-            if (expr == NULL) abort();
-            memcpy(expr, line + i + 2, j - i - 2);
-            expr[j - i - 2] = 0;
-            vigen_strbuf_printf(lua, "_o(_s((%s), ", expr);
-            vigen_template_quote(lua, expr);
-            vigen_strbuf_append(lua, ")) ");
-            free(expr);
-            i = start = j + 1;
-        } else {
-            i++;
+            return VIGEN_OK;
         }
+        if (lookup(&v, R, lineno, name, VIGEN_SLOT_TEXT) != VIGEN_OK) return VIGEN_E_TEMPLATE;
+        if (out) {
+            vigen_strbuf_appendn(out, line + start, i - start);
+            vigen_strbuf_append(out, v->text);
+        }
+        i = start = j + 1;
     }
-    emit_text(lua, line + start, len - start);
-    if (newline) vigen_strbuf_append(lua, "_o(\"\\n\") ");
+    if (out == NULL) return VIGEN_OK;
+    vigen_strbuf_appendn(out, line + start, len - start);
+    if (newline) vigen_strbuf_append(out, "\n");
     return VIGEN_OK;
 }
 
-/* Compiles a whole template into a Lua chunk, one Lua line per template line. */
-static int compile_template(vigen_strbuf *lua, const char *text, const char *chunkname, vigen_error *err)
-{
-    vigen_strbuf_append(lua, prelude);
-    long lineno = 1;
-    const char *p = text;
-    while (*p) {
-        const char *nl = strchr(p, '\n');
-        size_t len = nl ? (size_t)(nl - p) : strlen(p);
-        const char *q = p;
-        while (q < p + len && (*q == ' ' || *q == '\t')) q++;
-        if ((size_t)(p + len - q) >= 3 && q[0] == '/' && q[1] == '/' && q[2] == '$') {
-            vigen_strbuf_appendn(lua, q + 3, (size_t)(p + len - q - 3));
-            vigen_strbuf_append(lua, " ");
-        } else {
-            int rc = compile_line(lua, p, len, nl != NULL, chunkname, lineno, err);
-            if (rc != VIGEN_OK) return rc;
-        }
-        if (nl == NULL) break;
-        vigen_strbuf_append(lua, "\n");
-        lineno++;
-        p = nl + 1;
-    }
-    vigen_strbuf_append(lua, "\nreturn table.concat(_b)\n");
-    return VIGEN_OK;
-}
-
-static int lua_status_code(int st) { return st == LUA_ERRSYNTAX ? VIGEN_E_SYNTAX : st == LUA_ERRMEM ? VIGEN_E_MEMORY : VIGEN_E_LUA; }
-
-static lua_State *new_state(void)
-{
-    lua_State *L = luaL_newstate();
-    if (L == NULL) return NULL;
-    luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
-    luaL_requiref(L, LUA_STRLIBNAME, luaopen_string, 1);
-    luaL_requiref(L, LUA_TABLIBNAME, luaopen_table, 1);
-    luaL_requiref(L, LUA_MATHLIBNAME, luaopen_math, 1);
-    lua_pop(L, 4);
-    static const char *const removed[] = { "dofile", "loadfile", "load", "require", "collectgarbage" };
-    for (size_t k = 0; k < sizeof removed / sizeof removed[0]; k++) {
-        lua_pushnil(L);
-        lua_setglobal(L, removed[k]);
-    }
-    /* math.random is the only nondeterministic function left: remove it. */
-    lua_getglobal(L, "math");
-    lua_pushnil(L);
-    lua_setfield(L, -2, "random");
-    lua_pushnil(L);
-    lua_setfield(L, -2, "randomseed");
-    lua_pop(L, 1);
-    return L;
-}
-
-int vigen_template_render(char **out, const char *template_text, const char *chunkname,
-                          const char *data_lua, vigen_error *err)
+int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
+                          vigen_error *err)
 {
     *out = NULL;
-    vigen_strbuf lua;
-    vigen_strbuf_init(&lua);
-    int rc = compile_template(&lua, template_text, chunkname, err);
-    if (rc != VIGEN_OK) { vigen_strbuf_clear(&lua); return rc; }
-
-    lua_State *L = new_state();
-    if (L == NULL) { vigen_strbuf_clear(&lua); return vigen_error_set(err, VIGEN_E_MEMORY, "cannot create a Lua state"); }
-    char *name = vigen_strdup_printf("=%s", chunkname);
-    int st = luaL_loadbufferx(L, lua.data, lua.len, name, "t");
-    free(name);
-    vigen_strbuf_clear(&lua);
-    if (st != LUA_OK) {
-        rc = vigen_error_set(err, lua_status_code(st), "template %s", lua_tostring(L, -1));
-        lua_close(L);
-        return rc;
+    render_ctx R = { file, slots, NULL, NULL, 0, err };
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    vigen_strbuf_append(&sb, "");
+    const char *p;
+    long lineno;
+    int rc = read_declaration(&R, text, &p, &lineno);
+    /* sections: a stack of (active, seen else, line) */
+    enum { MAXDEPTH = 32 };
+    int active[MAXDEPTH + 1], had_else[MAXDEPTH + 1];
+    long opened[MAXDEPTH + 1];
+    int depth = 0;
+    active[0] = 1;
+    while (rc == VIGEN_OK && *p) {
+        lineno++;
+        const char *nl = strchr(p, '\n');
+        size_t len = nl ? (size_t)(nl - p) : strlen(p);
+        char name[64];
+        int negate = 0;
+        int mark = section_mark(p, len, name, sizeof name, &negate);
+        if (mark == 1) {
+            const vigen_slot *v;
+            if (!valid_name(name)) rc = fail(&R, lineno, "malformed mark '@if %s@' (a flag name in [A-Z][A-Z0-9_]*)", name);
+            else if (depth == MAXDEPTH) rc = fail(&R, lineno, "sections nested deeper than %s", "32");
+            else if (lookup(&v, &R, lineno, name, VIGEN_SLOT_FLAG) == VIGEN_OK) {
+                depth++;
+                active[depth] = active[depth - 1] && (v->on != negate);
+                had_else[depth] = 0;
+                opened[depth] = lineno;
+            } else rc = VIGEN_E_TEMPLATE;
+        } else if (mark == 2) {
+            if (depth == 0 || had_else[depth]) rc = fail(&R, lineno, "malformed mark '%s' (no open @if)", "@else@");
+            else {
+                had_else[depth] = 1;
+                active[depth] = active[depth - 1] && !active[depth];
+            }
+        } else if (mark == 3) {
+            if (depth == 0) rc = fail(&R, lineno, "malformed mark '%s' (no open @if)", "@end@");
+            else depth--;
+        } else {
+            rc = render_line(active[depth] ? &sb : NULL, &R, lineno, p, len, nl != NULL);
+        }
+        if (nl == NULL) break;
+        p = nl + 1;
     }
-    st = luaL_loadbufferx(L, data_lua, strlen(data_lua), "=template data", "t");
-    if (st == LUA_OK) st = lua_pcall(L, 0, 1, 0);
-    if (st != LUA_OK || !lua_istable(L, -1)) {
-        rc = vigen_error_set(err, st == LUA_OK ? VIGEN_E_SPEC : lua_status_code(st), "%s: %s",
-                             "template data", st == LUA_OK ? "did not return a table" : lua_tostring(L, -1));
-        lua_close(L);
-        return rc;
+    if (rc == VIGEN_OK && depth > 0) {
+        char num[32];
+        snprintf(num, sizeof num, "%ld", opened[depth]);
+        rc = fail(&R, lineno, "malformed mark: the @if of line %s has no @end@", num);
     }
-    st = lua_pcall(L, 1, 1, 0);
-    if (st != LUA_OK || !lua_isstring(L, -1)) {
-        rc = vigen_error_set(err, st == LUA_OK ? VIGEN_E_LUA : lua_status_code(st), "template %s",
-                             st == LUA_OK ? "returned no text" : lua_tostring(L, -1));
-        lua_close(L);
-        return rc;
-    }
-    *out = vigen_strdup(lua_tostring(L, -1));
-    lua_close(L);
+    /* every declared slot must exist: a declaration the emitter cannot fill
+     * is as wrong as a mark it cannot fill */
+    for (size_t d = 0; d < R.ndeclared && rc == VIGEN_OK; d++)
+        if (vigen_slots_find(slots, R.declared[d]) == NULL)
+            rc = fail(&R, 1, "slot %s is declared but unknown: the emitter supplies no such slot", R.declared[d]);
+    /* and the declaration lists what the template uses, nothing more */
+    for (size_t d = 0; d < R.ndeclared && rc == VIGEN_OK; d++)
+        if (R.decl_used[d] == 0) rc = fail(&R, 1, "slot %s is declared but never used", R.declared[d]);
+    for (size_t d = 0; d < R.ndeclared; d++) free(R.declared[d]);
+    free(R.declared);
+    free(R.decl_used);
+    if (rc != VIGEN_OK) { vigen_strbuf_clear(&sb); return rc; }
+    *out = sb.data;
     return VIGEN_OK;
 }
 
@@ -187,36 +345,110 @@ static char *read_whole_file(const char *path)
     if (f == NULL) return NULL;
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
+    vigen_strbuf_append(&sb, "");
     char buf[4096];
     size_t n;
     while ((n = fread(buf, 1, sizeof buf, f)) > 0) vigen_strbuf_appendn(&sb, buf, n);
     int bad = ferror(f);
     fclose(f);
     if (bad) { vigen_strbuf_clear(&sb); return NULL; }
-    if (sb.data == NULL) return vigen_strdup("");
     return sb.data;
 }
 
-int vigen_template_render_file(char **out, const char *path, const char *data_lua, vigen_error *err)
+int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, vigen_error *err)
 {
     *out = NULL;
     char *text = read_whole_file(path);
-    if (text == NULL) return vigen_error_set(err, VIGEN_E_IO, "cannot read template %s (set VIGEN_TEMPLATE_DIR to the templates/ directory)", path);
-    const char *base = strrchr(path, '/');
-    int rc = vigen_template_render(out, text, base ? base + 1 : path, data_lua, err);
+    if (text == NULL)
+        return vigen_error_set(err, VIGEN_E_IO, "cannot read template %s (set VIGEN_TEMPLATE_DIR to the templates/ directory)", path);
+    int rc = vigen_template_render(out, text, path, slots, err);
     free(text);
     return rc;
 }
 
-const char *vigen_template_dir(void)
+/* ------------------------------------------------------- template lookup */
+
+static int is_dir(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+#if defined(__linux__)
+/* The directory of the running executable (heap string), or NULL. */
+static char *exe_dir(void)
+{
+    size_t cap = 256;
+    for (;;) {
+        char *buf = malloc(cap);
+        if (buf == NULL) return NULL;
+        ssize_t n = readlink("/proc/self/exe", buf, cap);
+        if (n < 0) { free(buf); return NULL; }
+        if ((size_t)n < cap) {
+            buf[n] = '\0';
+            char *slash = strrchr(buf, '/');
+            if (slash == NULL) { free(buf); return NULL; }
+            if (slash == buf) slash[1] = '\0';
+            else *slash = '\0';
+            return buf;
+        }
+        free(buf);
+        cap *= 2;
+    }
+}
+
+static int same_dir(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+}
+
+/* Whether directory dir (an absolute path) is top or lies below it. */
+static int within_dir(const char *dir, const char *top)
+{
+    char *d = vigen_strdup(dir);
+    int found = 0;
+    for (;;) {
+        if (same_dir(d, top)) { found = 1; break; }
+        char *slash = strrchr(d, '/');
+        if (slash == NULL || slash == d) break;
+        *slash = '\0';
+    }
+    free(d);
+    return found;
+}
+#endif
+
+/* The tests built in the build directory must never read an installed copy,
+ * and a relocated install prefix must still find its own templates: hence
+ * the executable's location decides before the configured prefix. */
+char *vigen_template_dir(const char *variant)
 {
     const char *env = getenv("VIGEN_TEMPLATE_DIR");
-    if (env && *env) return env;
-#if defined(VIGEN_TEMPLATE_DIR)
-    return VIGEN_TEMPLATE_DIR;
-#elif defined(VIGEN_SOURCE_DIR)
-    return VIGEN_SOURCE_DIR "/templates";
+    if (env && *env) return vigen_strdup_printf("%s/%s", env, variant);
+#if defined(__linux__) && defined(VIGEN_TEMPLATE_INSTALL_RELDIR)
+    char *exe = exe_dir();
+    int in_build_tree = 0;
+#if defined(VIGEN_BINARY_DIR)
+    in_build_tree = exe != NULL && within_dir(exe, VIGEN_BINARY_DIR);
+#endif
+    if (exe != NULL && !in_build_tree) {
+        char *dir = vigen_strdup_printf("%s/%s/%s", exe, VIGEN_TEMPLATE_INSTALL_RELDIR, variant);
+        if (is_dir(dir)) { free(exe); return dir; }
+        free(dir);
+    }
+    free(exe);
+#if defined(VIGEN_TEMPLATE_INSTALL_DIR)
+    if (!in_build_tree) {
+        char *dir = vigen_strdup_printf("%s/%s", VIGEN_TEMPLATE_INSTALL_DIR, variant);
+        if (is_dir(dir)) return dir;
+        free(dir);
+    }
+#endif
+#endif
+#if defined(VIGEN_SOURCE_DIR)
+    return vigen_strdup_printf("%s/%s", VIGEN_SOURCE_DIR "/templates", variant);
 #else
-    return "templates";
+    return vigen_strdup_printf("templates/%s", variant);
 #endif
 }

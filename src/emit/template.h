@@ -1,32 +1,30 @@
-/* template.h — the small template mechanism `vigen emit` renders C with.
+/* template.h — the template engine `vigen emit` renders C with, its slot
+ * sets, and where the templates live.
  *
- * A template is ordinary, readable C (templates/NAME.in) with two kinds of
- * marks:
+ * A template (templates/<variant>/<file>.in) is readable C with a few marks.
+ * It opens with a comment declaring every slot it uses:
  *
- *   //$ <Lua statement>     a whole line (leading blanks allowed) of Lua code:
- *                           loops and conditionals over the data, e.g.
- *                               //$ for i = 1, s do
- *                               ...C lines repeated per stage...
- *                               //$ end
- *                           The line itself produces no output.
- *   ${<Lua expression>}     a slot inside a C line, replaced by the value of
- *                           the expression: a string, or a Lua integer.  Lua
- *                           floats, booleans and nil are refused (a float's
- *                           text is not a reproducible literal: coefficients
- *                           arrive as strings).  The expression may contain
- *                           braces only when they balance.
+ *     /+ vigen-template slots: NAME REAL STAGES SWEEP_EVALS EXPLICIT +/
  *
- * Every other line is copied with its newline.  The names visible in a
- * template are the fields of the data table, then the standard Lua functions
- * of the base, string, table and math libraries (no io, os, load, require);
- * reading any other global is an error, which catches typos.  Error messages
- * carry the template's file name and line.
+ * (with '*' for '+'; the comment may span lines and is not copied to the
+ * output).  Slot names are [A-Z][A-Z0-9_]*.  The marks:
  *
- * The data table comes as Lua source text ("return { s = 2, NAME = 'x', ... }")
- * that the emitter writes with vigen_template_quote for every string, so the
- * data can never be read as code.  Rendering is deterministic: the template
- * sees only the data, and iteration order is the template's own business
- * (templates use numeric loops or ipairs, never pairs).
+ *   @NAME@          inline: replaced by the text of slot NAME.
+ *   <prefix>@@NAME@@
+ *                   a block, ending its line: replaced by the lines of slot
+ *                   NAME, each preceded by <prefix> (the indentation, or a
+ *                   comment's " * "); no lines, no output.
+ *   @if NAME@, @if !NAME@, @else@, @end@
+ *                   alone on a line (blanks around allowed): the lines up to
+ *                   @else@ or @end@ are kept when flag NAME is on (off with
+ *                   "!"); sections nest.
+ *
+ * Every other character is copied as it is.  The contract is checked both
+ * ways, on every line (those of sections that are off too): a mark naming a
+ * slot that the declaration leaves out, a declared slot the emitter does not
+ * supply or no mark uses, a slot used as the wrong kind and a malformed mark
+ * are errors (VIGEN_E_TEMPLATE) naming the template file, the line and the
+ * slot.  Rendering depends on the template and the slots only.
  */
 #ifndef VIGEN_TEMPLATE_H
 #define VIGEN_TEMPLATE_H
@@ -34,24 +32,57 @@
 #include <stddef.h>
 #include "vigen/error.h"
 
-/* Renders template text (named `chunkname` in messages, e.g. "stepper.c.in")
- * with the data table returned by the Lua chunk `data_lua`.  On success *out
- * is a heap string (free with free()).  Errors: VIGEN_E_SYNTAX (template or
- * data is not valid Lua), VIGEN_E_LUA (a slot or statement failed at run
- * time), VIGEN_E_MEMORY. */
-int vigen_template_render(char **out, const char *template_text, const char *chunkname,
-                          const char *data_lua, vigen_error *err);
+enum { VIGEN_SLOT_TEXT, VIGEN_SLOT_LINES, VIGEN_SLOT_FLAG };
 
-/* Like vigen_template_render but reads the template from path. */
-int vigen_template_render_file(char **out, const char *path, const char *data_lua, vigen_error *err);
+typedef struct {
+    char *name;
+    int kind;        /* VIGEN_SLOT_* */
+    char *text;      /* TEXT */
+    char **lines;    /* LINES (without newlines) */
+    size_t nlines, cap;
+    int on;          /* FLAG */
+} vigen_slot;
 
-/* Appends text to sb as a Lua string literal that reads back as exactly text
- * (every byte outside printable ASCII, and quote and backslash, escaped). */
-void vigen_template_quote(vigen_strbuf *sb, const char *text);
+/* The values a slot builder supplies for one rendering (names unique: a later
+ * definition of a name replaces the earlier one). */
+typedef struct {
+    vigen_slot **v;   /* each slot allocated on its own: a vigen_slot * stays valid */
+    size_t n, cap;
+} vigen_slots;
 
-/* The directory holding the stepper templates: $VIGEN_TEMPLATE_DIR when set,
- * else VIGEN_TEMPLATE_DIR if defined at build time, else
- * VIGEN_SOURCE_DIR "/templates".  Returns a static string. */
-const char *vigen_template_dir(void);
+void vigen_slots_init(vigen_slots *s);
+void vigen_slots_clear(vigen_slots *s);
+void vigen_slots_text(vigen_slots *s, const char *name, const char *text);
+void vigen_slots_textf(vigen_slots *s, const char *name, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+void vigen_slots_flag(vigen_slots *s, const char *name, int on);
+/* A block slot with no lines yet; append with vigen_slot_line. */
+vigen_slot *vigen_slots_lines(vigen_slots *s, const char *name);
+void vigen_slot_line(vigen_slot *slot, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+const vigen_slot *vigen_slots_find(const vigen_slots *s, const char *name);
+
+/* Renders template text (named `file` in messages) with the slots.  On
+ * success *out is a heap string.  VIGEN_E_TEMPLATE: the template and the
+ * slots do not match (the message names file:line and the slot). */
+int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
+                          vigen_error *err);
+
+/* Like vigen_template_render but reads the template from path (VIGEN_E_IO
+ * when it cannot). */
+int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, vigen_error *err);
+
+/* The directory of a variant's templates (heap string): <root>/<variant>,
+ * root being $VIGEN_TEMPLATE_DIR when set; else, for an installed vigen (an
+ * executable outside its build directory), the templates installed with it,
+ * found relative to the executable and then at the configured prefix; else
+ * the source tree's templates/. */
+char *vigen_template_dir(const char *variant);
 
 #endif

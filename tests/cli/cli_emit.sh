@@ -3,7 +3,7 @@
 # byte-identical reruns, sanitised names, refusal of too few digits (with
 # advice) and --allow-inexact (one summary warning), specs generated on the
 # fly, the warning for tableaux that are not symplectic or not consistent,
-# usage.
+# usage, and a template that breaks the slot contract.
 set -u
 VIGEN=$1
 SRC=$2
@@ -25,13 +25,13 @@ check '[ -z "$(ls "$T" | grep "\.tmp")" ]' "no temporary files left"
 check '[ -f "$T/m____x__int_y.c" ] && [ ! -e "$T/../x; int y.c" ]' "hostile --name sanitised"
 
 "$VIGEN" emit "$SRC/tests/data/emit/gauss2_20digits.lua" --name q --real float128 -o "$T" -q 2>"$T/err.txt"
-check '[[ $? == [23] ]] && grep -q "digits" "$T/err.txt" && [ ! -f "$T/q.c" ]' "too few digits for float128 refused"
+check '[ $? -eq 2 ] && grep -q "digits" "$T/err.txt" && [ ! -f "$T/q.c" ]' "too few digits for float128 refused"
 # The default output of vigen generate (34 digits) as float128, and a
 # 16-digit textbook tableau as double: refused, naming the file and the entry
 # and saying what to do; --allow-inexact gives one summary warning.
 "$VIGEN" generate "$SRC/tableaux/specs/gauss_legendre_s3.lua" -q -o "$T/g3_34.lua"
 "$VIGEN" emit "$T/g3_34.lua" --name q --real float128 -o "$T" -q 2>"$T/err.txt"
-check '[[ $? == [23] ]] && [ ! -f "$T/q.c" ]' "34 digits as float128: refused, exit 2 (or 3: precision)"
+check '[ $? -eq 2 ] && [ ! -f "$T/q.c" ]' "34 digits as float128: refused, exit 2 (the data are too short)"
 check 'grep -q "^vigen emit: $T/g3_34.lua: c\[1\] = 0.112701665379258311482073460021760[0-9]* is not known well enough to round it correctly to 113 bits (float128)" "$T/err.txt"' "34 digits as float128: message names file and entry"
 check 'grep -q "vigen generate SPEC --digits 60. (or more)" "$T/err.txt" && grep -q "emit the spec itself" "$T/err.txt" && grep -q "give the entry exactly" "$T/err.txt" && grep -q "pass --allow-inexact to round the decimals as written" "$T/err.txt"' "34 digits as float128: says what to do"
 "$VIGEN" emit "$T/g3_34.lua" --name q --real float128 -o "$T" -q --allow-inexact 2>"$T/err.txt"
@@ -41,7 +41,7 @@ check 'grep -q "g3_34.lua: --allow-inexact: rounded 24 entries to float128 (113 
 check '[ "$(grep -o "b\[1\]" "$T/err.txt" | wc -l)" -le 1 ] && ! grep -q "rounding the value as written" "$T/err.txt"' "--allow-inexact: no entry twice, no per-entry warnings"
 check 'grep -q "vigen emit g3_34.lua --name q --real float128 --allow-inexact" "$T/q.c"' "--allow-inexact recorded in the header"
 "$VIGEN" emit "$SRC/tableaux/published/blanes_moan_s6_4.lua" --name bm -o "$T" -q 2>"$T/err.txt"
-check '[[ $? == [23] ]] && grep -q "^vigen emit: .*blanes_moan_s6_4.lua: c\[1\] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits (double): give the entry exactly .* or with 40 or more significant digits.*pass --allow-inexact" "$T/err.txt"' "16-digit tableau as double: refused with the same advice"
+check '[ $? -eq 2 ] && grep -q "^vigen emit: .*blanes_moan_s6_4.lua: c\[1\] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits (double): give the entry exactly .* or with 40 or more significant digits.*pass --allow-inexact" "$T/err.txt"' "16-digit tableau as double: refused with the same advice"
 "$VIGEN" emit "$SRC/tableaux/published/blanes_moan_s6_4.lua" --name bm -o "$T" -q --allow-inexact 2>"$T/err.txt"
 check '[ $? -eq 0 ] && [ "$(grep -c "allow-inexact" "$T/err.txt")" -eq 1 ] && [ "$(grep -c "warning" "$T/err.txt")" -eq 1 ]' "16-digit tableau, --allow-inexact: one warning"
 
@@ -129,6 +129,15 @@ check '[ $? -eq 0 ] && grep -q "claims order 3, which is false (the order condit
 sed 's/order = 6/order = 4/' "$T/g2_order6.lua" >"$T/g2_order4.lua"
 "$VIGEN" emit "$T/g2_order4.lua" --name g4c -o "$T" -q 2>"$T/err.txt"
 check '[ $? -eq 0 ] && [ ! -s "$T/err.txt" ]' "true order claim: no warning"
+
+# A template that breaks the slot contract: exit 3, one line naming the
+# template file, the line and the slot; nothing written.
+mkdir -p "$T/tpl/prk"
+cp "$SRC/templates/prk/stepper.h.in" "$T/tpl/prk/"
+sed 's|^#include <float.h>$|#include <float.h> /* @ORDRE@ */|' "$SRC/templates/prk/stepper.c.in" >"$T/tpl/prk/stepper.c.in"
+line=$(grep -n "@ORDRE@" "$T/tpl/prk/stepper.c.in" | cut -d: -f1)
+VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
+check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "tpl/prk/stepper.c.in:$line: slot ORDRE is used but not declared" "$T/err.txt"' "template breaking the slot contract: refused, file, line and slot named"
 
 rm -rf "$T"
 exit $fail

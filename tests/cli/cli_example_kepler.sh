@@ -21,7 +21,7 @@ die() { echo "FAIL: $1"; [ -f "$T/log" ] && tail -30 "$T/log"; exit 1; }
 
 [ -f "$BUILD/CMakeCache.txt" ] || die "no CMakeCache.txt next to $VIGEN"
 cmake --install "$BUILD" --prefix "$T/prefix" >"$T/log" 2>&1 || die "cmake --install"
-for f in bin/vigen include/vigen/runtime.h share/vigen/templates/stepper.c.in \
+for f in bin/vigen include/vigen/runtime.h share/vigen/templates/prk/stepper.c.in \
          lib/cmake/vigen/vigenConfig.cmake lib/cmake/vigen/VigenStepper.cmake; do
     check '[ -f "$T/prefix/$f" ]' "installed $f"
 done
@@ -40,7 +40,7 @@ check 'cmp -s "$T/gauss2.c" "$T/build/vigen/kepler_gauss2/gauss2.c"' "installed 
 
 # the installed vigen reads the installed templates
 mkdir -p "$T/mark"
-echo '/* installed template */' >>"$T/prefix/share/vigen/templates/stepper.h.in"
+echo '/* installed template */' >>"$T/prefix/share/vigen/templates/prk/stepper.h.in"
 "$T/prefix/bin/vigen" emit "$T/src/gauss2.lua" --name g -o "$T/mark" -q
 check 'tail -1 "$T/mark/g.h" | grep -q "installed template"' "installed vigen uses share/vigen/templates"
 

@@ -164,7 +164,7 @@ static void test_tableau(const char *path, const char *runtime_lib)
     vigen_emit_options opt = { ident, real, "input.lua", 0 };
     char *h1 = NULL, *c1 = NULL, *h2 = NULL, *c2 = NULL, *id1 = NULL, *id2 = NULL;
     int rc = vigen_emit_render(&t, &opt, &h1, &c1, &id1, &err);
-    if (rc == VIGEN_E_PRECISION) {
+    if (rc == VIGEN_E_INEXACT) {
         /* decimals as published, too short to round correctly: refused with a
          * message, accepted with allow_inexact */
         CHECK(err.message && strstr(err.message, "digits") != NULL);
@@ -298,7 +298,7 @@ static void test_rounding(void)
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     free(h); free(c); free(id);
     opt.real = VIGEN_REAL_FLOAT128;
-    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_E_PRECISION);
+    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_E_INEXACT);
     CHECK(err.message && strstr(err.message, "digits") != NULL);
     vigen_error_clear(&err);
     vigen_tableau_clear(&t);
@@ -506,7 +506,7 @@ static void test_inexact(void)
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK && audit_count == 0);
     free(h); free(c); free(id);
     opt.real = VIGEN_REAL_FLOAT128;
-    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_E_PRECISION && h == NULL && audit_count == 0);
+    CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_E_INEXACT && h == NULL && audit_count == 0);
     const char *m = err.message ? err.message : "";
     CHECK_MSG(strstr(m, "c[1] = 0.1127016653792583114820734600217600 is not known well enough") != NULL &&
                   strstr(m, "113 bits (float128)") != NULL && strstr(m, "generated with 34 digits") != NULL &&
@@ -534,7 +534,7 @@ static void test_inexact(void)
     vigen_strbuf_append(&audit_text, "");
     if (vigen_tableau_load(&t, "tableaux/published/blanes_moan_s6_4.lua", NULL, &err) == VIGEN_OK) {
         vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0 };
-        CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_E_PRECISION);
+        CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_E_INEXACT);
         m = err.message ? err.message : "";
         CHECK_MSG(strstr(m, "c[1] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits") != NULL &&
                       strstr(m, "give the entry exactly") != NULL && strstr(m, "40 or more significant digits") != NULL &&

@@ -1,0 +1,383 @@
+/* prk_code.c — the PRK variant's slot builder, second half: the C lines of
+ * the stepper's blocks (stage loops, Newton blocks, extrapolation, the
+ * explicit step) and the flags of its sections, from the rounded
+ * coefficients of prk_data.c.  Every line is written here, the templates
+ * only place them. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "emit/prk.h"
+
+/* ------------------------------------------------------ expression texts */
+
+/* Whether a literal is exactly +1 or a (signed) power of two, read from its
+ * text: multiplying by 1 is left out and a common power-of-two factor is
+ * taken out of a sum, both exact.  The float128 spelling of a power of two
+ * other than 1 is left as it is. */
+static int is_one(const char *c)
+{
+    if (*c == '(') c++;
+    while (*c == '_' || *c == ' ' || (*c >= 'A' && *c <= 'Z') || (*c >= 'a' && *c <= 'z')) c++;
+    if (strncmp(c, "0x1p+0", 6) != 0) return 0;
+    c += 6;
+    if (*c == 'L' || *c == 'Q') c++;
+    if (*c == ')') c++;
+    return *c == '\0';
+}
+
+static int is_pow2(const char *c)
+{
+    if (*c == '(') c++;
+    if (*c == '-') c++;
+    if (strncmp(c, "0x1p", 4) != 0) return 0;
+    c += 4;
+    if (*c != '-' && *c != '+') return 0;
+    c++;
+    if (!(*c >= '0' && *c <= '9')) return 0;
+    while (*c >= '0' && *c <= '9') c++;
+    if (*c == 'L' || *c == 'Q') c++;
+    if (*c == ')') c++;
+    return *c == '\0';
+}
+
+/* coef * x (heap), x alone for an exact 1, NULL for "0". */
+static char *times(const char *coef, const char *x)
+{
+    if (strcmp(coef, "0") == 0) return NULL;
+    if (is_one(coef)) return vigen_strdup(x);
+    return vigen_strdup_printf("%s * %s", coef, x);
+}
+
+/* "t0 + c h" for a node c, "t0" when it is 0. */
+static char *at_time(const char *c)
+{
+    char *d = times(c, "h");
+    char *r = d ? vigen_strdup_printf("t0 + %s", d) : vigen_strdup("t0");
+    free(d);
+    return r;
+}
+
+/* "c1 * <pre>1<post> + c2 * <pre>2<post> ..." over the nonzero coefficients
+ * (NULL entries); NULL when there are none. */
+static char *lin(char *const *coefs, slong n, const char *pre, const char *post)
+{
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    for (slong j = 0; j < n; j++) {
+        if (coefs[j] == NULL) continue;
+        vigen_strbuf_printf(&sb, "%s%s * %s%ld%s", sb.len ? " + " : "", coefs[j], pre, (long)(j + 1), post);
+    }
+    return sb.data;
+}
+
+typedef struct {
+    const char *coef;
+    char src[40];
+} hterm;
+
+/* h times the sum of the terms; when every coefficient is the same power of
+ * two c, written (c * h) * (x1 + x2 + ...): the same value bit for bit with
+ * one multiplication per element instead of one per term. */
+static char *hterms(const hterm *l, slong n)
+{
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    vigen_strbuf_append(&sb, "");
+    int same = n > 0 && is_pow2(l[0].coef);
+    for (slong k = 0; k < n && same; k++)
+        if (strcmp(l[k].coef, l[0].coef) != 0) same = 0;
+    if (!same) {
+        vigen_strbuf_append(&sb, "h * (");
+        for (slong k = 0; k < n; k++) vigen_strbuf_printf(&sb, "%s%s * %s", k ? " + " : "", l[k].coef, l[k].src);
+        vigen_strbuf_append(&sb, ")");
+        return sb.data;
+    }
+    char *ch = times(l[0].coef, "h");
+    if (strcmp(ch, "h") == 0) vigen_strbuf_append(&sb, "h");
+    else vigen_strbuf_printf(&sb, "(%s)", ch);
+    free(ch);
+    if (n == 1) {
+        vigen_strbuf_printf(&sb, " * %s", l[0].src);
+        return sb.data;
+    }
+    vigen_strbuf_append(&sb, " * (");
+    for (slong k = 0; k < n; k++) vigen_strbuf_printf(&sb, "%s%s", k ? " + " : "", l[k].src);
+    vigen_strbuf_append(&sb, ")");
+    return sb.data;
+}
+
+/* h times the sum of v_j <prefix>j[k] over the nonzero v_j; NULL if none. */
+static char *hsum_vec(char *const *v, slong s, const char *prefix)
+{
+    hterm *l = calloc((size_t)s, sizeof *l);
+    if (l == NULL) abort();
+    slong n = 0;
+    for (slong j = 0; j < s; j++) {
+        if (v[j] == NULL) continue;
+        l[n].coef = v[j];
+        snprintf(l[n++].src, sizeof l[0].src, "%s%ld[k]", prefix, (long)(j + 1));
+    }
+    char *r = n > 0 ? hterms(l, n) : NULL;
+    free(l);
+    return r;
+}
+
+static char *hsum_op(const emit_xop *op)
+{
+    hterm *l = calloc((size_t)(op->nterms > 0 ? op->nterms : 1), sizeof *l);
+    if (l == NULL) abort();
+    for (slong k = 0; k < op->nterms; k++) {
+        l[k].coef = op->terms[k].coef;
+        snprintf(l[k].src, sizeof l[k].src, "X%ld[k]", op->terms[k].src);
+    }
+    char *r = hterms(l, op->nterms);
+    free(l);
+    return r;
+}
+
+/* Whether column j of m has a nonzero entry (the stage's gradient is read). */
+static int colused(char *const *m, slong s, slong j)
+{
+    for (slong i = 0; i < s; i++)
+        if (m[i * s + j]) return 1;
+    return 0;
+}
+
+/* "<base> + h * (sum)" / "<base> - h * (sum)", or base alone. */
+static char *stage_sum(const char *base, char sign, char *const *row, slong s, const char *pre, const char *post)
+{
+    char *sum = lin(row, s, pre, post);
+    char *r = sum ? vigen_strdup_printf("%s %c h * (%s)", base, sign, sum) : vigen_strdup(base);
+    free(sum);
+    return r;
+}
+
+/* ---------------------------------------------------------- the implicit path */
+
+static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, const char *R)
+{
+    slong s = K->s;
+    vigen_slot *sw = vigen_slots_lines(S, "SWEEP_EVALS");
+    vigen_slot *ptr = vigen_slots_lines(S, "STAGE_POINTERS");
+    vigen_slot *fg = vigen_slots_lines(S, "FP_G_EVALS");
+    vigen_slot *ff = vigen_slots_lines(S, "FP_F_EVALS");
+    for (slong i = 1; i <= s; i++) {
+        char *ti = at_time(K->c[i - 1]);
+        vigen_slot_line(sw, "%s_dHdp(w, %s, w->Q[%ld], w->P[%ld], w->F[%ld]);", N, ti, i - 1, i - 1, i - 1);
+        vigen_slot_line(sw, "%s_dHdq(w, %s, w->Q[%ld], w->P[%ld], w->G[%ld]);", N, ti, i - 1, i - 1, i - 1);
+        vigen_slot_line(ptr, "%s *const Q%ld = w->Q[%ld], *const P%ld = w->P[%ld];", R, i, i - 1, i, i - 1);
+        if (colused(K->a, s, i - 1)) vigen_slot_line(ptr, "const %s *const F%ld = w->F[%ld];", R, i, i - 1);
+        if (colused(K->at, s, i - 1)) vigen_slot_line(ptr, "const %s *const G%ld = w->G[%ld];", R, i, i - 1);
+        vigen_slot_line(fg, "%s_dHdq(w, %s, Q%ld, P%ld, w->G[%ld]);", N, ti, i, i, i - 1);
+        vigen_slot_line(ff, "%s_dHdp(w, %s, Q%ld, P%ld, w->F[%ld]);", N, ti, i, i, i - 1);
+        free(ti);
+    }
+
+    /* fixed point: the starting stage values, then the two half sweeps */
+    vigen_slot *st = vigen_slots_lines(S, "FP_START");
+    for (slong i = 1; i <= s; i++) {
+        char *v = stage_sum("qk", '+', K->a + (i - 1) * s, s, "F", "[k]");
+        char *u = stage_sum("pk", '-', K->at + (i - 1) * s, s, "G", "[k]");
+        vigen_slot_line(st, "const %s v%ld = %s;", R, i, v);
+        vigen_slot_line(st, "const %s u%ld = %s;", R, i, u);
+        free(v);
+        free(u);
+    }
+    for (slong i = 1; i <= s; i++) {
+        vigen_slot_line(st, "Q%ld[k] = v%ld;", i, i);
+        vigen_slot_line(st, "P%ld[k] = u%ld;", i, i);
+        vigen_slot_line(st, "d = %s_abs(v%ld); sq = d > sq ? d : sq;", N, i);
+        vigen_slot_line(st, "d = %s_abs(u%ld); sp = d > sp ? d : sp;", N, i);
+    }
+    static const struct { const char *slot, *load, *grad, *var, *base, *inc, *arr; char sign; int q; } half[] = {
+        { "FP_P_SWEEP", "g", "G", "u", "pk", "dp", "P", '-', 0 },
+        { "FP_Q_SWEEP", "f", "F", "v", "qk", "dq", "Q", '+', 1 },
+    };
+    for (int h = 0; h < 2; h++) {
+        vigen_slot *b = vigen_slots_lines(S, half[h].slot);
+        char *const *m = half[h].q ? K->a : K->at;
+        for (slong i = 1; i <= s; i++)
+            if (colused(m, s, i - 1)) vigen_slot_line(b, "const %s %s%ld = %s%ld[k];", R, half[h].load, i, half[h].grad, i);
+        for (slong i = 1; i <= s; i++) {
+            char *x = stage_sum(half[h].base, half[h].sign, m + (i - 1) * s, s, half[h].load, "");
+            vigen_slot_line(b, "const %s %s%ld = %s;", R, half[h].var, i, x);
+            free(x);
+        }
+        for (slong i = 1; i <= s; i++)
+            vigen_slot_line(b, "%s = %s_inc_add(%s, %s%ld - %s%ld[k]);", half[h].inc, N, half[h].inc, half[h].var, i,
+                            half[h].arr, i);
+        for (slong i = 1; i <= s; i++) vigen_slot_line(b, "%s%ld[k] = %s%ld;", half[h].arr, i, half[h].var, i);
+    }
+
+    /* simplified Newton */
+    vigen_slot *nb = vigen_slots_lines(S, "NEWTON_BLOCKS");
+    for (slong i = 0; i < s; i++)
+        for (slong j = 0; j < s; j++) {
+            const char *a = K->a[i * s + j], *at = K->at[i * s + j];
+            if (a || at)
+                vigen_slot_line(nb, "vigen_newton_matrix_block(w->nw, %ld, %ld, (double)(h * %s), (double)(h * %s));",
+                                (long)i, (long)j, a ? a : "0", at ? at : "0");
+        }
+    vigen_slot *ns = vigen_slots_lines(S, "NEWTON_START");
+    vigen_slot *nr = vigen_slots_lines(S, "NEWTON_RHS");
+    vigen_slot *nu = vigen_slots_lines(S, "NEWTON_UPDATE");
+    for (slong i = 1; i <= s; i++) {
+        char *q = stage_sum("q[k]", '+', K->a + (i - 1) * s, s, "F", "[k]");
+        char *p = stage_sum("p[k]", '-', K->at + (i - 1) * s, s, "G", "[k]");
+        vigen_slot_line(ns, "Q%ld[k] = %s;", i, q);
+        vigen_slot_line(ns, "P%ld[k] = %s;", i, p);
+        vigen_slot_line(nr, "rhs[%ld * n + k] = (double)(%s - Q%ld[k]);", i - 1, q, i);
+        vigen_slot_line(nr, "rhs[%ld * n + k] = (double)(%s - P%ld[k]);", s + i - 1, p, i);
+        free(q);
+        free(p);
+        vigen_slot_line(nu, "d = (%s)rhs[%ld * n + k];", R, i - 1);
+        vigen_slot_line(nu, "Q%ld[k] += d;", i);
+        vigen_slot_line(nu, "dq = %s_inc_add(dq, d);", N);
+        vigen_slot_line(nu, "sq = %s_max(sq, %s_abs(Q%ld[k]));", N, N, i);
+        vigen_slot_line(nu, "d = (%s)rhs[%ld * n + k];", R, s + i - 1);
+        vigen_slot_line(nu, "P%ld[k] += d;", i);
+        vigen_slot_line(nu, "dp = %s_inc_add(dp, d);", N);
+        vigen_slot_line(nu, "sp = %s_max(sp, %s_abs(P%ld[k]));", N, N, i);
+    }
+
+    /* starting values: extrapolation from the previous step, or copies */
+    vigen_slot *ip = vigen_slots_lines(S, "IMPLICIT_POINTERS");
+    vigen_slot *sc = vigen_slots_lines(S, "START_COPIES");
+    vigen_slot *ec = vigen_slots_lines(S, "EXTRAP_COPY");
+    vigen_slot *ew = vigen_slots_lines(S, "EXTRAP_WEIGHTS");
+    vigen_slot *ea = vigen_slots_lines(S, "EXTRAP_APPLY");
+    for (slong i = 1; i <= s; i++) {
+        vigen_slot_line(ip, "%s *const F%ld = w->F[%ld], *const G%ld = w->G[%ld];", R, i, i - 1, i, i - 1);
+        vigen_slot_line(ip, "const %s *const Fo%ld = w->Fo[%ld], *const Go%ld = w->Go[%ld];", R, i, i - 1, i, i - 1);
+        if (i >= 2) {
+            vigen_slot_line(sc, "memcpy(F%ld, F1, n * sizeof(%s));", i, R);
+            vigen_slot_line(sc, "memcpy(G%ld, G1, n * sizeof(%s));", i, R);
+        }
+        vigen_slot_line(ec, "memcpy(F%ld, Fo%ld, n * sizeof(%s));", i, i, R);
+        vigen_slot_line(ec, "memcpy(G%ld, Go%ld, n * sizeof(%s));", i, i, R);
+    }
+    vigen_slots_flag(S, "LAGRANGE", K->lagrange);
+    if (K->lagrange) {
+        for (slong i = 1; i <= s; i++) {
+            char *cr = times(K->c[i - 1], "r");
+            if (cr) vigen_slot_line(ew, "const %s x%ld = 1 + %s;", R, i, cr);
+            else vigen_slot_line(ew, "const %s x%ld = 1;", R, i);
+            free(cr);
+        }
+        for (slong i = 1; i <= s; i++)
+            for (slong j = 1; j <= s; j++) {
+                vigen_strbuf f;
+                vigen_strbuf_init(&f);
+                vigen_strbuf_append(&f, "");
+                for (slong m = 1; m <= s; m++)
+                    if (m != j)
+                        vigen_strbuf_printf(&f, "%s(x%ld - %s) * %s", f.len ? " * " : "", i, K->c[m - 1],
+                                            K->inv[(j - 1) * s + (m - 1)]);
+                vigen_slot_line(ew, "const %s w%ld_%ld = %s;", R, i, j, f.data);
+                vigen_strbuf_clear(&f);
+            }
+        char **wrow = calloc((size_t)s, sizeof *wrow);
+        if (wrow == NULL) abort();
+        for (slong i = 1; i <= s; i++) {
+            for (slong j = 1; j <= s; j++) wrow[j - 1] = vigen_strdup_printf("w%ld_%ld", i, j);
+            char *fo = lin(wrow, s, "Fo", "[k]"), *go = lin(wrow, s, "Go", "[k]");
+            vigen_slot_line(ea, "F%ld[k] = %s;", i, fo);
+            vigen_slot_line(ea, "G%ld[k] = %s;", i, go);
+            free(fo);
+            free(go);
+            for (slong j = 0; j < s; j++) free(wrow[j]);
+        }
+        free(wrow);
+    }
+
+    /* the update of q and p */
+    char *uq = hsum_vec(K->b, s, "F"), *up = hsum_vec(K->bt, s, "G");
+    vigen_slots_flag(S, "HAS_UPDATE_Q", uq != NULL);
+    vigen_slots_flag(S, "HAS_UPDATE_P", up != NULL);
+    vigen_slots_text(S, "UPDATE_Q", uq ? uq : "");
+    vigen_slots_text(S, "UPDATE_P", up ? up : "");
+    free(uq);
+    free(up);
+}
+
+/* ---------------------------------------------------------- the explicit path */
+
+static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *N, const char *R, const char *SFX)
+{
+    vigen_slots_text(S, "EXPLICIT_WHAT", X->mode == EMIT_EXPLICIT_GENERAL ? "any H" : "separable H");
+    vigen_slots_textf(S, "NEVALS_F", "%ld", X->nevals_f);
+    vigen_slots_textf(S, "NEVALS_G", "%ld", X->nevals_g);
+    vigen_slots_text(S, "FSAL_NOTE", X->fsal ? ", first-same-as-last gradients reused" : "");
+    vigen_slots_flag(S, "COPY_Q0", X->copy_q0);
+    vigen_slots_flag(S, "COPY_P0", X->copy_p0);
+    vigen_slots_flag(S, "FSAL", X->fsal);
+    vigen_slot *xp = vigen_slots_lines(S, "X_POINTERS");
+    for (long x = 0; X->mode != EMIT_EXPLICIT_NONE && x < X->nx; x++)
+        vigen_slot_line(xp, "%s *restrict const X%ld = w->x[%ld];", R, x, x);
+    vigen_slot *sw = vigen_slots_lines(S, "FSAL_SWAPS");
+    for (int k = 0; k < X->nswaps; k++) {
+        vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][0], X->swaps[k][1]);
+        vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][1], X->swaps[k][0]);
+    }
+    vigen_slot *L = vigen_slots_lines(S, "EXPLICIT_OPS");
+    for (slong k = 0; k < X->nops; k++) {
+        const emit_xop *op = X->ops + k;
+        if (op->op == XOP_EVAL_F || op->op == XOP_EVAL_G) {
+            const char *fn = op->op == XOP_EVAL_F ? "dHdp" : "dHdq";
+            char *tm = op->time == XTIME_T0 ? vigen_strdup("t0") : op->time == XTIME_T1 ? vigen_strdup("t1")
+                                                                                      : at_time(op->tc);
+            const char *ind = op->fsal ? "    " : "";
+            if (op->fsal) {
+                vigen_slot_line(L, "if (w->fsal) {");
+                vigen_slot_line(L, "    w->stats.fsal_reuses++;");
+                vigen_slot_line(L, "} else {");
+            }
+            vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, X%ld);", ind, N, fn, tm, op->q, op->p, op->dst);
+            vigen_slot_line(L, "%sw->stats.%s_evals++;", ind, fn);
+            if (op->fsal) vigen_slot_line(L, "}");
+            free(tm);
+            continue;
+        }
+        char *ht = hsum_op(op);
+        switch (op->op) {
+        case XOP_STAGE_Q:
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = q0[k] + %s;", op->dst, ht);
+            break;
+        case XOP_STAGE_P:
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = p0[k] - %s;", op->dst, ht);
+            break;
+        default: {
+            /* the update of q (+) or p (-), compensated or not */
+            int isq = op->op == XOP_UPDATE_Q;
+            const char *x = isq ? "q" : "p";
+            char *arg = isq ? vigen_strdup(ht) : vigen_strdup_printf("-(%s)", ht);
+            vigen_slot_line(L, "if (kahan) {");
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] = vigen_twosum_update%s(%s[k], %s, &c%s[k]);", x,
+                            SFX, x, arg, x);
+            vigen_slot_line(L, "} else {");
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] %c= %s;", x, isq ? '+' : '-', ht);
+            vigen_slot_line(L, "}");
+            free(arg);
+            break;
+        }
+        }
+        free(ht);
+    }
+}
+
+void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, int real)
+{
+    static const char *const reals[] = { "double", "long double", "vigen_float128" };
+    static const char *const sfx[] = { "", "_ld", "_q" };
+    const emit_explicit *X = &K->X;
+    vigen_slots_flag(S, "EXPLICIT", X->mode != EMIT_EXPLICIT_NONE);
+    vigen_slots_flag(S, "IMPLICIT", X->mode != EMIT_EXPLICIT_GENERAL);
+    vigen_slots_textf(S, "EXPLICIT_SEPARABLE", "%d", X->mode != EMIT_EXPLICIT_NONE);
+    vigen_slots_textf(S, "NX", "%ld", X->nx);
+    /* arrays of length dim in the workspace block: Q, P, F, G, Fo, Go per
+     * stage, cq, cp, q0s, p0s, 6 for the finite-difference Hessian, and the
+     * explicit path's work arrays */
+    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 4 + 6 + X->nx);
+    implicit_blocks(S, K, name, reals[real]);
+    explicit_blocks(S, X, name, reals[real], sfx[real]);
+}
