@@ -1,4 +1,4 @@
-/* test_check.c — the certifying checker (generator/check.c) on methods whose
+/* test_check.c — the certifying checker (src/check/) on methods whose
  * properties are known from the literature, and on deliberately broken copies.
  *
  * Sources of the expected values (never this code's own output):
@@ -675,8 +675,8 @@ static void test_rk4(void)
     CHECK(claims == 1 && symp > 0);
     vigen_check_report_clear(&rep);
 
-    /* without any claim, every failing pair is still named (issue 3: "naming
-     * each failing pair"): with At = A the pairs are i <= j, and for RK4 all
+    /* without any claim, every failing pair is still named (the report
+     * names each failing pair): with At = A the pairs are i <= j, and for RK4 all
      * ten defects b_i a_ij + b_j a_ji - b_i b_j are nonzero (-1/36, 1/9,
      * -1/18, -1/36, -1/9, 1/18, -1/18, -1/9, 1/9, -1/36) */
     t.claim_symplectic = -1;

@@ -18,7 +18,7 @@
 #include "vigen/tableau.h"
 #include "testlib.h"
 
-/* What every emitted stepper must compile under (the portability rule). */
+/* What every emitted stepper must compile under (strict C11, warnings as errors). */
 #define HARNESS_CFLAGS "-std=c11 -Wall -Wextra -Wpedantic -Werror -Iruntime/include"
 
 static char harness_dir[256];

@@ -1,4 +1,4 @@
-/* test_trees.c — bicoloured rooted trees (generator/trees.c).
+/* test_trees.c — bicoloured rooted trees (src/check/trees.c).
  *
  * Independent sources:
  *  - counts per order: OEIS A038055 (= 2 * A000151, rooted trees with vertices
