@@ -62,7 +62,8 @@ int vigen_cmd_emit(const vigen_cli_args *args)
         real = real_types[k];
     }
     const char *base = strrchr(file, '/');
-    vigen_emit_options opt = { name, real, base ? base + 1 : file, args->value[VIGEN_OPT_emit_allow_inexact] != NULL };
+    vigen_emit_options opt = { .name = name, .real = real, .input_label = base ? base + 1 : file,
+                               .allow_inexact = args->value[VIGEN_OPT_emit_allow_inexact] != NULL };
 
     vigen_error err;
     vigen_error_init(&err);

@@ -2,6 +2,7 @@
  * `vigen version`, all rendered from the tables of commands.def and, for the
  * exit statuses, of status.def. */
 #include <string.h>
+#include "vigen/vigen.h"
 #include "cli.h"
 
 /* What each exit status means; the status codes that give it are listed
@@ -145,6 +146,6 @@ int vigen_cmd_help(const vigen_cli_args *args)
 int vigen_cmd_version(const vigen_cli_args *args)
 {
     (void)args;
-    printf("vigen %s\n", VIGEN_VERSION);
+    printf("vigen %s\n", vigen_version());
     return 0;
 }

@@ -79,6 +79,11 @@ typedef struct {
     int allow_inexact;       /* round the midpoint of a ball that straddles a rounding
                                 boundary (decimal entries with too few digits), with a
                                 warning, instead of refusing */
+    const char *template_dir;/* the folder holding templates/<variant>/; NULL: as the vigen
+                                command finds it ($VIGEN_TEMPLATE_DIR, beside the executable,
+                                the install prefix, the source tree).  A program linking
+                                libvigen from a moved prefix passes the package's
+                                vigen_TEMPLATE_DIR here */
 } vigen_emit_options;
 
 /* Certified digits with which `vigen emit` generates a spec for a target

@@ -24,10 +24,10 @@ const vigen_emit_variant *vigen_emit_variant_find(const char *name)
 }
 
 /* Renders the variant's two templates with the slots. */
-static int render_templates(const vigen_emit_variant *v, const vigen_slots *S, char **h_text, char **c_text,
-                            vigen_error *err)
+static int render_templates(const vigen_emit_variant *v, const char *top, const vigen_slots *S, char **h_text,
+                            char **c_text, vigen_error *err)
 {
-    char *dir = vigen_template_dir(v->dir);
+    char *dir = top ? vigen_strdup_printf("%s/%s", top, v->dir) : vigen_template_dir(v->dir);
     char *hp = vigen_strdup_printf("%s/stepper.h.in", dir);
     char *cp = vigen_strdup_printf("%s/stepper.c.in", dir);
     int rc = vigen_template_render_file(h_text, hp, S, err);
@@ -89,7 +89,7 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
         vigen_emit_precision_message(&E, opt, err);
         rc = err->code;
     }
-    if (rc == VIGEN_OK) rc = render_templates(variant, &slots, h_text, c_text, err);
+    if (rc == VIGEN_OK) rc = render_templates(variant, opt->template_dir, &slots, h_text, c_text, err);
     if (rc == VIGEN_OK) vigen_emit_report_marks(&E, opt);
     vigen_slots_clear(&slots);
     free(E.marks);
