@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <time.h>
 #include "method/galerkin.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 
 static double now(void)
 {

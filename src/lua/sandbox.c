@@ -12,11 +12,12 @@
  *     reset at every top-level call; once the budget is spent the hook fires on
  *     every instruction, so a script cannot swallow the error with pcall and
  *     carry on;
+ *   - the ball library (ball.c), its functions also as globals;
+ *   - the vocabulary of the kind of file, if the caller gives one (the method
+ *     layer gives method files the node and basis family constructors); the
+ *     text it returns is kept in the registry for the message below;
  *   - the globals table is strict: reading an unknown name is an error that
- *     lists the spec-file vocabulary;
- *   - the vocabulary: node and basis family constructors (one closure per name,
- *     the names taken from families.h, that is from nodes.def and basis.def)
- *     and the ball library (ball.c).
+ *     lists the vocabulary and the functions.
  *
  * The sandbox struct is the allocator's user data, so the hook and the
  * allocator reach it through lua_getallocf.
@@ -34,9 +35,11 @@
 #include "core/expr.h"
 #include "lua/float_text.h"
 #include "lua/sandbox.h"
-#include "method/families.h"
 
 #define MIB ((size_t)1 << 20)
+
+/* registry field: what the vocabulary of the file says about itself */
+#define VOCABULARY_KEY "vigen.vocabulary"
 
 struct vigen_sandbox {
     lua_State *L;
@@ -52,14 +55,6 @@ struct vigen_sandbox {
     char *display;                  /* file name for messages ("spec.lua") */
 };
 
-
-static char family_mt_key;          /* registry key of the family descriptor metatable */
-
-typedef struct {
-    int kind;
-    const char *family;
-    lua_Integer s;
-} family_desc;
 
 /* Process-wide defaults; the command line changes them with --max-memory and
  * --max-instructions (vigen_sandbox_limits_set_default). */
@@ -311,68 +306,6 @@ int vigen_sandbox_run_file(vigen_sandbox *sb, const char *path, vigen_error *err
     return code;
 }
 
-/* ------------------------------------------------------------------ vocabulary */
-
-int vigen_sandbox_get_family(lua_State *L, int idx, int *kind, const char **family, long *s)
-{
-    idx = lua_absindex(L, idx);
-    if (lua_type(L, idx) != LUA_TUSERDATA || !lua_checkstack(L, 2) || !lua_getmetatable(L, idx)) return 0;
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &family_mt_key);
-    int same = lua_rawequal(L, -1, -2);
-    lua_pop(L, 2);
-    if (!same) return 0;
-    const family_desc *d = lua_touserdata(L, idx);
-    if (kind) *kind = d->kind;
-    if (family) *family = d->family;
-    if (s) *s = (long)d->s;
-    return 1;
-}
-
-static int family_tostring(lua_State *L)
-{
-    const family_desc *d = lua_touserdata(L, 1);
-    lua_pushfstring(L, "%s(%I)", d->family, d->s);
-    return 1;
-}
-
-/* gauss_legendre(3), trig(5), ...: upvalues are the kind and the family name. */
-static int family_new(lua_State *L)
-{
-    int kind = (int)lua_tointeger(L, lua_upvalueindex(1));
-    const char *name = lua_touserdata(L, lua_upvalueindex(2));
-    const char *what = kind == VIGEN_FAMILY_NODES ? "the number of nodes" : "the number of basis functions";
-    int n = lua_gettop(L);
-    if (n == 0)
-        return luaL_error(L, "%s(s) needs %s s, a Lua integer >= 1, e.g. %s(3)", name, what, name);
-    if (n > 1)
-        return luaL_error(L, "%s(s) takes one argument, %s s, not %d", name, what, n);
-    if (lua_type(L, 1) != LUA_TNUMBER)
-        return luaL_error(L, "%s(s): s must be a Lua integer >= 1 (%s), not a %s", name, what, luaL_typename(L, 1));
-    if (!lua_isinteger(L, 1)) {
-        const char *f = vigen_push_float_text(L, lua_tonumber(L, 1));
-        return luaL_error(L, "%s(s): s must be a Lua integer >= 1 (%s), not the float %s", name, what, f);
-    }
-    lua_Integer s = lua_tointeger(L, 1);
-    if (s < 1) return luaL_error(L, "%s(s): s must be >= 1, not %I", name, s);
-    if (s > VIGEN_NODES_MAX_S)
-        return luaL_error(L, "%s(%I): s may be at most %d", name, s, (int)VIGEN_NODES_MAX_S);
-    family_desc *d = lua_newuserdatauv(L, sizeof *d, 0);
-    d->kind = kind;
-    d->family = name;
-    d->s = s;
-    lua_rawgetp(L, LUA_REGISTRYINDEX, &family_mt_key);
-    lua_setmetatable(L, -2);
-    return 1;
-}
-
-static void add_list(luaL_Buffer *b, const char *const *names)
-{
-    for (int i = 0; names[i]; i++) {
-        if (i) luaL_addstring(b, ", ");
-        luaL_addstring(b, names[i]);
-    }
-}
-
 /* __index of the globals table: pi (a fresh ball at the current precision) or an error. */
 static int strict_index(lua_State *L)
 {
@@ -393,11 +326,14 @@ static int strict_index(lua_State *L)
         luaL_addstring(&b, luaL_typename(L, 2));
         luaL_addstring(&b, " key)");
     }
-    luaL_addstring(&b, " (node families: ");
-    add_list(&b, vigen_nodes_family_names);
-    luaL_addstring(&b, "; basis families: ");
-    add_list(&b, vigen_basis_family_names);
-    luaL_addstring(&b, "; functions: ");
+    luaL_addstring(&b, " (");
+    if (lua_getfield(L, LUA_REGISTRYINDEX, VOCABULARY_KEY) == LUA_TSTRING) {
+        luaL_addvalue(&b);
+        luaL_addstring(&b, "; ");
+    } else {
+        lua_pop(L, 1);
+    }
+    luaL_addstring(&b, "functions: ");
     lua_pushfstring(L, "%s, %s, exact", vigen_expr_function_names(), vigen_expr_constant_names());
     luaL_addvalue(&b);
     luaL_addstring(&b, ")");
@@ -470,16 +406,6 @@ static int stderr_print(lua_State *L)
     return 0;
 }
 
-static void register_families(lua_State *L, int kind, const char *const *names)
-{
-    for (int i = 0; names[i]; i++) {
-        lua_pushinteger(L, kind);
-        lua_pushlightuserdata(L, (void *)names[i]);
-        lua_pushcclosure(L, family_new, 2);
-        lua_setglobal(L, names[i]);
-    }
-}
-
 static int setup_state(lua_State *L)
 {
     luaL_requiref(L, LUA_GNAME, luaopen_base, 1);
@@ -519,18 +445,6 @@ static int setup_state(lua_State *L)
     lua_call(L, 1, 0);
     lua_pop(L, 1);
 
-    /* family descriptors */
-    lua_newtable(L);
-    lua_pushliteral(L, "family");
-    lua_setfield(L, -2, "__name");
-    lua_pushcfunction(L, family_tostring);
-    lua_setfield(L, -2, "__tostring");
-    lua_pushboolean(L, 0);
-    lua_setfield(L, -2, "__metatable");
-    lua_rawsetp(L, LUA_REGISTRYINDEX, &family_mt_key);
-    register_families(L, VIGEN_FAMILY_NODES, vigen_nodes_family_names);
-    register_families(L, VIGEN_FAMILY_BASIS, vigen_basis_family_names);
-
     /* balls, and their functions as globals */
     vigen_ball_open(L);
     lua_getfield(L, LUA_REGISTRYINDEX, "vigen.ball.lib");
@@ -543,6 +457,14 @@ static int setup_state(lua_State *L)
     lua_getfield(L, -1, "exact");
     lua_setglobal(L, "exact");
     lua_pop(L, 1);
+
+    /* the vocabulary of the kind of file, and what it says about itself */
+    lua_CFunction vocabulary = lua_tocfunction(L, 1);
+    if (vocabulary) {
+        lua_pushcfunction(L, vocabulary);
+        lua_call(L, 0, 1);
+        lua_setfield(L, LUA_REGISTRYINDEX, VOCABULARY_KEY);
+    }
 
     /* strict globals */
     lua_pushglobaltable(L);
@@ -561,7 +483,8 @@ static int panic_handler(lua_State *L)
     return 0;   /* Lua aborts */
 }
 
-int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits, vigen_error *err)
+int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits, lua_CFunction vocabulary,
+                     vigen_error *err)
 {
     *out = NULL;
     vigen_sandbox_limits def;
@@ -584,7 +507,9 @@ int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits, v
     }
     lua_atpanic(sb->L, panic_handler);
     lua_pushcfunction(sb->L, setup_state);
-    int code = vigen_sandbox_pcall(sb, 0, 0, err);
+    if (vocabulary) lua_pushcfunction(sb->L, vocabulary);
+    else lua_pushnil(sb->L);
+    int code = vigen_sandbox_pcall(sb, 1, 0, err);
     if (code != VIGEN_OK) {
         vigen_error_prefix(err, "cannot set up the Lua sandbox: ");
         vigen_sandbox_free(sb);

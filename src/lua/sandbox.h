@@ -1,7 +1,7 @@
 /* sandbox.h — a Lua 5.4 state for untrusted spec and tableau files.
  *
- * vigen_sandbox_new is where every Lua state of vigen is made, so that spec
- * files and tableau files run with the same libraries, vocabulary and caps.
+ * vigen_sandbox_new is where every Lua state of vigen is made, so that every
+ * file runs with the same libraries and caps.
  *
  * Spec and tableau files are code written by someone else.  The sandbox opens
  * only the base, math, string and table libraries, removes dofile, loadfile,
@@ -12,12 +12,12 @@
  * raise it.  What would run outside the instruction cap is refused: __gc
  * finalisers (setmetatable with a __gc field) and the pattern functions
  * string.find/match/gmatch/gsub.  print writes to stderr.  Reading an unknown
- * global is an error listing the vocabulary below.
+ * global is an error listing the vocabulary and the functions.
  *
- * The sandbox also provides the vocabulary of spec files (node and basis family
- * constructors such as gauss_legendre(3) and trig(5), one per row of
- * src/method/nodes.def and basis.def) and the ball library (see ball.h) that
- * Lua basis functions compute with.
+ * The sandbox provides the ball library (see ball.h) that Lua basis functions
+ * compute with.  What a kind of file may name beyond that is its vocabulary,
+ * given by the layer that reads such files (the method layer's is the node and
+ * basis family constructors such as gauss_legendre(3) and trig(5)).
  */
 #ifndef VIGEN_SANDBOX_H
 #define VIGEN_SANDBOX_H
@@ -29,8 +29,12 @@
 
 typedef struct vigen_sandbox vigen_sandbox;
 
-
-int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits /* NULL: defaults */,
+/* A fresh state with these limits (NULL: defaults).  vocabulary (may be
+ * NULL) runs once while the state is set up, before its globals become
+ * strict: it sets the globals of the vocabulary and returns one string, what
+ * the unknown-name message lists before the functions, e.g.
+ *   spec.lua:4: unknown name 'gauss' (node families: gauss_legendre, ...; functions: sqrt, ...) */
+int vigen_sandbox_new(vigen_sandbox **out, const vigen_sandbox_limits *limits, lua_CFunction vocabulary,
                       vigen_error *err);
 void vigen_sandbox_free(vigen_sandbox *sb);
 lua_State *vigen_sandbox_state(vigen_sandbox *sb);
@@ -51,11 +55,5 @@ int vigen_sandbox_run_string(vigen_sandbox *sb, const char *text, const char *ch
 /* lua_pcall with the instruction budget reset and errors translated as above.
  * The function and its nargs arguments are on the stack. */
 int vigen_sandbox_pcall(vigen_sandbox *sb, int nargs, int nresults, vigen_error *err);
-
-/* Family descriptors, the values of gauss_legendre(3), trig(5), ... in a spec
- * file.  If the value at idx is one, sets *kind, *family (a static name) and *s
- * and returns 1; otherwise returns 0.  Never raises a Lua error. */
-enum { VIGEN_FAMILY_NODES = 1, VIGEN_FAMILY_BASIS = 2 };
-int vigen_sandbox_get_family(lua_State *L, int idx, int *kind, const char **family, long *s);
 
 #endif

@@ -1,5 +1,4 @@
-/* tableau_file.c — reading tableau files (tableau_file.h) and
- * vigen_tableau_load of vigen/tableau.h.
+/* tableau_file.c — reading tableau files (tableau_file.h).
  *
  * Tableau files are untrusted: every read below is raw (no __index, __len or
  * other metamethod can run outside a protected call), and tables carrying a
@@ -262,15 +261,5 @@ int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *pa
     if (rc == VIGEN_OK && (t->has_ct || t->has_bt) && !t->has_At)
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'ct'/'bt' are given without 'At'", path);
     if (rc != VIGEN_OK) vigen_tableau_clear(t);
-    return rc;
-}
-
-int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
-{
-    vigen_sandbox *sb = NULL;
-    int rc = vigen_sandbox_new(&sb, limits, err);
-    if (rc == VIGEN_OK) rc = vigen_sandbox_run_file(sb, path, err);
-    if (rc == VIGEN_OK) rc = vigen_tableau_from_table(t, sb, path, err);
-    vigen_sandbox_free(sb);
     return rc;
 }

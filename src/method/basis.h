@@ -15,7 +15,7 @@
 
 #include <arb.h>
 #include "vigen/error.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 
 typedef struct vigen_basis vigen_basis;
 

@@ -12,7 +12,7 @@
 #define VIGEN_GALERKIN_H
 
 #include "vigen/error.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "vigen/tableau.h"
 
 /* One computation at precision prec; out must be uninitialised (it is

@@ -1,9 +1,11 @@
 /* method_tableau.c — the "tableau" row of methods.def: a tableau file, read
  * once; every tableau asked for is a copy of its texts, evaluated at a
- * precision adequate for the digits asked for (or not at all for digits 0). */
+ * precision adequate for the digits asked for (or not at all for digits 0).
+ * Also vigen_tableau_load of vigen/tableau.h, a tableau file read directly. */
 #include <stdlib.h>
 #include "method/galerkin.h"
 #include "method/methods.h"
+#include "method/vocabulary.h"
 
 typedef struct {
     char *path;
@@ -49,4 +51,13 @@ void vigen_method_tableau_release(void *state)
     vigen_tableau_clear(&st->read);
     free(st->path);
     free(st);
+}
+
+int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
+{
+    vigen_sandbox *sb = NULL;
+    int rc = vigen_vocabulary_run_file(&sb, path, limits, err);
+    if (rc == VIGEN_OK) rc = vigen_tableau_from_table(t, sb, path, err);
+    vigen_sandbox_free(sb);
+    return rc;
 }

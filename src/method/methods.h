@@ -5,7 +5,7 @@
 
 #include <lua.h>
 #include "lua/sandbox.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "lua/tableau_file.h"
 #include "vigen/tableau.h"
 

@@ -1,10 +1,11 @@
 /* registry.c — method files (vigen/method.h): the file run once in a
- * sandbox, its table recognised by the rows of methods.def and handed to the
+ * sandbox with the spec vocabulary, its table recognised by the rows of methods.def and handed to the
  * reader of its kind, which then makes the tableaux asked for. */
 #include <stdlib.h>
 #include <lauxlib.h>
 #include "method/galerkin.h"
 #include "method/methods.h"
+#include "method/vocabulary.h"
 #include "vigen/method.h"
 
 enum {
@@ -55,8 +56,7 @@ static int run_and_detect(vigen_sandbox **sb, const method_kind **kind, const ch
                           const vigen_sandbox_limits *limits, vigen_error *err)
 {
     *kind = NULL;
-    int rc = vigen_sandbox_new(sb, limits, err);
-    if (rc == VIGEN_OK) rc = vigen_sandbox_run_file(*sb, path, err);
+    int rc = vigen_vocabulary_run_file(sb, path, limits, err);
     lua_State *L = rc == VIGEN_OK ? vigen_sandbox_state(*sb) : NULL;
     if (rc == VIGEN_OK && !lua_checkstack(L, 4)) rc = vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
     if (rc == VIGEN_OK) {

@@ -15,7 +15,7 @@
 #include <string.h>
 #include "core/decimal.h"
 #include "method/galerkin.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "testlib.h"
 
 static int write_text(const char *path, const char *text)

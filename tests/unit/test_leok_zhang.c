@@ -17,7 +17,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "method/galerkin.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "testlib.h"
 
 static const char *const pairs[][2] = {

@@ -1,5 +1,5 @@
-/* test_sandbox.c — the Lua sandbox (caps, escapes, messages, vocabulary),
- * the ball library that Lua basis functions compute with, and the Lua string
+/* test_sandbox.c — the Lua sandbox (caps, escapes, messages, the vocabulary
+ * mechanism and the spec vocabulary method files run with), the ball library that Lua basis functions compute with, and the Lua string
  * literals vigen writes. */
 #include <string.h>
 
@@ -10,6 +10,7 @@
 #include "lua/float_text.h"
 #include "lua/quote.h"
 #include "lua/sandbox.h"
+#include "method/vocabulary.h"
 #include "testlib.h"
 
 static int contains(const char *haystack, const char *needle)
@@ -22,13 +23,14 @@ static int starts_with(const char *s, const char *prefix)
     return s != NULL && strncmp(s, prefix, strlen(prefix)) == 0;
 }
 
-/* Runs text in a fresh sandbox (limits may be NULL) and returns the status;
+/* Runs text in a fresh sandbox with the spec vocabulary, as a method file
+ * (limits may be NULL) and returns the status;
  * the message stays in err.  The stack must be balanced afterwards. */
 static int run(const char *text, const vigen_sandbox_limits *limits, vigen_error *err)
 {
     vigen_sandbox *sb = NULL;
     vigen_error_clear(err);
-    int code = vigen_sandbox_new(&sb, limits, err);
+    int code = vigen_sandbox_new(&sb, limits, vigen_vocabulary_open, err);
     if (code != VIGEN_OK) return code;
     lua_State *L = vigen_sandbox_state(sb);
     int top = lua_gettop(L);
@@ -61,7 +63,7 @@ static void test_run_and_errors(void)
 
     /* a chunk's value stays on the stack */
     vigen_sandbox *sb = NULL;
-    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, NULL, NULL, &err) == VIGEN_OK);
     lua_State *L = vigen_sandbox_state(sb);
     CHECK(vigen_sandbox_run_string(sb, "return 6 * 7, 'ignored'", "@spec.lua", &err) == VIGEN_OK);
     CHECK(lua_gettop(L) == 1 && lua_isinteger(L, -1) && lua_tointeger(L, -1) == 42);
@@ -88,13 +90,13 @@ static void test_run_and_errors(void)
 
     /* a long path is shown whole, not as Lua's truncated "...tail" */
     const char *longname = "@some/very/long/directory/name/that/goes/on/and/on/and/on/and/on/spec.lua";
-    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, NULL, NULL, &err) == VIGEN_OK);
     CHECK(vigen_sandbox_run_string(sb, "\nerror('x')", longname, &err) == VIGEN_E_LUA);
     CHECK_MSG(starts_with(err.message, longname + 1) && contains(err.message, "spec.lua:2: x"), "%s", err.message);
     vigen_sandbox_free(sb);
 
     /* missing file */
-    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, NULL, NULL, &err) == VIGEN_OK);
     CHECK(vigen_sandbox_run_file(sb, "/nonexistent/dir/spec.lua", &err) == VIGEN_E_IO);
     CHECK(contains(err.message, "/nonexistent/dir/spec.lua"));
     vigen_sandbox_free(sb);
@@ -131,7 +133,7 @@ static void test_escapes(void)
     const char *bytecode = lua_tolstring(plain, -1, &len);
     CHECK(len > 4 && bytecode[0] == LUA_SIGNATURE[0]);
     vigen_sandbox *sb = NULL;
-    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, NULL, NULL, &err) == VIGEN_OK);
     CHECK(vigen_sandbox_run_string(sb, bytecode, "@spec.luac", &err) == VIGEN_E_SYNTAX);
     CHECK_MSG(contains(err.message, "spec.luac") && contains(err.message, "precompiled"), "%s", err.message);
     vigen_sandbox_free(sb);
@@ -182,7 +184,7 @@ static void test_instruction_cap(void)
 
     /* the budget is per top-level call: two calls of ~0.7 cap each both succeed */
     vigen_sandbox *sb = NULL;
-    CHECK(vigen_sandbox_new(&sb, &lim, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, &lim, NULL, &err) == VIGEN_OK);
     lua_State *L = vigen_sandbox_state(sb);
     CHECK(vigen_sandbox_run_string(sb, "return function() local n = 0 for i = 1, 170000 do n = n + i end return n end",
                                    "@spec.lua", &err) == VIGEN_OK);
@@ -232,7 +234,7 @@ static void test_memory_cap(void)
     /* a sandbox that hit the cap works afterwards */
     vigen_sandbox *sb = NULL;
     lim.instruction_limit = 50000000;
-    CHECK(vigen_sandbox_new(&sb, &lim, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, &lim, NULL, &err) == VIGEN_OK);
     CHECK(vigen_sandbox_run_string(sb, "local t = {} for i = 1, 1e9 do t[i] = i end", "@spec.lua", &err)
           == VIGEN_E_LIMIT);
     CHECK(vigen_sandbox_run_string(sb, "return #string.rep('y', 1000)", "@spec.lua", &err) == VIGEN_OK);
@@ -240,6 +242,55 @@ static void test_memory_cap(void)
     vigen_sandbox_free(sb);
     /* the cap is distinguished from other errors */
     CHECK(run("error('not enough memory')", &lim, &err) == VIGEN_E_LUA);
+    vigen_error_clear(&err);
+}
+
+/* A vocabulary of one word, to see what the sandbox does with any. */
+static int toy_word(lua_State *L)
+{
+    lua_pushinteger(L, 42);
+    return 1;
+}
+
+static int toy_vocabulary(lua_State *L)
+{
+    lua_pushcfunction(L, toy_word);
+    lua_setglobal(L, "answer");
+    lua_pushliteral(L, "toy words: answer");
+    return 1;
+}
+
+static int failing_vocabulary(lua_State *L) { return luaL_error(L, "no words today"); }
+
+/* Runs text in a fresh sandbox with this vocabulary; the message stays in err. */
+static int run_with(lua_CFunction vocabulary, const char *text, vigen_error *err)
+{
+    vigen_sandbox *sb = NULL;
+    vigen_error_clear(err);
+    int code = vigen_sandbox_new(&sb, NULL, vocabulary, err);
+    if (code == VIGEN_OK) code = vigen_sandbox_run_string(sb, text, "@file.lua", err);
+    vigen_sandbox_free(sb);
+    return code;
+}
+
+static void test_vocabulary_mechanism(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    /* no vocabulary: the families are unknown, the message lists the functions only */
+    CHECK(run_with(NULL, "return gauss_legendre(3)", &err) == VIGEN_E_LUA);
+    CHECK_MSG(err.message && strcmp(err.message, "file.lua:1: unknown name 'gauss_legendre' (functions: sqrt, exp, "
+                                                 "log, sin, cos, tan, pi, exact)") == 0, "%s", err.message);
+    /* a vocabulary's globals are there, and its text comes first in the message */
+    CHECK(run_with(toy_vocabulary, "return answer() == 42 and sin ~= nil", &err) == VIGEN_OK);
+    CHECK(run_with(toy_vocabulary, "return answr", &err) == VIGEN_E_LUA);
+    CHECK_MSG(err.message && strcmp(err.message, "file.lua:1: unknown name 'answr' (toy words: answer; functions: "
+                                                 "sqrt, exp, log, sin, cos, tan, pi, exact)") == 0, "%s", err.message);
+    /* a vocabulary that fails leaves no sandbox */
+    vigen_sandbox *sb = NULL;
+    CHECK(vigen_sandbox_new(&sb, NULL, failing_vocabulary, &err) == VIGEN_E_LUA && sb == NULL);
+    CHECK_MSG(starts_with(err.message, "cannot set up the Lua sandbox: ") && contains(err.message, "no words today"),
+              "%s", err.message);
     vigen_error_clear(&err);
 }
 
@@ -259,7 +310,7 @@ static void test_vocabulary(void)
                                               "equispaced", NULL };
     static const char *const basis_names[] = { "monomials", "trig", "legendre", "chebyshev_t", NULL };
     vigen_sandbox *sb = NULL;
-    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, NULL, vigen_vocabulary_open, &err) == VIGEN_OK);
     lua_State *L = vigen_sandbox_state(sb);
     for (int pass = 0; pass < 2; pass++) {
         const char *const *names = pass ? basis_names : node_names;
@@ -269,7 +320,7 @@ static void test_vocabulary(void)
             int kind = 0;
             const char *family = NULL;
             long s = 0;
-            CHECK(vigen_sandbox_get_family(L, -1, &kind, &family, &s) == 1);
+            CHECK(vigen_vocabulary_get_family(L, -1, &kind, &family, &s) == 1);
             CHECK(kind == (pass ? VIGEN_FAMILY_BASIS : VIGEN_FAMILY_NODES));
             CHECK(family && strcmp(family, names[i]) == 0);
             CHECK(s == i + 2);
@@ -284,10 +335,10 @@ static void test_vocabulary(void)
     /* plain values are not families */
     CHECK(vigen_sandbox_run_string(sb, "return {kind = 'nodes', family = 'gauss_legendre', s = 3}", "@spec.lua",
                                    &err) == VIGEN_OK);
-    CHECK(vigen_sandbox_get_family(L, -1, NULL, NULL, NULL) == 0);
+    CHECK(vigen_vocabulary_get_family(L, -1, NULL, NULL, NULL) == 0);
     lua_pop(L, 1);
     CHECK(vigen_sandbox_run_string(sb, "return exact('1/2')", "@spec.lua", &err) == VIGEN_OK);
-    CHECK(vigen_sandbox_get_family(L, -1, NULL, NULL, NULL) == 0);
+    CHECK(vigen_vocabulary_get_family(L, -1, NULL, NULL, NULL) == 0);
     lua_pop(L, 1);
     vigen_sandbox_free(sb);
 
@@ -341,7 +392,7 @@ static void test_quote(void)
         vigen_strbuf_append(&chunk, "return ");
         vigen_lua_quote(&chunk, texts[i]);
         vigen_sandbox *sb = NULL;
-        CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+        CHECK(vigen_sandbox_new(&sb, NULL, NULL, &err) == VIGEN_OK);
         int code = sb ? vigen_sandbox_run_string(sb, chunk.data, "@quote.lua", &err) : VIGEN_E_MEMORY;
         CHECK_MSG(code == VIGEN_OK, "%s: %s", chunk.data, err.message);
         if (code == VIGEN_OK) {
@@ -369,7 +420,7 @@ static int call_fn(const char *chunk, const acb_t t, int analytic, slong prec, a
 {
     vigen_sandbox *sb = NULL;
     vigen_error_clear(err);
-    int code = vigen_sandbox_new(&sb, NULL, err);
+    int code = vigen_sandbox_new(&sb, NULL, NULL, err);
     if (code != VIGEN_OK) return code;
     lua_State *L = vigen_sandbox_state(sb);
     code = vigen_sandbox_run_string(sb, chunk, "@spec.lua", err);
@@ -526,7 +577,7 @@ static void test_balls(void)
 
     /* vigen_ball_get: balls and integers only */
     vigen_sandbox *sb = NULL;
-    CHECK(vigen_sandbox_new(&sb, NULL, &err) == VIGEN_OK);
+    CHECK(vigen_sandbox_new(&sb, NULL, NULL, &err) == VIGEN_OK);
     lua_State *L = vigen_sandbox_state(sb);
     lua_pushinteger(L, -7);
     CHECK(vigen_ball_get(r, L, -1) == 1 && real_contains_q(r, -7, 1) && radius_below(r, -1000));
@@ -551,6 +602,7 @@ int main(void)
     test_escapes();
     test_instruction_cap();
     test_memory_cap();
+    test_vocabulary_mechanism();
     test_vocabulary();
     test_float_format();
     test_quote();

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "vigen/method.h"
 #include "testlib.h"
 

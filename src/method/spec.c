@@ -1,8 +1,8 @@
 /* spec.c — reading and validating method spec files, and calling their Lua
  * basis functions.
  *
- * The file runs in a sandbox (sandbox.c, once per command: the method
- * registry runs it and hands the table here); the table it returned is checked
+ * The file runs in a sandbox with the spec vocabulary (vocabulary.c, once
+ * per command: the method registry runs it and hands the table here); the table it returned is checked
  * by a C function that itself runs under vigen_sandbox_pcall, so that nothing
  * the table does (a memory error while reading it, say) can raise a Lua error
  * outside a protected call.  Every C allocation made during the check is
@@ -23,8 +23,9 @@
 #include "lua/ball.h"
 #include "lua/float_text.h"
 #include "lua/quote.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "method/families.h"
+#include "method/vocabulary.h"
 
 static const char *const known_fields[] = { "name", "description", "source", "nodes", "basis", NULL };
 
@@ -248,7 +249,7 @@ static int read_entry(lua_State *L, int idx, const char *field, slong i, load_ct
         const char *str = plain_string(L, idx);
         if (str == NULL) return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s contains a zero byte", P, cx->entry);
         cx->src = vigen_strdup(str);
-    } else if (vigen_sandbox_get_family(L, idx, NULL, &family, &fs)) {
+    } else if (vigen_vocabulary_get_family(L, idx, NULL, &family, &fs)) {
         return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is %s(%ld); a family is not a list entry: write %s = %s(%ld)",
                                P, cx->entry, family, fs, field, family, fs);
     } else if (t != LUA_TFUNCTION || strcmp(field, "basis") != 0) {
@@ -302,7 +303,7 @@ static int check_nodes(lua_State *L, int table, load_ctx *cx)
     char *names = NULL;
     if (t == LUA_TTABLE) {
         code = check_nodes_list(L, idx, cx);
-    } else if (vigen_sandbox_get_family(L, idx, &kind, &family, &s)) {
+    } else if (vigen_vocabulary_get_family(L, idx, &kind, &family, &s)) {
         if (kind != VIGEN_FAMILY_NODES) {
             names = join_names(vigen_nodes_family_names);
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
@@ -421,7 +422,7 @@ static int check_basis(lua_State *L, int table, load_ctx *cx)
     char *calls = NULL;
     if (t == LUA_TTABLE) {
         code = check_basis_list(L, idx, cx);
-    } else if (vigen_sandbox_get_family(L, idx, &kind, &family, &s)) {
+    } else if (vigen_vocabulary_get_family(L, idx, &kind, &family, &s)) {
         if (kind != VIGEN_FAMILY_BASIS) {
             calls = basis_calls();
             code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
@@ -556,12 +557,8 @@ int vigen_spec_load(vigen_spec **out, const char *path, const vigen_sandbox_limi
 {
     *out = NULL;
     vigen_sandbox *sb = NULL;
-    int code = vigen_sandbox_new(&sb, limits, err);
-    if (code == VIGEN_OK) code = vigen_sandbox_run_file(sb, path, err);
-    if (code != VIGEN_OK) {
-        vigen_sandbox_free(sb);
-        return code;
-    }
+    int code = vigen_vocabulary_run_file(&sb, path, limits, err);
+    if (code != VIGEN_OK) return code;
     return vigen_spec_from_table(out, sb, path, err);
 }
 

@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# cli_layout.sh VIGEN SRCDIR — the shape of the source tree:
+#   (a) no file in src/, cli/ or include/ is longer than 1,200 lines;
+#   (b) the modules src/<module>/ include each other without a cycle (the
+#       edges are the `#include "<module>/..."` lines of their .c, .h and .def
+#       files; a module including itself is no edge);
+#   (c) cli/ includes, among quoted includes, only public "vigen/..." headers
+#       and its own files;
+#   (d) the public headers include/vigen/ include, among quoted includes, only
+#       "vigen/..." headers.
+# One line per violation; exit status 1 if there is any.  VIGEN is unused
+# (the tree is what is tested) and taken like every cli test's.
+set -u
+src=$2
+cd "$src" || exit 2
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+# quoted_includes FILE...: "file:line:target" for every #include "target"
+quoted_includes() {
+  awk '{ if (match($0, /^[ \t]*#[ \t]*include[ \t]*"[^"]*"/)) {
+           s = substr($0, RSTART, RLENGTH); sub(/^[^"]*"/, "", s); sub(/"$/, "", s)
+           print FILENAME ":" FNR ":" s } }' "$@"
+}
+
+# (a) file lengths
+max_lines=1200
+while IFS= read -r f; do
+  n=$(wc -l <"$f")
+  [ "$n" -gt "$max_lines" ] && fail "$f has $n lines (at most $max_lines)"
+done < <(find src cli include -type f | sort)
+
+# (b) the module include graph
+modules=$(find src -mindepth 1 -maxdepth 1 -type d -printf '%f\n' | sort)
+is_module() { printf '%s\n' $modules | grep -qx -- "$1"; }
+edges=$(mktemp)
+trap 'rm -f "$edges"' EXIT
+for m in $modules; do
+  files=$(find "src/$m" -maxdepth 1 -type f \( -name '*.c' -o -name '*.h' -o -name '*.def' \) | sort)
+  [ -n "$files" ] || continue
+  quoted_includes $files | while IFS=: read -r file line target; do
+    case $target in */*) ;; *) continue ;; esac
+    to=${target%%/*}
+    [ "$to" != "$m" ] && is_module "$to" && echo "$m $to $file:$line"
+  done
+done >"$edges"
+if ! loop=$(cut -d' ' -f1,2 "$edges" | sort -u | tsort 2>&1 >/dev/null); then
+  fail "the modules include each other in a cycle:"
+  # tsort names the modules of the loop; show the includes between them
+  members=$(printf '%s\n' "$loop" | grep -v 'input contains a loop' | sed 's/^tsort: //')
+  while read -r from to where; do
+    printf '%s\n' $members | grep -qx -- "$from" && printf '%s\n' $members | grep -qx -- "$to" &&
+      echo "  $from -> $to ($where)"
+  done <"$edges"
+fi
+
+# (c) the command line sees the public headers only
+while IFS=: read -r file line target; do
+  case $target in
+    vigen/*) ;;
+    */*) fail "$file:$line includes \"$target\"; cli/ may include only public \"vigen/...\" headers" ;;
+    *) [ -f "cli/$target" ] ||
+         fail "$file:$line includes \"$target\"; cli/ may include only public \"vigen/...\" headers and its own files" ;;
+  esac
+done < <(quoted_includes $(find cli -type f | sort))
+
+# (d) the public headers stand on each other only
+while IFS=: read -r file line target; do
+  case $target in
+    vigen/*) ;;
+    *) fail "$file:$line includes \"$target\"; a public header may include only \"vigen/...\" headers" ;;
+  esac
+done < <(quoted_includes $(find include/vigen -type f | sort))
+
+[ "$failures" -eq 0 ] || exit 1
+echo "cli_layout: all checks passed"
