@@ -30,7 +30,7 @@
 #include "vigen/check.h"
 #include "vigen/emit.h"
 #include "method/galerkin.h"
-#include "lua/spec.h"
+#include "method/spec.h"
 #include "vigen/tableau.h"
 #include "testlib.h"
 
