@@ -1,5 +1,5 @@
 /* galerkin.h — Theorem 3 of Leok & Zhang: the symplectic PRK tableau of a
- * Galerkin Hamiltonian variational integrator (MATH.md section 2).
+ * Galerkin Hamiltonian variational integrator (docs/math.md, "Theorem 3 of Leok & Zhang").
  *
  *   M_ij = psi_i(c_j), B_i = int_0^1 psi_i, Apsi_ij = int_0^c_i psi_j,
  *   b = M^-1 B, A = Apsi M^-T, at_ij = (b_i b_j - b_j a_ji)/b_i, ct_i = sum_j at_ij.

@@ -258,7 +258,7 @@ static void test_high_precision(void)
     if (ok2) vigen_tableau_clear(&hi);
 }
 
-/* 2000 digits (the issue's upper end): the 3-stage Gauss closed forms hold to
+/* 2000 digits (the largest digits tested): the 3-stage Gauss closed forms hold to
  * 1990 digits and every entry carries 2000 certified digits. */
 static void test_2000_digits(void)
 {

@@ -12,7 +12,7 @@
  * We test against the correct values; the printed tables are kept verbatim in
  * tableaux/published/ and test_misprints below shows that the generator
  * disagrees with exactly those entries.  Every entry of the generated tableau must agree to 50
- * digits (the issue asks for 40), and the committed 50-digit files in
+ * digits, and the committed 50-digit files in
  * tableaux/generated/ must contain the exact values in their rounding balls. */
 #include <stdio.h>
 #include <string.h>
