@@ -1,6 +1,7 @@
 /* help.c — usage lines, `vigen help`, `vigen help COMMAND` and
  * `vigen version`, all rendered from the tables of commands.def and, for the
  * exit statuses, of status.def. */
+#include <stdlib.h>
 #include <string.h>
 #include "vigen/vigen.h"
 #include "cli.h"
@@ -84,6 +85,25 @@ static void print_exit_statuses(FILE *out)
     }
 }
 
+/* "  vigen help NAME  summary", the summary's further lines indented under its first. */
+static void print_topic(FILE *out, const char *name, const char *summary)
+{
+    int col = fprintf(out, "  vigen help %s  ", name);
+    for (const char *p = summary; *p; p++) {
+        fputc(*p, out);
+        if (*p == '\n' && p[1]) fprintf(out, "%*s", col, "");
+    }
+    fputc('\n', out);
+}
+
+static int vigen_topic_spec(void)
+{
+    char *text = vigen_method_vocabulary_text();
+    fputs(text, stdout);
+    free(text);
+    return 0;
+}
+
 void vigen_cli_print_help(FILE *out)
 {
     fputs("usage: vigen COMMAND [OPTIONS]\n"
@@ -106,6 +126,9 @@ void vigen_cli_print_help(FILE *out)
     print_options(out, VIGEN_CMD_global);
     fputc('\n', out);
     print_exit_statuses(out);
+    fputs("\nhelp topics:\n", out);
+#define TOPIC(name, summary) print_topic(out, #name, summary);
+#include "commands.def"
     fputs("\nRun 'vigen help COMMAND' (or 'vigen COMMAND --help') for the options of a command.\n", out);
 }
 
@@ -137,6 +160,8 @@ int vigen_cmd_help(const vigen_cli_args *args)
         vigen_cli_print_help(stdout);
         return 0;
     }
+#define TOPIC(name, summary) if (strcmp(args->operand, #name) == 0) return vigen_topic_##name();
+#include "commands.def"
     int c = vigen_cli_command_index(args->operand);
     if (c < 0) return vigen_cli_unknown_command(VIGEN_CMD_help, args->operand);
     vigen_cli_print_command_help(stdout, c);

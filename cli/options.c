@@ -138,10 +138,17 @@ int vigen_cli_command_index(const char *name)
 
 int vigen_cli_unknown_command(int command, const char *name)
 {
-    const char *names[VIGEN_CMD_COUNT + 1];
-    for (int c = 0; c < VIGEN_CMD_COUNT; c++) names[c] = vigen_cli_commands[c].name;
-    names[VIGEN_CMD_COUNT] = NULL;
+    /* after `vigen help`, the help topics are candidates too */
+    const char *names[VIGEN_CMD_COUNT + 8];
+    int n = 0;
+    for (int c = 0; c < VIGEN_CMD_COUNT; c++) names[n++] = vigen_cli_commands[c].name;
+    if (command == VIGEN_CMD_help) {
+#define TOPIC(topic, summary) names[n++] = #topic;
+#include "commands.def"
+    }
+    names[n] = NULL;
     const char *near = vigen_nearest_name(name, names, 2);
-    if (near) return vigen_cli_usage_error(command, "unknown command '%s'; did you mean '%s'?", name, near);
-    return vigen_cli_usage_error(command, "unknown command '%s'", name);
+    const char *what = command == VIGEN_CMD_help ? "command or help topic" : "command";
+    if (near) return vigen_cli_usage_error(command, "unknown %s '%s'; did you mean '%s'?", what, name, near);
+    return vigen_cli_usage_error(command, "unknown %s '%s'", what, name);
 }

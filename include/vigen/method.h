@@ -40,6 +40,12 @@ int vigen_method_is_generated(const vigen_method *m);
  * with VIGEN_E_USAGE. */
 int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err);
 
+/* What method files may contain, from the tables of the code: the kinds of
+ * method file, the node and basis families, the functions and constants of
+ * exact expressions, each with one line of description (`vigen help spec`).
+ * A heap string; free with free(). */
+char *vigen_method_vocabulary_text(void);
+
 /* The generator: the tableau of the Galerkin variational integrator of the
  * spec file at path, every entry certified to `digits` significant digits
  * (out uninitialised on entry; initialised on success). */

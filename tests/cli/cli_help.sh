@@ -170,5 +170,13 @@ status 3 --max-instructions 1000 generate "$src/tests/data/bad_specs/endless_loo
 short_error "instruction cap"
 has err "1000"
 
+# vigen help spec: the vocabulary of method files, written from the tables
+status 0 help spec
+for w in "gauss_legendre(s)" "chebyshev_t(s)" "sqrt(x)" "galerkin" "tableau"; do has out "$w"; done
+grep -q "help spec" <("$vigen" help) || fail "vigen help does not list the topic spec"
+status 2 help spce
+short_error "vigen help spce"
+has err "did you mean 'spec'"
+
 [ $failures -gt 0 ] && { echo "$failures failure(s)"; exit 1; }
 exit 0
