@@ -49,7 +49,7 @@ share() { if [ -n "${2:-}" ]; then awk -v g="$2" -v a="$1" 'BEGIN { printf "%.2f
 
 {
     echo "<!-- emit-figures:begin (written by bench/run_emit.sh) -->"
-    echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), shared with other sessions; $(date -u +%Y-%m-%d); gcc -O2."
+    echo "Machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), shared with other jobs; $(date -u +%Y-%m-%d); gcc -O2."
     echo
     echo "#### Wall time (bench/emit_bench)"
     "$out/emit_bench" 1000000 2000 | sed 's/^### /##### /'

@@ -22,7 +22,7 @@ row() { # kind s digits
     printf 'return { name = "gauss%s", basis = "lagrange", nodes = gauss_legendre(%s) }\n' "$s" "$s" >"$spec"
   elif [ "$kind" = trig-strings ]; then
     # the same trig(s) basis written as expression strings: vigen finds their
-    # exact antiderivatives itself (expr.c), not the family's code path
+    # exact antiderivatives itself (src/core/expr_integrate.c), not the family's code path
     python3 - "$s" >"$spec" <<'PY'
 import sys
 s = int(sys.argv[1])

@@ -2,8 +2,8 @@
  * precision: their values psi_i(x) and their integrals int_0^x psi_i.
  *
  * How each kind is integrated (always rigorously):
- *   lagrange, monomials, legendre, chebyshev_t, and expression strings that
- *             are polynomials in t: exact antiderivative of an arb_poly;
+ *   lagrange, the polynomial families of basis.def, and expression strings
+ *             that are polynomials in t: exact antiderivative of an arb_poly;
  *   trig      closed forms: int_0^x cos(k pi t) dt = sin(k pi x)/(k pi), ...;
  *   expressions built from polynomials and sin/cos/exp of linear arguments
  *             (sums, constant factors): their exact antiderivatives;

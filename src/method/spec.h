@@ -41,7 +41,7 @@ typedef struct {
     char *node_family;           /* NODES_FAMILY: "gauss_legendre", ... */
 
     int basis_kind;
-    char *basis_family;          /* BASIS_FAMILY: "trig", "monomials", "legendre", "chebyshev_t" */
+    char *basis_family;          /* BASIS_FAMILY: a name of basis.def, e.g. "trig" */
     slong basis_count;           /* number of basis functions (family s, list length, or s for lagrange) */
     vigen_spec_basis_item *items;/* BASIS_LIST: basis_count items */
 

@@ -5,7 +5,7 @@
  *   - Radau IIA s = 2 (A) from Hairer & Wanner II, Table IV.5.5;
  *   - the trig(s) family (its own closed forms, arb_sin_cos_pi) against the
  *     same functions written as expression strings (the generic exact
- *     antiderivative of sin/cos of linear arguments in expr.c) and as Lua
+ *     antiderivative of sin/cos of linear arguments in src/core/expr_integrate.c) and as Lua
  *     functions (acb_calc_integrate through Lua): three independent routes;
  *   - identities every generated method satisfies: ct_i = sum_j at_ij,
  *     symplecticity, sum b = 1, and the B(p) quadrature order of b.
@@ -194,7 +194,7 @@ static void test_radau(void)
 }
 
 /* trig(3) by the family's closed forms vs the same basis as expressions (the
- * generic antiderivative in expr.c) vs Lua functions (acb_calc_integrate). */
+ * generic antiderivative, src/core/expr_integrate.c) vs Lua functions (acb_calc_integrate). */
 static void test_three_routes(void)
 {
     const char *dir = getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp";

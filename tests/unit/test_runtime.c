@@ -208,7 +208,7 @@ static void test_huge_step(void)
 /* A gradient that turns NaN or infinite is a failed stage solve, not a
  * converged one: the step reports VIGEN_ENONFINITE and leaves the state as it
  * was, for fixed-point iteration and Newton alike.  (A maximum of the
- * increments that skipped NaN used to accept such a step.) */
+ * increments that skipped NaN would accept such a step.) */
 static double bad_value;
 static void bad_dq(double t, const double *q, const double *p, double *o, void *c)
 {

@@ -1,5 +1,5 @@
 /* driver.c — runs an emitted stepper on problems with known solutions and
- * prints key=value lines for tests/test_emit.c.  Compiled by the test with
+ * prints key=value lines for tests/unit/test_emit.c.  Compiled by the test with
  *   -DSTEPPER_HEADER='"NAME.h"' -DSTEPPER_TYPE=NAME_type [-DREAL_LD]
  * together with the runtime sources.
  *

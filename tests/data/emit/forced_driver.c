@@ -3,7 +3,7 @@
  *
  *   H(t, q, p) = p^2/2 + q^2/2 - q F cos(w t),   q' = p,  p' = -q + F cos(w t),
  *
- * and prints key=value lines for tests/test_emit_time.c.  Built with
+ * and prints key=value lines for tests/unit/test_emit_time.c.  Built with
  *   -DSTEPPER_HEADER='"NAME.h"' -DSTEPPER_TYPE=NAME_type
  * and the runtime.
  *

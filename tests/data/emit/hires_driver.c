@@ -4,7 +4,7 @@
  *   H = (p^2 + q^2) / 2,  q(0) = 1, p(0) = 0:  q(t) = cos t, p(t) = -sin t,
  *
  * computing everything in the stepper's type, and prints key=value lines for
- * tests/test_emit_precision.c.  Built with
+ * tests/unit/test_emit_precision.c.  Built with
  *   -DSTEPPER_HEADER='"NAME.h"' -DSTEPPER_TYPE=NAME_type -DREAL_LD|-DREAL_Q
  * and the runtime.  No libquadmath: cos and sin in __float128 come from
  * their Taylor series (below), checked here against cosl/sinl.
