@@ -269,6 +269,10 @@ void vigen_check_report_clear(vigen_check_report *rep);
 int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against,
                         const vigen_check_options *opt, vigen_error *err);
 
+/* The checks the checker runs (checks.def), one line each with what it
+ * decides, for `vigen help checks`.  A heap string; free with free(). */
+char *vigen_check_list_text(void);
+
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 

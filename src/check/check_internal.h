@@ -142,7 +142,7 @@ typedef struct {
 /* A check: one row of checks.def. */
 typedef int (*chk_check_fn)(chk_round *r, vigen_error *err);
 
-#define X(id, name, fn, description) int fn(chk_round *r, vigen_error *err);
+#define X(name, fn, description) int fn(chk_round *r, vigen_error *err);
 #include "check/checks.def"
 #undef X
 

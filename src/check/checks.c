@@ -4,6 +4,7 @@
  */
 #include <string.h>
 #include "check/check_internal.h"
+#include "vigen/check.h"
 
 typedef struct {
     const char *name;
@@ -12,7 +13,7 @@ typedef struct {
 } chk_check_row;
 
 static const chk_check_row checks[] = {
-#define X(id, name, fn, description) {name, fn, description},
+#define X(name, fn, description) {name, fn, description},
 #include "check/checks.def"
 #undef X
 };
@@ -54,4 +55,17 @@ int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_ta
     for (size_t k = 0; k < sizeof(checks) / sizeof(checks[0]) && rc == VIGEN_OK; k++) rc = checks[k].run(&r, err);
     round_clear(&r);
     return rc;
+}
+
+char *vigen_check_list_text(void)
+{
+    size_t width = 0;
+    for (size_t k = 0; k < sizeof(checks) / sizeof(checks[0]); k++)
+        if (strlen(checks[k].name) > width) width = strlen(checks[k].name);
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    vigen_strbuf_append(&sb, "The checks of 'vigen check', in the order they run on every round:\n");
+    for (size_t k = 0; k < sizeof(checks) / sizeof(checks[0]); k++)
+        vigen_strbuf_printf(&sb, "  %-*s  %s\n", (int)width, checks[k].name, checks[k].description);
+    return sb.data ? sb.data : vigen_strdup("");
 }
