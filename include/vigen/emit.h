@@ -1,11 +1,12 @@
 /* emit.h — `vigen emit`: compiles a tableau into a specialised C stepper.
  *
  *   vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]
- *              [--allow-inexact] [-q]
+ *              [--variant NAME] [--allow-inexact] [-q]
  *
  * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
- * templates/prk/stepper.h.in and templates/prk/stepper.c.in and
- * linked against the runtime library (runtime/include/vigen/runtime.h).
+ * templates/<variant>/stepper.h.in and templates/<variant>/stepper.c.in
+ * (the variant: "prk" unless chosen) and linked against the runtime library
+ * (runtime/include/vigen/runtime.h).
  *
  * - FILE is a tableau file or a spec file (nodes and basis, as for vigen
  *   generate).  A spec is generated on the fly with vigen_emit_spec_digits
@@ -47,9 +48,10 @@
  *   a step is reused at the start of the next (first same as last) when the
  *   tableau has a zero row and a row equal to b.
  *
- * Variants: src/emit/variants.def lists the steppers the emitter can write
- * (today one, "prk": the partitioned Runge-Kutta stepper above, for double,
- * long double and float128).  Each is a template directory
+ * Variants: src/emit/variants.def lists the steppers the emitter can write,
+ * chosen by name (vigen_emit_options.variant; today one, "prk", the default:
+ * the partitioned Runge-Kutta stepper above, for double, long double and
+ * float128).  Each is a template directory
  * templates/<variant>/ (stepper.h.in, stepper.c.in: readable C with
  * @NAME@ and @@BLOCK@@ slots and @if FLAG@ sections, every slot declared in
  * the template's first comment) and a slot builder in C that computes every
@@ -84,7 +86,20 @@ typedef struct {
                                 the install prefix, the source tree).  A program linking
                                 libvigen from a moved prefix passes the package's
                                 vigen_TEMPLATE_DIR here */
+    const char *variant;     /* the stepper to write, by its name in src/emit/variants.def (its
+                                templates are templates/<variant>/); NULL: the first row,
+                                "prk" */
 } vigen_emit_options;
+
+/* The target types by name, as `vigen emit --real` takes them:
+ * vigen_emit_real_parse sets *real (VIGEN_REAL_*) from "double",
+ * "long-double" or "float128" and returns VIGEN_OK, or VIGEN_E_USAGE (*real
+ * untouched) for any other name; vigen_emit_real_name is the name of a type
+ * (NULL out of range); vigen_emit_real_names lists them for a message:
+ * "double, long-double or float128". */
+int vigen_emit_real_parse(int *real, const char *name);
+const char *vigen_emit_real_name(int real);
+const char *vigen_emit_real_names(void);
 
 /* Certified digits with which `vigen emit` generates a spec for a target
  * type (VIGEN_REAL_*): 40 for double and long double, 60 for float128.  The
@@ -102,10 +117,15 @@ slong vigen_emit_spec_digits(int real);
  * *c_text are heap strings; *ident receives the sanitised name.  Warnings
  * (vigen_warn, after success only): entries emitted as exact zeros, one per
  * entry, and with allow_inexact one summary of the entries rounded as
- * written.  VIGEN_E_INEXACT: an entry cannot be rounded correctly; the
- * message names it (not the file: callers prefix the path) and says what to
- * do.  VIGEN_E_TEMPLATE: the variant's templates and its slots do not
- * match (the message names the template, line and slot). */
+ * written.  VIGEN_E_USAGE: opt->variant names no variant (the message lists
+ * the variants with their descriptions) or opt->real no type.
+ * VIGEN_E_INEXACT: an entry cannot be rounded correctly; the message names it
+ * (not the file: callers prefix the path) and says what to do.
+ * VIGEN_E_TEMPLATE, a broken installation or variant: a template cannot be
+ * read (the message names it and says to reinstall or set
+ * VIGEN_TEMPLATE_DIR), or the variant's templates and its slots do not match
+ * (the message names the template, line and slot; or the slot the builder
+ * supplies that no template of the variant declares, and the variant). */
 int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
                       char **ident, vigen_error *err);
 
@@ -130,9 +150,13 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
  * tableau (vigen_method_tableau): a tableau file as it is; a spec generated with
  * vigen_emit_spec_digits(real) digits, doubled (up to 960) while the emitter
  * still finds a value it cannot round, with allow_inexact honoured only at
- * the last attempt.  Renders into *h, *c, *ident; t is left initialised
- * (on success and on failures after loading); *loaded says whether it is.
- * VIGEN_E_INEXACT: an entry cannot be rounded (the data are too short). */
+ * the last attempt.  Renders into *h, *c, *ident.  On success t holds the
+ * tableau and *loaded is 1; on failure t is cleared and *loaded is 0.
+ * Messages are complete for the caller to print as they are: an error about
+ * the tableau names FILE (loading and generating name it themselves; a
+ * rendering error gets "FILE: " in front), while an unknown variant or type
+ * and a template error (VIGEN_E_TEMPLATE) are not about FILE and do not name
+ * it.  VIGEN_E_INEXACT: an entry cannot be rounded (the data are too short). */
 int vigen_emit_load_render(vigen_tableau *t, int *loaded, const char *file, vigen_emit_options *opt, char **h,
                            char **c, char **ident, vigen_error *err);
 

@@ -7,7 +7,11 @@
 
 typedef enum { VIGEN_SHOW_TEXT, VIGEN_SHOW_LATEX, VIGEN_SHOW_JSON, VIGEN_SHOW_LUA } vigen_show_format;
 
+/* *fmt from a format's name ("text", "latex", "json", "lua"): 1, or 0 (*fmt
+ * untouched) for any other name. */
 int vigen_show_parse_format(vigen_show_format *fmt, const char *name);
+/* The format names for a message: "text, latex, json or lua". */
+const char *vigen_show_format_names(void);
 
 /* Renders t (evaluated) into a heap string.  Entries written in the file as
  * decimals are printed as they are; exact expressions are printed as certified

@@ -1,7 +1,9 @@
 /* emit.c — the driver of `vigen emit`: the table of emitted variants
- * (variants.def), the passes over working precision until every coefficient
- * rounds, the rendering of the variant's templates with the slots its
- * builder supplies, and the loading of a method file for emission. */
+ * (variants.def) and the choice of one by name, the passes over working
+ * precision until every coefficient rounds, the rendering of the variant's
+ * templates with the slots its builder supplies (and the check that each of
+ * them is declared by a template), and the loading of a method file for
+ * emission. */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/emit.h"
@@ -10,28 +12,61 @@
 #include "emit/variant.h"
 
 static const vigen_emit_variant variants[] = {
-#define X(id, name, dir, description, builder) { name, dir, description, builder },
+#define X(name, description, builder) { name, description, builder },
 #include "emit/variants.def"
 #undef X
 };
+enum { NVARIANTS = sizeof variants / sizeof variants[0] };
 
 const vigen_emit_variant *vigen_emit_variant_find(const char *name)
 {
     if (name == NULL) return variants;
-    for (size_t k = 0; k < sizeof variants / sizeof variants[0]; k++)
+    for (size_t k = 0; k < NVARIANTS; k++)
         if (strcmp(variants[k].name, name) == 0) return variants + k;
     return NULL;
 }
 
-/* Renders the variant's two templates with the slots. */
+/* The variant and type opt asks for; VIGEN_E_USAGE when there is none of
+ * that name, the message listing the variants as variants.def describes
+ * them. */
+static int check_options(const vigen_emit_variant **variant, const vigen_emit_options *opt, vigen_error *err)
+{
+    if (vigen_emit_real_name(opt->real) == NULL)
+        return vigen_error_set(err, VIGEN_E_USAGE, "unknown real type %d (the types are %s)", opt->real,
+                               vigen_emit_real_names());
+    *variant = vigen_emit_variant_find(opt->variant);
+    if (*variant != NULL) return VIGEN_OK;
+    vigen_strbuf known;
+    vigen_strbuf_init(&known);
+    vigen_strbuf_append(&known, "");
+    for (size_t k = 0; k < NVARIANTS; k++)
+        vigen_strbuf_printf(&known, "%s%s (%s)", k ? "; " : "", variants[k].name, variants[k].description);
+    vigen_error_set(err, VIGEN_E_USAGE, "unknown variant '%s': the variant%s %s %s", opt->variant,
+                    NVARIANTS == 1 ? "" : "s", NVARIANTS == 1 ? "is" : "are", known.data);
+    vigen_strbuf_clear(&known);
+    return VIGEN_E_USAGE;
+}
+
+/* Renders the variant's two templates with the slots, and checks the
+ * contract from the builder's side: every slot it supplies is declared by
+ * one of the templates (each template checks the rest itself). */
 static int render_templates(const vigen_emit_variant *v, const char *top, const vigen_slots *S, char **h_text,
                             char **c_text, vigen_error *err)
 {
-    char *dir = top ? vigen_strdup_printf("%s/%s", top, v->dir) : vigen_template_dir(v->dir);
+    char *dir = top ? vigen_strdup_printf("%s/%s", top, v->name) : vigen_template_dir(v->name);
     char *hp = vigen_strdup_printf("%s/stepper.h.in", dir);
     char *cp = vigen_strdup_printf("%s/stepper.c.in", dir);
-    int rc = vigen_template_render_file(h_text, hp, S, err);
-    if (rc == VIGEN_OK) rc = vigen_template_render_file(c_text, cp, S, err);
+    unsigned char *declared = calloc(S->n + 1, 1);
+    if (declared == NULL) abort();
+    int rc = vigen_template_render_file(h_text, hp, S, declared, err);
+    if (rc == VIGEN_OK) rc = vigen_template_render_file(c_text, cp, S, declared, err);
+    for (size_t k = 0; rc == VIGEN_OK && k < S->n; k++)
+        if (!declared[k])
+            rc = vigen_error_set(err, VIGEN_E_TEMPLATE,
+                                 "variant %s: its slot builder supplies slot %s, but no template of the variant "
+                                 "declares it (%s, %s): use it in a template and declare it there, or stop "
+                                 "supplying it", v->name, S->v[k]->name, hp, cp);
+    free(declared);
     free(dir);
     free(hp);
     free(cp);
@@ -43,10 +78,9 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
 {
     *h_text = *c_text = NULL;
     *ident = NULL;
-    static const slong bits[] = { 53, 64, 113 };
-    if (opt->real < 0 || opt->real > 2) return vigen_error_set(err, VIGEN_E_USAGE, "unknown real type");
-    /* one variant today: the first row */
-    const vigen_emit_variant *variant = vigen_emit_variant_find(NULL);
+    const vigen_emit_variant *variant;
+    int rc = check_options(&variant, opt, err);
+    if (rc != VIGEN_OK) return rc;
     char *id = vigen_emit_identifier(opt->name ? opt->name : "stepper");
     emit_ctx E;
     memset(&E, 0, sizeof E);
@@ -54,7 +88,8 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     E.s = t->s;
     E.real = opt->real;
     E.allow_inexact = opt->allow_inexact;
-    E.bits = bits[opt->real];
+    E.bits = vigen_emit_reals[opt->real].bits;
+    E.variant = variant == variants ? NULL : variant->name;
     E.err = err;
     E.At_text = t->has_At ? t->At_text : t->A_text;
     E.bt_text = t->has_bt ? t->bt_text : t->b_text;
@@ -67,7 +102,6 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     if (E.marks == NULL) abort();
     vigen_slots slots;
     vigen_slots_init(&slots);
-    int rc = VIGEN_OK;
     for (E.prec = E.bits + 64;; E.prec *= 2) {
         rc = vigen_emit_evaluate(&E, err);
         if (rc != VIGEN_OK) break;
@@ -117,8 +151,12 @@ int vigen_emit_load_render(vigen_tableau *t, int *loaded, const char *file, vige
                            char **c, char **ident, vigen_error *err)
 {
     *loaded = 0;
+    /* a wrong option is found before the file is read or a spec generated */
+    const vigen_emit_variant *variant;
+    int rc = check_options(&variant, opt, err);
+    if (rc != VIGEN_OK) return rc;
     vigen_method *m = NULL;
-    int rc = vigen_method_load(&m, file, NULL, err);
+    rc = vigen_method_load(&m, file, NULL, err);
     if (rc != VIGEN_OK) return rc;
     int generated = vigen_method_is_generated(m);
     int inexact = opt->allow_inexact;
@@ -137,5 +175,12 @@ int vigen_emit_load_render(vigen_tableau *t, int *loaded, const char *file, vige
     }
     opt->allow_inexact = inexact;
     vigen_method_free(m);
+    if (rc != VIGEN_OK && *loaded) {
+        /* the rendering's messages name entries of the tableau, not the file
+         * (a template error is about the installation, not the file) */
+        if (rc != VIGEN_E_TEMPLATE && err->message) vigen_error_prefix(err, "%s: ", file);
+        vigen_tableau_clear(t);
+        *loaded = 0;
+    }
     return rc;
 }

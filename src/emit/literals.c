@@ -166,7 +166,40 @@ int vigen_emit_evaluate(emit_ctx *E, vigen_error *err)
 
 slong vigen_emit_spec_digits(int real) { return real == VIGEN_REAL_FLOAT128 ? 60 : 40; }
 
-const char *const vigen_emit_real_names[3] = { "double", "long-double", "float128" };
+const vigen_emit_real_type vigen_emit_reals[VIGEN_EMIT_NREALS] = {
+    [VIGEN_REAL_DOUBLE] = { "double", "double", "", 53 },
+    [VIGEN_REAL_LONG_DOUBLE] = { "long-double", "long double", "_ld", 64 },
+    [VIGEN_REAL_FLOAT128] = { "float128", "vigen_float128", "_q", 113 },
+};
+
+int vigen_emit_real_parse(int *real, const char *name)
+{
+    for (int k = 0; k < VIGEN_EMIT_NREALS; k++)
+        if (strcmp(vigen_emit_reals[k].name, name) == 0) {
+            *real = k;
+            return VIGEN_OK;
+        }
+    return VIGEN_E_USAGE;
+}
+
+const char *vigen_emit_real_name(int real)
+{
+    return real >= 0 && real < VIGEN_EMIT_NREALS ? vigen_emit_reals[real].name : NULL;
+}
+
+/* Composed once from the table (a static buffer: the list is the same for
+ * every caller). */
+const char *vigen_emit_real_names(void)
+{
+    static char list[96];
+    if (list[0] == '\0') {
+        size_t n = 0;
+        for (int k = 0; k < VIGEN_EMIT_NREALS; k++)
+            n += (size_t)snprintf(list + n, sizeof list - n, "%s%s",
+                                  k == 0 ? "" : k + 1 == VIGEN_EMIT_NREALS ? " or " : ", ", vigen_emit_reals[k].name);
+    }
+    return list;
+}
 
 /* How the messages name the input. */
 static const char *input_name(const emit_ctx *E, const vigen_emit_options *opt)
@@ -188,7 +221,7 @@ void vigen_emit_precision_message(emit_ctx *E, const vigen_emit_options *opt, vi
     else what = vigen_strdup_printf("%s (computed from entries given as rounded decimals)", lab);
     const char *why = E->fail_kind == 2 ? "is a ball around zero too wide to be rounded" : "is not known well enough to round it correctly";
     long bits = (long)E->bits, need = (long)vigen_emit_spec_digits(E->real);
-    const char *rname = vigen_emit_real_names[E->real];
+    const char *rname = vigen_emit_reals[E->real].name;
     if (t->generated_now)
         vigen_error_set(err, VIGEN_E_INEXACT,
                         "%s %s to %ld bits (%s), even generated from the spec with %ld digits (the value lies "
@@ -241,7 +274,7 @@ void vigen_emit_report_marks(emit_ctx *E, const vigen_emit_options *opt)
         vigen_warn("%s: --allow-inexact: rounded %ld entr%s to %s (%ld bits) from %s decimals as written (%s%s%s): "
                    "too few digits to round %s correctly, so the stepper's coefficients are only as good as these "
                    "decimals",
-                   in, (long)ninexact, ninexact == 1 ? "y" : "ies", vigen_emit_real_names[E->real], (long)E->bits,
+                   in, (long)ninexact, ninexact == 1 ? "y" : "ies", vigen_emit_reals[E->real].name, (long)E->bits,
                    ninexact == 1 ? "its" : "their", ninexact ? names.data : "none", more, derived,
                    ninexact == 1 ? "it" : "them");
     }

@@ -22,6 +22,8 @@ typedef struct {
     const vigen_tableau *t;
     slong s, prec, bits;
     int real, allow_inexact, inexact_done;
+    const char *variant;          /* the variant's name when it is not the default (the header
+                                     records it), else NULL */
     arb_ptr c, b, bt;
     arb_mat_t A, At;
     char **At_text, **bt_text;    /* At = A and bt = b when absent */
@@ -33,7 +35,15 @@ typedef struct {
     vigen_error *err;
 } emit_ctx;
 
-extern const char *const vigen_emit_real_names[3]; /* "double", "long-double", "float128" */
+/* The target types, in VIGEN_REAL_* order: the one list of them. */
+typedef struct {
+    const char *name;   /* as --real takes it and the messages say it */
+    const char *ctype;  /* the C type of the emitted code */
+    const char *suffix; /* of the runtime's names for the type */
+    slong bits;         /* significand bits */
+} vigen_emit_real_type;
+enum { VIGEN_EMIT_NREALS = 3 };
+extern const vigen_emit_real_type vigen_emit_reals[VIGEN_EMIT_NREALS];
 
 slong vigen_emit_n_entries(slong s);
 /* The reference of entry (i, j) of a part (j ignored for vectors); At and bt

@@ -367,8 +367,7 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
 
 void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, int real)
 {
-    static const char *const reals[] = { "double", "long double", "vigen_float128" };
-    static const char *const sfx[] = { "", "_ld", "_q" };
+    const vigen_emit_real_type *R = &vigen_emit_reals[real];
     const emit_explicit *X = &K->X;
     vigen_slots_flag(S, "EXPLICIT", X->mode != EMIT_EXPLICIT_NONE);
     vigen_slots_flag(S, "IMPLICIT", X->mode != EMIT_EXPLICIT_GENERAL);
@@ -378,6 +377,6 @@ void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, i
      * stage, cq, cp, q0s, p0s, 6 for the finite-difference Hessian, and the
      * explicit path's work arrays */
     vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 4 + 6 + X->nx);
-    implicit_blocks(S, K, name, reals[real]);
-    explicit_blocks(S, X, name, reals[real], sfx[real]);
+    implicit_blocks(S, K, name, R->ctype);
+    explicit_blocks(S, X, name, R->ctype, R->suffix);
 }

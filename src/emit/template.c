@@ -9,6 +9,7 @@
 #if defined(__linux__)
 #include <unistd.h>
 #endif
+#include "core/file.h"
 #include "emit/template.h"
 
 /* ------------------------------------------------------------- slot sets */
@@ -270,7 +271,7 @@ static int render_line(vigen_strbuf *out, render_ctx *R, long lineno, const char
 }
 
 int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
-                          vigen_error *err)
+                          unsigned char *declared, vigen_error *err)
 {
     *out = NULL;
     render_ctx R = { file, slots, NULL, NULL, 0, err };
@@ -331,6 +332,9 @@ int vigen_template_render(char **out, const char *text, const char *file, const 
     /* and the declaration lists what the template uses, nothing more */
     for (size_t d = 0; d < R.ndeclared && rc == VIGEN_OK; d++)
         if (R.decl_used[d] == 0) rc = fail(&R, 1, "slot %s is declared but never used", R.declared[d]);
+    for (size_t k = 0; declared && rc == VIGEN_OK && k < slots->n; k++)
+        for (size_t d = 0; d < R.ndeclared; d++)
+            if (strcmp(slots->v[k]->name, R.declared[d]) == 0) declared[k] = 1;
     for (size_t d = 0; d < R.ndeclared; d++) free(R.declared[d]);
     free(R.declared);
     free(R.decl_used);
@@ -339,29 +343,25 @@ int vigen_template_render(char **out, const char *text, const char *file, const 
     return VIGEN_OK;
 }
 
-static char *read_whole_file(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (f == NULL) return NULL;
-    vigen_strbuf sb;
-    vigen_strbuf_init(&sb);
-    vigen_strbuf_append(&sb, "");
-    char buf[4096];
-    size_t n;
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0) vigen_strbuf_appendn(&sb, buf, n);
-    int bad = ferror(f);
-    fclose(f);
-    if (bad) { vigen_strbuf_clear(&sb); return NULL; }
-    return sb.data;
-}
-
-int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, vigen_error *err)
+/* A template that cannot be read is a broken installation, whatever the
+ * input: hence VIGEN_E_TEMPLATE (exit status 3), not an input error. */
+int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, unsigned char *declared,
+                               vigen_error *err)
 {
     *out = NULL;
-    char *text = read_whole_file(path);
-    if (text == NULL)
-        return vigen_error_set(err, VIGEN_E_IO, "cannot read template %s (set VIGEN_TEMPLATE_DIR to the templates/ directory)", path);
-    int rc = vigen_template_render(out, text, path, slots, err);
+    char *text = NULL;
+    size_t len;
+    int rc = vigen_read_file(&text, &len, path, (size_t)1 << 20, err);
+    if (rc == VIGEN_E_IO || rc == VIGEN_E_LIMIT) {
+        char *why = vigen_strdup(err->message ? err->message : path);
+        vigen_error_set(err, VIGEN_E_TEMPLATE,
+                        "template %s; vigen's templates are missing or damaged: reinstall vigen, or set "
+                        "VIGEN_TEMPLATE_DIR to a copy of its templates/ directory", why);
+        free(why);
+        return VIGEN_E_TEMPLATE;
+    }
+    if (rc != VIGEN_OK) return rc;
+    rc = vigen_template_render(out, text, path, slots, declared, err);
     free(text);
     return rc;
 }

@@ -69,14 +69,19 @@ void vigen_slot_line(vigen_slot *slot, const char *fmt, ...)
 const vigen_slot *vigen_slots_find(const vigen_slots *s, const char *name);
 
 /* Renders template text (named `file` in messages) with the slots.  On
- * success *out is a heap string.  VIGEN_E_TEMPLATE: the template and the
- * slots do not match (the message names file:line and the slot). */
+ * success *out is a heap string, and declared[k] is set to 1 for every slot
+ * slots->v[k] the template declares (declared: NULL, or slots->n flags the
+ * caller zeroes, so that one array can collect the declarations of a
+ * variant's templates).  VIGEN_E_TEMPLATE: the template and the slots do not
+ * match (the message names file:line and the slot). */
 int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
-                          vigen_error *err);
+                          unsigned char *declared, vigen_error *err);
 
-/* Like vigen_template_render but reads the template from path (VIGEN_E_IO
- * when it cannot). */
-int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, vigen_error *err);
+/* Like vigen_template_render but reads the template from path.  A template
+ * that cannot be read is VIGEN_E_TEMPLATE too (a broken installation): the
+ * message names the path and says to reinstall or set VIGEN_TEMPLATE_DIR. */
+int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, unsigned char *declared,
+                               vigen_error *err);
 
 /* The directory of a variant's templates (heap string): <root>/<variant>,
  * root being $VIGEN_TEMPLATE_DIR when set; else, for an installed vigen (an

@@ -13,18 +13,18 @@
 typedef int (*vigen_emit_slot_builder)(vigen_slots *S, emit_ctx *E, const vigen_emit_options *opt, const char *ident);
 
 typedef struct {
-    const char *name;        /* as `vigen emit` and the messages call it */
-    const char *dir;         /* templates/<dir>/ holds stepper.h.in and stepper.c.in */
+    const char *name;        /* how options and messages call it; its folder templates/<name>/ */
     const char *description;
     vigen_emit_slot_builder build;
 } vigen_emit_variant;
 
-#define X(id, name, dir, description, builder) \
+#define X(name, description, builder) \
     int builder(vigen_slots *S, emit_ctx *E, const vigen_emit_options *opt, const char *ident);
 #include "emit/variants.def"
 #undef X
 
-/* The variant of that name (NULL: the first row), or NULL when unknown. */
+/* The variant of that name (NULL: the first row, the default), or NULL when
+ * there is none of that name. */
 const vigen_emit_variant *vigen_emit_variant_find(const char *name);
 
 #endif

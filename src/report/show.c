@@ -7,14 +7,37 @@
 #include "vigen/show.h"
 #include "report/json.h"
 
+/* The formats by name, the one list of them. */
+static const struct {
+    const char *name;
+    vigen_show_format format;
+} formats[] = {
+    { "text", VIGEN_SHOW_TEXT }, { "latex", VIGEN_SHOW_LATEX }, { "json", VIGEN_SHOW_JSON }, { "lua", VIGEN_SHOW_LUA },
+};
+enum { NFORMATS = sizeof formats / sizeof formats[0] };
+
 int vigen_show_parse_format(vigen_show_format *fmt, const char *name)
 {
-    if (strcmp(name, "text") == 0) *fmt = VIGEN_SHOW_TEXT;
-    else if (strcmp(name, "latex") == 0) *fmt = VIGEN_SHOW_LATEX;
-    else if (strcmp(name, "json") == 0) *fmt = VIGEN_SHOW_JSON;
-    else if (strcmp(name, "lua") == 0) *fmt = VIGEN_SHOW_LUA;
-    else return 0;
-    return 1;
+    for (size_t k = 0; k < NFORMATS; k++)
+        if (strcmp(formats[k].name, name) == 0) {
+            *fmt = formats[k].format;
+            return 1;
+        }
+    return 0;
+}
+
+/* Composed once from the table (a static buffer: the list is the same for
+ * every caller). */
+const char *vigen_show_format_names(void)
+{
+    static char list[64];
+    if (list[0] == '\0') {
+        size_t n = 0;
+        for (size_t k = 0; k < NFORMATS; k++)
+            n += (size_t)snprintf(list + n, sizeof list - n, "%s%s",
+                                  k == 0 ? "" : k + 1 == NFORMATS ? " or " : ", ", formats[k].name);
+    }
+    return list;
 }
 
 static void free_strings(char **v, slong n)

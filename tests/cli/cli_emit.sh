@@ -3,7 +3,8 @@
 # byte-identical reruns, sanitised names, refusal of too few digits (with
 # advice) and --allow-inexact (one summary warning), specs generated on the
 # fly, the warning for tableaux that are not symplectic or not consistent,
-# usage, and a template that breaks the slot contract.
+# usage, a template that breaks the slot contract, a slot no template
+# declares, and a missing template.
 set -u
 VIGEN=$1
 SRC=$2
@@ -137,7 +138,17 @@ cp "$SRC/templates/prk/stepper.h.in" "$T/tpl/prk/"
 sed 's|^#include <float.h>$|#include <float.h> /* @ORDRE@ */|' "$SRC/templates/prk/stepper.c.in" >"$T/tpl/prk/stepper.c.in"
 line=$(grep -n "@ORDRE@" "$T/tpl/prk/stepper.c.in" | cut -d: -f1)
 VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
-check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "tpl/prk/stepper.c.in:$line: slot ORDRE is used but not declared" "$T/err.txt"' "template breaking the slot contract: refused, file, line and slot named"
+check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: template $T/tpl/prk/stepper.c.in:$line: slot ORDRE is used but not declared" "$T/err.txt"' "template breaking the slot contract: refused, file, line and slot named (not the input)"
+# A slot the builder supplies that neither template declares any more.
+sed -e '1s/ ORDER / /' -e 's/_ORDER @ORDER@$/_ORDER -1/' "$SRC/templates/prk/stepper.h.in" >"$T/tpl/prk/stepper.h.in"
+sed -e '2s/ ORDER / /' -e 's/@STAGES@, @ORDER@,/@STAGES@, -1,/' "$SRC/templates/prk/stepper.c.in" >"$T/tpl/prk/stepper.c.in"
+VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
+check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: variant prk: its slot builder supplies slot ORDER, but no template of the variant declares it" "$T/err.txt"' "a supplied slot no template declares: refused, slot and variant named"
+# A missing template is a broken installation: exit 3, the path and what to
+# do, not blamed on the input.
+rm "$T/tpl/prk/stepper.c.in"
+VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
+check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: template $T/tpl/prk/stepper.c.in: cannot open: .*reinstall vigen, or set VIGEN_TEMPLATE_DIR" "$T/err.txt"' "missing template: exit 3, path and remedy, no input prefix"
 
 rm -rf "$T"
 exit $fail

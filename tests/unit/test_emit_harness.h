@@ -122,7 +122,7 @@ static int harness_emit(const char *path, const char *name, int real, char **c_t
         vigen_error_clear(&err);
         return 0;
     }
-    vigen_emit_options opt = { name, real, path, 0, NULL };
+    vigen_emit_options opt = { name, real, path, 0, NULL, NULL };
     char *h = NULL, *c = NULL, *id = NULL;
     int rc = vigen_emit_render(&t, &opt, &h, &c, &id, &err);
     vigen_tableau_clear(&t);

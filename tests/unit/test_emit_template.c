@@ -5,12 +5,21 @@
  * as the wrong kind, a malformed mark) is VIGEN_E_TEMPLATE with a message
  * naming the file, the line and the slot.  The shipped PRK templates declare
  * exactly the slots the PRK builder supplies (rendering them succeeds in
- * test_emit; here: every declared name is used). */
+ * test_emit; here: every declared name is used).  From the emitter's side: a
+ * slot the builder supplies that no template of the variant declares is
+ * VIGEN_E_TEMPLATE naming the slot and the variant; a template that cannot be
+ * read is VIGEN_E_TEMPLATE (a broken installation, not bad input); the
+ * variant is chosen by its name in variants.def and an unknown name is
+ * refused with the list of variants; the real types are parsed by name. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "testlib.h"
+#include "vigen/emit.h"
+#include "core/file.h"
 #include "emit/template.h"
 
 
@@ -36,7 +45,7 @@ static int render(const char *text, char **out)
     standard_slots(&S);
     vigen_error err;
     vigen_error_init(&err);
-    int rc = vigen_template_render(out, text, "t.in", &S, &err);
+    int rc = vigen_template_render(out, text, "t.in", &S, NULL, &err);
     if (rc != VIGEN_OK) *out = vigen_strdup(err.message ? err.message : "");
     vigen_error_clear(&err);
     vigen_slots_clear(&S);
@@ -120,6 +129,17 @@ static void test_malformed(void)
     expect_error("int x;\n", "t.in:1", "vigen-template slots", "declaration");
 }
 
+static char *slurp(const char *path)
+{
+    char *text = NULL;
+    size_t len;
+    vigen_error err;
+    vigen_error_init(&err);
+    if (vigen_read_file(&text, &len, path, (size_t)1 << 20, &err) != VIGEN_OK) fprintf(stderr, "%s\n", err.message);
+    vigen_error_clear(&err);
+    return text;
+}
+
 /* The shipped templates: the engine's own check covers used-but-undeclared;
  * here the other direction, every declared name occurs in a mark. */
 static void test_shipped(void)
@@ -171,8 +191,178 @@ static void test_dir(void)
     free(d);
 }
 
+/* The declarations of several templates collect in one array: a slot no
+ * template declares stays 0. */
+static void test_declared(void)
+{
+    vigen_slots S;
+    standard_slots(&S);
+    unsigned char *declared = calloc(S.n, 1);
+    vigen_error err;
+    vigen_error_init(&err);
+    char *out = NULL;
+    CHECK(vigen_template_render(&out, "/* vigen-template slots: NAME ON */\n@if ON@\n@NAME@\n@end@\n", "a.in", &S,
+                                declared, &err) == VIGEN_OK);
+    free(out);
+    CHECK(vigen_template_render(&out, "/* vigen-template slots: BODY */\n@@BODY@@\n", "b.in", &S, declared, &err) ==
+          VIGEN_OK);
+    free(out);
+    for (size_t k = 0; k < S.n; k++) {
+        const char *name = S.v[k]->name;
+        int want = strcmp(name, "NAME") == 0 || strcmp(name, "ON") == 0 || strcmp(name, "BODY") == 0;
+        CHECK_MSG(declared[k] == want, "slot %s: declared flag %d", name, declared[k]);
+    }
+    free(declared);
+    vigen_error_clear(&err);
+    vigen_slots_clear(&S);
+}
+
+/* Writes text with the first occurrence of each `from` replaced by `to`. */
+static void write_edited(const char *path, const char *text, const char *const *from, const char *const *to, int n)
+{
+    char *t = vigen_strdup(text);
+    for (int k = 0; k < n; k++) {
+        char *at = strstr(t, from[k]);
+        CHECK_MSG(at != NULL, "%s: '%s' not in the template", path, from[k]);
+        if (at == NULL) continue;
+        char *u = vigen_strdup_printf("%.*s%s%s", (int)(at - t), t, to[k], at + strlen(from[k]));
+        free(t);
+        t = u;
+    }
+    FILE *f = fopen(path, "wb");
+    CHECK(f != NULL);
+    if (f) {
+        fputs(t, f);
+        fclose(f);
+    }
+    free(t);
+}
+
+typedef struct {
+    int rc, loaded;
+    char *h, *c, *message;
+} emitted;
+
+static emitted emit_gauss2(const char *file, const char *template_dir, const char *variant)
+{
+    vigen_emit_options opt = { "g2", VIGEN_REAL_DOUBLE, "gauss2.lua", 0, template_dir, variant };
+    emitted e = { 0, 0, NULL, NULL, NULL };
+    vigen_tableau t;
+    char *ident = NULL;
+    vigen_error err;
+    vigen_error_init(&err);
+    e.rc = vigen_emit_load_render(&t, &e.loaded, file, &opt, &e.h, &e.c, &ident, &err);
+    if (e.loaded) vigen_tableau_clear(&t);
+    e.message = vigen_strdup(err.message ? err.message : "");
+    vigen_error_clear(&err);
+    free(ident);
+    return e;
+}
+
+static void emitted_clear(emitted *e)
+{
+    free(e->h);
+    free(e->c);
+    free(e->message);
+}
+
+/* Both templates of the variant stop declaring and using ORDER while the
+ * builder still supplies it: each template on its own keeps its contract,
+ * only the variant as a whole can see the slot nobody declares. */
+static void test_variant_contract(void)
+{
+    char dir[] = "/tmp/vigen-test-template-XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    char *prk = vigen_strdup_printf("%s/prk", dir);
+    CHECK(mkdir(prk, 0777) == 0);
+    char *h = slurp("templates/prk/stepper.h.in"), *c = slurp("templates/prk/stepper.c.in");
+    CHECK(h != NULL && c != NULL);
+    char *hp = vigen_strdup_printf("%s/stepper.h.in", prk), *cp = vigen_strdup_printf("%s/stepper.c.in", prk);
+    if (h && c) {
+        static const char *const hfrom[] = { " ORDER ", "_ORDER @ORDER@" }, *const hto[] = { " ", "_ORDER -1" };
+        static const char *const cfrom[] = { " ORDER ", "@STAGES@, @ORDER@," }, *const cto[] = { " ", "@STAGES@, -1," };
+        write_edited(hp, h, hfrom, hto, 2);
+        write_edited(cp, c, cfrom, cto, 2);
+        emitted e = emit_gauss2("tests/data/emit/gauss2.lua", dir, NULL);
+        CHECK_MSG(e.rc == VIGEN_E_TEMPLATE && strstr(e.message, "slot ORDER") && strstr(e.message, "variant prk") &&
+                      !strchr(e.message, '\n') && e.h == NULL && e.c == NULL && !e.loaded,
+                  "rc %d: %s", e.rc, e.message);
+        emitted_clear(&e);
+        /* the unedited templates in the same place render */
+        write_edited(hp, h, NULL, NULL, 0);
+        write_edited(cp, c, NULL, NULL, 0);
+        e = emit_gauss2("tests/data/emit/gauss2.lua", dir, NULL);
+        CHECK_MSG(e.rc == VIGEN_OK && e.loaded, "rc %d: %s", e.rc, e.message);
+        emitted_clear(&e);
+        /* a template missing: a broken installation, said with the path and
+         * what to do, and not blamed on the input file */
+        remove(cp);
+        e = emit_gauss2("tests/data/emit/gauss2.lua", dir, NULL);
+        CHECK_MSG(e.rc == VIGEN_E_TEMPLATE && strncmp(e.message, "template ", 9) == 0 &&
+                      strncmp(e.message + 9, cp, strlen(cp)) == 0 && strstr(e.message, "reinstall") &&
+                      strstr(e.message, "VIGEN_TEMPLATE_DIR") && !strstr(e.message, "gauss2.lua") &&
+                      !strchr(e.message, '\n') && !e.loaded,
+                  "rc %d: %s", e.rc, e.message);
+        emitted_clear(&e);
+    }
+    remove(hp);
+    remove(cp);
+    rmdir(prk);
+    rmdir(dir);
+    free(h);
+    free(c);
+    free(hp);
+    free(cp);
+    free(prk);
+}
+
+/* The variant by name: "prk" is the default; an unknown name is refused
+ * before the file is read, listing the variants with their descriptions. */
+static void test_variant_choice(void)
+{
+    emitted d = emit_gauss2("tests/data/emit/gauss2.lua", NULL, NULL);
+    emitted p = emit_gauss2("tests/data/emit/gauss2.lua", NULL, "prk");
+    CHECK(d.rc == VIGEN_OK && p.rc == VIGEN_OK);
+    CHECK(d.rc == VIGEN_OK && p.rc == VIGEN_OK && strcmp(d.h, p.h) == 0 && strcmp(d.c, p.c) == 0);
+    emitted_clear(&d);
+    emitted_clear(&p);
+    emitted u = emit_gauss2("/nonexistent/gauss2.lua", NULL, "rkn");
+    CHECK_MSG(u.rc == VIGEN_E_USAGE && strstr(u.message, "unknown variant 'rkn'") &&
+                  strstr(u.message, "prk (partitioned Runge-Kutta stepper") && !strchr(u.message, '\n') &&
+                  !u.loaded && u.h == NULL,
+              "rc %d: %s", u.rc, u.message);
+    emitted_clear(&u);
+    /* an error about the tableau names the file (16 digits as double) */
+    emitted i = emit_gauss2("tableaux/published/blanes_moan_s6_4.lua", NULL, NULL);
+    CHECK_MSG(i.rc == VIGEN_E_INEXACT && strncmp(i.message, "tableaux/published/blanes_moan_s6_4.lua: c[1]", 45) == 0 &&
+                  !i.loaded,
+              "rc %d: %s", i.rc, i.message);
+    emitted_clear(&i);
+}
+
+/* The real types by name, as --real takes them. */
+static void test_real_names(void)
+{
+    static const char *const names[] = { "double", "long-double", "float128" };
+    static const int types[] = { VIGEN_REAL_DOUBLE, VIGEN_REAL_LONG_DOUBLE, VIGEN_REAL_FLOAT128 };
+    for (int k = 0; k < 3; k++) {
+        int r = -1;
+        CHECK(vigen_emit_real_parse(&r, names[k]) == VIGEN_OK && r == types[k]);
+        CHECK(strcmp(vigen_emit_real_name(types[k]), names[k]) == 0);
+    }
+    int r = 7;
+    CHECK(vigen_emit_real_parse(&r, "long double") == VIGEN_E_USAGE && r == 7);
+    CHECK(vigen_emit_real_parse(&r, "half") == VIGEN_E_USAGE && r == 7);
+    CHECK(vigen_emit_real_name(3) == NULL && vigen_emit_real_name(-1) == NULL);
+    CHECK(strcmp(vigen_emit_real_names(), "double, long-double or float128") == 0);
+}
+
 int main(void)
 {
+    test_declared();
+    test_variant_contract();
+    test_variant_choice();
+    test_real_names();
     test_dir();
     test_rendering();
     test_contract();
