@@ -55,7 +55,8 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
 /* The name of an option as the user sees it: "--digits" or "-o". */
 const char *vigen_cli_option_name(int option);
 
-/* "vigen COMMAND: message" and "see 'vigen help COMMAND'" on standard error;
+/* "vigen COMMAND: message" and "see 'vigen help COMMAND'" ("see 'vigen
+ * help'" for the global words and for help itself) on standard error;
  * returns 2 (a usage error).  command: VIGEN_CMD_* or VIGEN_CMD_global. */
 int vigen_cli_usage_error(int command, const char *fmt, ...)
 #if defined(__GNUC__)

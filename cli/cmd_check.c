@@ -4,22 +4,11 @@
 #include "vigen/check.h"
 #include "vigen/method.h"
 
-/* The checker's loader: FILE (or FILE2) as a method file, run once. */
-static int load_method_tableau(vigen_tableau *t, const char *path, slong digits, vigen_error *err)
-{
-    vigen_method *m = NULL;
-    int rc = vigen_method_load(&m, path, NULL, err);
-    if (rc != VIGEN_OK) return rc;
-    rc = vigen_method_tableau(t, m, digits, err);
-    vigen_method_free(m);
-    return rc;
-}
-
 int vigen_cmd_check(const vigen_cli_args *args)
 {
     vigen_check_options opt;
     vigen_check_options_init(&opt);
-    opt.load = load_method_tableau;
+    opt.load = vigen_source_load; /* FILE and FILE2, each run once */
     opt.path = args->operand;
     opt.against = args->value[VIGEN_OPT_check_against];
     opt.json = args->value[VIGEN_OPT_check_json] != NULL;

@@ -64,6 +64,7 @@ int vigen_cmd_emit(const vigen_cli_args *args)
     const char *base = strrchr(file, '/');
     vigen_emit_options opt = { .name = name, .real = real, .input_label = base ? base + 1 : file,
                                .allow_inexact = args->value[VIGEN_OPT_emit_allow_inexact] != NULL };
+    opt.variant = args->value[VIGEN_OPT_emit_variant];
 
     vigen_error err;
     vigen_error_init(&err);

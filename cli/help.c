@@ -19,6 +19,45 @@ enum { EXIT_STATUS_COUNT = sizeof exit_meaning / sizeof exit_meaning[0] };
 
 static int applies(const vigen_cli_option *o, int command) { return o->command == command; }
 
+/* Help fits a terminal of this many columns. */
+#define HELP_COLUMNS 80
+
+/* Columns of n bytes of UTF-8 text (every character one column). */
+static int columns(const char *s, size_t n)
+{
+    int c = 0;
+    for (size_t i = 0; i < n; i++) c += ((unsigned char)s[i] & 0xC0) != 0x80;
+    return c;
+}
+
+/* text written from column col, broken at spaces before HELP_COLUMNS and at
+ * each '\n', every further line starting at column indent. */
+static void put_wrapped(FILE *out, const char *text, int col, int indent)
+{
+    const char *p = text;
+    while (*p) {
+        const char *gap = p;
+        while (*p == ' ') p++;
+        if (*p == '\n') {
+            fprintf(out, "\n%*s", indent, "");
+            col = indent;
+            p++;
+            continue;
+        }
+        if (*p == '\0') break;
+        const char *word = p;
+        while (*p && *p != ' ' && *p != '\n') p++;
+        int g = (int)(word - gap), w = columns(word, (size_t)(p - word));
+        if (col > indent && col + g + w > HELP_COLUMNS) {
+            fprintf(out, "\n%*s", indent, "");
+            col = indent;
+            g = 0;
+        }
+        fprintf(out, "%*s%.*s", g, "", (int)(p - word), word);
+        col += g + w;
+    }
+}
+
 /* "-q, --quiet", "--digits N", "-o FILE": the left column of an option. */
 static void option_label(char *buf, size_t size, const vigen_cli_option *o)
 {
@@ -41,10 +80,7 @@ static void print_options(FILE *out, int command)
         if (!applies(o, command)) continue;
         option_label(label, sizeof label, o);
         fprintf(out, "  %-*s  ", (int)width, label);
-        for (const char *d = o->description; *d; d++) {
-            fputc(*d, out);
-            if (*d == '\n') fprintf(out, "  %-*s  ", (int)width, "");
-        }
+        put_wrapped(out, o->description, 4 + (int)width, 4 + (int)width);
         fputc('\n', out);
     }
 }
@@ -52,12 +88,17 @@ static void print_options(FILE *out, int command)
 void vigen_cli_print_usage(FILE *out, int command)
 {
     const vigen_cli_command *c = &vigen_cli_commands[command];
-    fprintf(out, "usage: vigen %s%s%s", c->name, c->operand[0] ? " " : "", c->operand);
+    int indent = fprintf(out, "usage: vigen %s", c->name) + 1, col = indent - 1;
+    if (c->operand[0]) col += fprintf(out, " %s", c->operand);
     for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
         const vigen_cli_option *o = &vigen_cli_options[k];
         if (!applies(o, command)) continue;
-        fprintf(out, " %s%s%s%s%s", o->required ? "" : "[", vigen_cli_option_name(k), o->metavar ? " " : "",
-                o->metavar ? o->metavar : "", o->required ? "" : "]");
+        char item[96];
+        int n = snprintf(item, sizeof item, "%s%s%s%s%s", o->required ? "" : "[", vigen_cli_option_name(k),
+                         o->metavar ? " " : "", o->metavar ? o->metavar : "", o->required ? "" : "]");
+        /* further lines of options start under the first word after the command */
+        if (col + 1 + n > HELP_COLUMNS) col = fprintf(out, "\n%*s%s", indent, "", item) - 1;
+        else col += fprintf(out, " %s", item);
     }
     fputc('\n', out);
 }
@@ -73,11 +114,9 @@ static void print_exit_statuses(FILE *out)
             for (int code = 1; code < VIGEN_STATUS_COUNT; code++) {
                 if (vigen_status_exit_code(code) != e) continue;
                 const char *words = vigen_status_name(code);
-                if (col + 2 + (int)strlen(words) > 80) {
-                    fprintf(out, "%s\n     ", sep);
-                    col = 5;
-                } else col += fprintf(out, "%s", sep);
-                col += fprintf(out, " %s", words);
+                /* further lines start under the words, at column 5 */
+                if (col + 3 + (int)strlen(words) > HELP_COLUMNS) col = fprintf(out, "%s\n     %s", sep, words) - 2;
+                else col += fprintf(out, "%s %s", sep, words);
                 sep = ",";
             }
         }
@@ -89,10 +128,7 @@ static void print_exit_statuses(FILE *out)
 static void print_topic(FILE *out, const char *name, const char *summary)
 {
     int col = fprintf(out, "  vigen help %s  ", name);
-    for (const char *p = summary; *p; p++) {
-        fputc(*p, out);
-        if (*p == '\n' && p[1]) fprintf(out, "%*s", col, "");
-    }
+    put_wrapped(out, summary, col, col);
     fputc('\n', out);
 }
 
@@ -129,7 +165,8 @@ void vigen_cli_print_help(FILE *out)
     fputs("\nhelp topics:\n", out);
 #define TOPIC(name, summary) print_topic(out, #name, summary);
 #include "commands.def"
-    fputs("\nRun 'vigen help COMMAND' (or 'vigen COMMAND --help') for the options of a command.\n", out);
+    fputs("\nRun 'vigen help COMMAND' (or 'vigen COMMAND --help') for the options of a\n"
+          "command.\n", out);
 }
 
 void vigen_cli_print_command_help(FILE *out, int command)
@@ -142,16 +179,21 @@ void vigen_cli_print_command_help(FILE *out, int command)
         fputs("\noptions:\n", out);
         print_options(out, command);
     }
-    fputs("\noptions for every command:", out);
+    int col = fprintf(out, "\noptions for every command:") - 1;
     const char *sep = " ";
     for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
         const vigen_cli_option *o = &vigen_cli_options[k];
         if (!applies(o, VIGEN_CMD_global)) continue;
-        fprintf(out, "%s%s%s%s", sep, vigen_cli_option_name(k), o->metavar ? " " : "", o->metavar ? o->metavar : "");
+        char item[96];
+        int n = snprintf(item, sizeof item, "%s%s%s", vigen_cli_option_name(k), o->metavar ? " " : "",
+                         o->metavar ? o->metavar : "");
+        /* an option and its value are not parted by a line break */
+        if (col + (int)strlen(sep) + n + 1 > HELP_COLUMNS) col = fprintf(out, ",\n  %s", item) - 2;
+        else col += fprintf(out, "%s%s", sep, item);
         sep = ", ";
     }
     fputs("\nexit status: 0 success, 1 a verdict of check, 2 bad input or usage, 3 a resource\n"
-          "or system failure; both are explained in 'vigen help'.\n", out);
+          "or system failure; the exit statuses are explained in 'vigen help'.\n", out);
 }
 
 int vigen_cmd_help(const vigen_cli_args *args)

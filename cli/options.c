@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include "cli.h"
 
 const vigen_cli_command vigen_cli_commands[VIGEN_CMD_COUNT] = {
@@ -36,7 +37,8 @@ int vigen_cli_usage_error(int command, const char *fmt, ...)
     print_prefix(command);
     vfprintf(stderr, fmt, ap);
     va_end(ap);
-    if (command == VIGEN_CMD_global) fputs("\nsee 'vigen help'\n", stderr);
+    /* the help of help would not help with its operand */
+    if (command == VIGEN_CMD_global || command == VIGEN_CMD_help) fputs("\nsee 'vigen help'\n", stderr);
     else fprintf(stderr, "\nsee 'vigen help %s'\n", vigen_cli_commands[command].name);
     return 2;
 }
@@ -75,8 +77,48 @@ static int find_option(int command, const char *word, size_t len)
     return -1;
 }
 
+/* The commands other than command that have an option called key, as
+ * "generate and emit" into buf; returns how many there are. */
+static int other_owners(char *buf, size_t size, int command, const char *key)
+{
+    int owners[VIGEN_CMD_COUNT], n = 0;
+    for (int c = 0; c < VIGEN_CMD_COUNT; c++) {
+        if (c == command) continue;
+        for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+            const vigen_cli_option *o = &vigen_cli_options[k];
+            if (o->command != c) continue;
+            if ((o->long_name && strcmp(o->long_name, key) == 0) || (o->short_name && strcmp(o->short_name, key) == 0)) {
+                owners[n++] = c;
+                break;
+            }
+        }
+    }
+    buf[0] = '\0';
+    for (int i = 0, used = 0; i < n && (size_t)used < size; i++)
+        used += snprintf(buf + used, size - (size_t)used, "%s%s", i == 0 ? "" : i + 1 < n ? ", " : " and ",
+                         vigen_cli_commands[owners[i]].name);
+    return n;
+}
+
+/* An option of another command is named as such; a mistyped long option
+ * gets the nearest name; a one-letter option only a name that differs from
+ * it in case (any other one letter is as near as a guess). */
 static int unknown_option(int command, const char *word)
 {
+    char *key = vigen_strdup(word);
+    char *eq = strchr(key, '=');
+    if (eq) *eq = '\0';
+    char owners[256];
+    int rc;
+    if (other_owners(owners, sizeof owners, command, key) > 0) {
+        if (command == VIGEN_CMD_global)
+            rc = vigen_cli_usage_error(command, "%s is an option of %s: put it after the command", key, owners);
+        else
+            rc = vigen_cli_usage_error(command, "%s is an option of %s, not of %s", key, owners,
+                                       vigen_cli_commands[command].name);
+        free(key);
+        return rc;
+    }
     const char *names[2 * VIGEN_OPT_COUNT + 1];
     size_t n = 0;
     for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
@@ -86,10 +128,11 @@ static int unknown_option(int command, const char *word)
         if (o->short_name) names[n++] = o->short_name;
     }
     names[n] = NULL;
-    char *key = vigen_strdup(word);
-    char *eq = strchr(key, '=');
-    if (eq) *eq = '\0';
-    const char *near = vigen_nearest_name(key, names, 2);
+    const char *near = NULL;
+    if (key[0] == '-' && key[1] != '-' && key[1] != '\0' && key[2] == '\0') {
+        for (size_t i = 0; i < n && near == NULL; i++)
+            if (strcasecmp(names[i], key) == 0) near = names[i];
+    } else near = vigen_nearest_name(key, names, 2);
     free(key);
     if (near) return vigen_cli_usage_error(command, "unknown option '%s'; did you mean '%s'?", word, near);
     return vigen_cli_usage_error(command, "unknown option '%s'", word);
@@ -147,7 +190,18 @@ int vigen_cli_unknown_command(int command, const char *name)
 #include "commands.def"
     }
     names[n] = NULL;
-    const char *near = vigen_nearest_name(name, names, 2);
+    /* a unique prefix ("gen") is most likely an abbreviation */
+    const char *near = NULL;
+    size_t len = strlen(name);
+    for (int i = 0; i < n && len > 0; i++) {
+        if (strncmp(names[i], name, len) != 0) continue;
+        if (near) {
+            near = NULL;
+            break;
+        }
+        near = names[i];
+    }
+    if (near == NULL) near = vigen_nearest_name(name, names, 2);
     const char *what = command == VIGEN_CMD_help ? "command or help topic" : "command";
     if (near) return vigen_cli_usage_error(command, "unknown %s '%s'; did you mean '%s'?", what, name, near);
     return vigen_cli_usage_error(command, "unknown %s '%s'", what, name);

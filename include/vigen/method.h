@@ -9,11 +9,6 @@
 #include "vigen/error.h"
 #include "vigen/tableau.h"
 
-/* Runs the file once: 1 if it is a tableau file (a table with s or A), 0 if
- * a spec (nodes or basis), negative with err set when it cannot be run or is
- * neither.  Superseded by vigen_method_load, which keeps what the run read. */
-int vigen_source_is_tableau(const char *path, vigen_error *err);
-
 /* vigen_method_load, vigen_method_tableau and vigen_method_free in one call:
  * the tableau of the file at path (t uninitialised on entry; initialised on
  * success), the file run once. */
@@ -45,10 +40,5 @@ int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_
  * exact expressions, each with one line of description (`vigen help spec`).
  * A heap string; free with free(). */
 char *vigen_method_vocabulary_text(void);
-
-/* The generator: the tableau of the Galerkin variational integrator of the
- * spec file at path, every entry certified to `digits` significant digits
- * (out uninitialised on entry; initialised on success). */
-int vigen_generate_file(vigen_tableau *out, const char *path, slong digits, vigen_error *err);
 
 #endif

@@ -13,12 +13,28 @@
 
 #include "core/file.h"
 
+/* What the user can do about a file that cannot be opened or read. */
+static const char *read_hint(int errnum)
+{
+    switch (errnum) {
+    case EACCES:
+    case EPERM: return "check its permissions";
+    case EISDIR: return "give a file, not a directory";
+    case ENOENT:
+    case ENOTDIR:
+    case ENAMETOOLONG:
+    case ELOOP: return "check the path";
+    default: return "check the file";
+    }
+}
+
 int vigen_read_file(char **data, size_t *len, const char *path, size_t max_len, vigen_error *err)
 {
     *data = NULL;
     *len = 0;
     FILE *f = fopen(path, "rb");
-    if (f == NULL) return vigen_error_set(err, VIGEN_E_IO, "%s: cannot open: %s", path, strerror(errno));
+    if (f == NULL)
+        return vigen_error_set(err, VIGEN_E_IO, "%s: cannot open: %s; %s", path, strerror(errno), read_hint(errno));
     size_t n = 0, cap = 1 << 16;
     char *buf = malloc(cap);
     int code = buf ? VIGEN_OK : vigen_error_set(err, VIGEN_E_MEMORY, "%s: out of memory", path);
@@ -32,7 +48,8 @@ int vigen_read_file(char **data, size_t *len, const char *path, size_t max_len, 
         size_t got = fread(buf + n, 1, cap - n - 1, f);
         n += got;
         if (got == 0) {
-            if (ferror(f)) code = vigen_error_set(err, VIGEN_E_IO, "%s: cannot read: %s", path, strerror(errno));
+            if (ferror(f))
+                code = vigen_error_set(err, VIGEN_E_IO, "%s: cannot read: %s; %s", path, strerror(errno), read_hint(errno));
             break;
         }
         if (n > max_len)

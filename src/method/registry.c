@@ -3,7 +3,6 @@
  * reader of its kind, which then makes the tableaux asked for. */
 #include <stdlib.h>
 #include <lauxlib.h>
-#include "method/galerkin.h"
 #include "method/methods.h"
 #include "method/vocabulary.h"
 #include "vigen/method.h"
@@ -123,15 +122,6 @@ int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_
     return m->kind->tableau(t, m->state, digits, err);
 }
 
-int vigen_source_is_tableau(const char *path, vigen_error *err)
-{
-    vigen_sandbox *sb = NULL;
-    const method_kind *kind;
-    if (run_and_detect(&sb, &kind, path, NULL, err) != VIGEN_OK) return -1;
-    vigen_sandbox_free(sb);
-    return kind == &kinds[VIGEN_METHOD_TABLEAU];
-}
-
 int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_error *err)
 {
     vigen_method *m = NULL;
@@ -139,15 +129,5 @@ int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_er
     if (rc != VIGEN_OK) return rc;
     rc = vigen_method_tableau(t, m, digits, err);
     vigen_method_free(m);
-    return rc;
-}
-
-int vigen_generate_file(vigen_tableau *out, const char *path, slong digits, vigen_error *err)
-{
-    vigen_spec *spec = NULL;
-    int rc = vigen_spec_load(&spec, path, NULL, err);
-    if (rc != VIGEN_OK) return rc;
-    rc = vigen_galerkin_generate(out, spec, digits, err);
-    vigen_spec_free(spec);
     return rc;
 }

@@ -28,13 +28,45 @@ static const row basis_rows[] = {
 #undef X
 };
 
+/* The text fits a terminal of this many columns. */
+#define TEXT_COLUMNS 80
+
+/* Columns of n bytes of UTF-8 text (every character one column). */
+static size_t columns(const char *s, size_t n)
+{
+    size_t c = 0;
+    for (size_t i = 0; i < n; i++) c += ((unsigned char)s[i] & 0xC0) != 0x80;
+    return c;
+}
+
+/* "  name  description", the names in one column and each description
+ * broken at spaces before TEXT_COLUMNS, its further lines under its first. */
 static void put_rows(vigen_strbuf *sb, const row *rows, size_t n)
 {
     size_t width = 0;
     for (size_t i = 0; i < n; i++)
         if (strlen(rows[i].name) > width) width = strlen(rows[i].name);
-    for (size_t i = 0; i < n; i++)
-        vigen_strbuf_printf(sb, "  %-*s  %s\n", (int)width, rows[i].name, rows[i].description);
+    size_t indent = width + 4;
+    for (size_t i = 0; i < n; i++) {
+        vigen_strbuf_printf(sb, "  %-*s  ", (int)width, rows[i].name);
+        size_t col = indent;
+        for (const char *p = rows[i].description; *p;) {
+            const char *gap = p;
+            while (*p == ' ') p++;
+            if (*p == '\0') break;
+            const char *word = p;
+            while (*p && *p != ' ') p++;
+            size_t g = (size_t)(word - gap), w = columns(word, (size_t)(p - word));
+            if (col > indent && col + g + w > TEXT_COLUMNS) {
+                vigen_strbuf_printf(sb, "\n%*s", (int)indent, "");
+                col = indent;
+                g = 0;
+            }
+            vigen_strbuf_printf(sb, "%*s%.*s", (int)g, "", (int)(p - word), word);
+            col += g + w;
+        }
+        vigen_strbuf_append(sb, "\n");
+    }
 }
 
 char *vigen_method_vocabulary_text(void)
@@ -70,7 +102,8 @@ char *vigen_method_vocabulary_text(void)
     int any_not_ball = 0;
     for (int i = 0; i < nf; i++) any_not_ball |= !vigen_expr_function_at(i)->in_ball_library;
     if (any_not_ball) vigen_strbuf_append(&sb, "  (* in expressions only, not a ball function)\n");
-    vigen_strbuf_append(&sb, "  with + - * / ^, parentheses, integers, rationals and decimals (exact: 0.1 is 1/10)\n");
+    vigen_strbuf_append(&sb, "  with + - * / ^, parentheses, integers, rationals and decimals\n"
+                             "  (exact: 0.1 is 1/10)\n");
     for (int i = 0; i < nf + nc; i++) free(names[i]);
     free(names);
     free(fr);

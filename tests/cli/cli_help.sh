@@ -73,6 +73,14 @@ has err "^see 'vigen help'$"
 status 2 help chek
 short_error "vigen help of a mistyped command"
 has err "did you mean 'check'?"
+# after `vigen help X` the pointer is `vigen help` (not the help of help)
+status 2 help nosuch
+short_error "vigen help of an unknown name"
+has err "^see 'vigen help'$"
+# a unique prefix of a command is taken for an abbreviation
+status 2 gen "$src/tableaux/specs/gauss_legendre_s1.lua"
+short_error "an abbreviated command"
+has err "^vigen: unknown command 'gen'; did you mean 'generate'?$"
 status 2 check "$pub/gauss_2.lua" --agianst "$pub/gauss_2.lua"
 short_error "mistyped option"
 has err "^vigen check: unknown option '--agianst'; did you mean '--against'?$"
@@ -80,6 +88,21 @@ has err "^see 'vigen help check'$"
 status 2 show "$pub/gauss_2.lua" --fromat=json
 short_error "mistyped option with a value"
 has err "did you mean '--format'?"
+# a one-letter option gets no guess, except a change of case
+status 2 show "$pub/gauss_2.lua" -x
+short_error "unknown short option"
+has err "^vigen show: unknown option '-x'$"
+status 2 generate "$src/tableaux/specs/gauss_legendre_s1.lua" -Q
+short_error "short option in the wrong case"
+has err "^vigen generate: unknown option '-Q'; did you mean '-q'?$"
+# an option of other commands is named as such
+status 2 check "$pub/gauss_2.lua" -o x
+short_error "option of other commands"
+has err "^vigen check: -o is an option of generate and emit, not of check$"
+has err "^see 'vigen help check'$"
+status 2 --json check "$pub/gauss_2.lua"
+short_error "a command's option before the command"
+has err "^vigen: --json is an option of check: put it after the command$"
 status 2 frobnicate
 short_error "unknown command"
 ! grep -q "did you mean" "$work/err" || fail "a far name got a did-you-mean hint"
@@ -124,13 +147,17 @@ cmp -s "$work/out" "$work/json1" || fail "global options change the output"
 for c in show check; do
   status 2 $c "$work/missing.lua"
   short_error "$c of a missing file"
-  has err "missing.lua"
+  has err "^vigen $c: $work/missing.lua: cannot open: No such file or directory; check the path$"
 done
 status 2 emit "$work/missing.lua" --name m -o "$work"
 short_error "emit of a missing file"
-status 2 show "$work"
-short_error "show of a directory"
-has err "$work"
+# a directory cannot be read as a file, whoever runs the test (root too)
+for c in show check; do
+  status 2 $c "$work"
+  short_error "$c of a directory"
+  [ "$(wc -l <"$work/err")" = 1 ] || fail "$c of a directory: not one line"
+  has err "^vigen $c: $work: .*; give a file, not a directory$"
+done
 if [ "$(id -u)" != 0 ]; then
   cp "$pub/gauss_2.lua" "$work/locked.lua"
   chmod 000 "$work/locked.lua"
@@ -169,6 +196,18 @@ done
 status 3 --max-instructions 1000 generate "$src/tests/data/bad_specs/endless_loop.lua"
 short_error "instruction cap"
 has err "1000"
+
+# every help text fits 80 columns (counted in characters: UTF-8 continuation
+# bytes are dropped before counting)
+for h in "help generate" "help show" "help check" "help emit" "help help" "help version" help "help spec"; do
+  long=$("$vigen" $h | LC_ALL=C sed 's/[\x80-\xbf]//g' | LC_ALL=C awk 'length > 80')
+  [ -z "$long" ] || fail "vigen $h: lines over 80 columns: $long"
+done
+# wrapped exit-status lines start under the words, at column 5
+"$vigen" help | grep -q "^     [a-z]" || fail "vigen help: no wrapped exit-status line at column 5"
+! "$vigen" help | grep -q "^      [a-z]" || fail "vigen help: an exit-status line indented past the words"
+"$vigen" help check | grep -q "the exit statuses are explained in 'vigen help'" \
+  || fail "vigen help check: the pointer to the exit statuses"
 
 # vigen help spec: the vocabulary of method files, written from the tables
 status 0 help spec

@@ -538,9 +538,19 @@ static void test_method_files(void)
     CHECK(vigen_method_load(&m, scalar, NULL, &err) == VIGEN_E_SPEC && m == NULL);
     CHECK_MSG(starts_with(err.message, scalar) && contains(err.message, "returns a string"), "%s", err.message);
 
-    /* the thin wrappers agree */
-    CHECK(vigen_source_is_tableau(tab, &err) == 1);
-    CHECK(vigen_source_is_tableau(spec, &err) == 0);
+    /* the one-call loader: the midpoint rule from either kind of file */
+    const char *files[] = { spec, tab };
+    for (int i = 0; i < 2; i++) {
+        vigen_tableau t;
+        CHECK_MSG(vigen_source_load(&t, files[i], 20, &err) == VIGEN_OK, "%s", err.message);
+        if (err.code != VIGEN_OK) continue;
+        arb_t half;
+        arb_init(half);
+        arb_set_d(half, 0.5);
+        CHECK(t.s == 1 && arb_contains(t.c, half) && arb_contains_si(t.b, 1));
+        arb_clear(half);
+        vigen_tableau_clear(&t);
+    }
     free(spec);
     free(tab);
     free(partial);
