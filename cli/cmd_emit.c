@@ -7,9 +7,6 @@
 #include "cli.h"
 #include "vigen/emit.h"
 
-static const char *const real_names[] = { "double", "long-double", "float128", NULL };
-static const int real_types[] = { VIGEN_REAL_DOUBLE, VIGEN_REAL_LONG_DOUBLE, VIGEN_REAL_FLOAT128 };
-
 /* A stepper that is not what its user expects is worth a warning even with
  * -q: the conditions that certainly fail. */
 static void audit(vigen_tableau *t, const char *file)
@@ -55,16 +52,13 @@ int vigen_cmd_emit(const vigen_cli_args *args)
     int real = VIGEN_REAL_DOUBLE;
     if (args->value[VIGEN_OPT_emit_real]) {
         const char *r = args->value[VIGEN_OPT_emit_real];
-        int k = 0;
-        while (real_names[k] && strcmp(real_names[k], r) != 0) k++;
-        if (real_names[k] == NULL)
-            return vigen_cli_usage_error(args->command, "--real takes double, long-double or float128, not '%s'", r);
-        real = real_types[k];
+        if (vigen_emit_real_parse(&real, r) != VIGEN_OK)
+            return vigen_cli_usage_error(args->command, "--real takes %s, not '%s'", vigen_emit_real_names(), r);
     }
     const char *base = strrchr(file, '/');
     vigen_emit_options opt = { .name = name, .real = real, .input_label = base ? base + 1 : file,
-                               .allow_inexact = args->value[VIGEN_OPT_emit_allow_inexact] != NULL };
-    opt.variant = args->value[VIGEN_OPT_emit_variant];
+                               .allow_inexact = args->value[VIGEN_OPT_emit_allow_inexact] != NULL,
+                               .variant = args->value[VIGEN_OPT_emit_variant] };
 
     vigen_error err;
     vigen_error_init(&err);
@@ -72,7 +66,6 @@ int vigen_cmd_emit(const vigen_cli_args *args)
     char *h = NULL, *c = NULL, *ident = NULL;
     int loaded = 0;
     int rc = vigen_emit_load_render(&t, &loaded, file, &opt, &h, &c, &ident, &err);
-    if (rc != VIGEN_OK && loaded && err.message) vigen_error_prefix(&err, "%s: ", file);
     if (rc == VIGEN_OK) audit(&t, file);
     slong spec_digits = rc == VIGEN_OK && t.generated_now ? t.digits : 0;
     if (loaded) vigen_tableau_clear(&t);

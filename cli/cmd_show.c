@@ -15,7 +15,8 @@ int vigen_cmd_show(const vigen_cli_args *args)
     const char *format = args->value[VIGEN_OPT_show_format] ? args->value[VIGEN_OPT_show_format] : "text";
     vigen_show_format fmt;
     if (!vigen_show_parse_format(&fmt, format))
-        return vigen_cli_usage_error(args->command, "unknown format '%s' (use text, latex, json or lua)", format);
+        return vigen_cli_usage_error(args->command, "unknown format '%s' (use %s)", format,
+                                     vigen_show_format_names());
 
     vigen_error err;
     vigen_error_init(&err);

@@ -124,21 +124,28 @@ static void print_exit_statuses(FILE *out)
     }
 }
 
-/* "  vigen help NAME  summary", the summary's further lines indented under its first. */
+/* "  vigen help NAME  summary", names padded to the longest topic, the
+ * summary's further lines indented under its first. */
 static void print_topic(FILE *out, const char *name, const char *summary)
 {
-    int col = fprintf(out, "  vigen help %s  ", name);
+    int width = 0;
+#define TOPIC(topic, text) if ((int)strlen(#topic) > width) width = (int)strlen(#topic);
+#include "commands.def"
+    int col = fprintf(out, "  vigen help %-*s  ", width, name);
     put_wrapped(out, summary, col, col);
     fputc('\n', out);
 }
 
-static int vigen_topic_spec(void)
+/* A topic's text comes from the library's tables. */
+static int print_owned(char *text)
 {
-    char *text = vigen_method_vocabulary_text();
     fputs(text, stdout);
     free(text);
     return 0;
 }
+
+static int vigen_topic_spec(void) { return print_owned(vigen_method_vocabulary_text()); }
+static int vigen_topic_checks(void) { return print_owned(vigen_check_list_text()); }
 
 void vigen_cli_print_help(FILE *out)
 {

@@ -213,6 +213,8 @@ done
 status 0 help spec
 for w in "gauss_legendre(s)" "chebyshev_t(s)" "sqrt(x)" "galerkin" "tableau"; do has out "$w"; done
 grep -q "help spec" <("$vigen" help) || fail "vigen help does not list the topic spec"
+status 0 help checks
+for w in consistency symplecticity orders claims against; do grep -q "^  $w " "$work/out" || fail "vigen help checks lacks $w"; done
 status 2 help spce
 short_error "vigen help spce"
 has err "did you mean 'spec'"
