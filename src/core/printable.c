@@ -1,0 +1,85 @@
+/* printable.c — escaping untrusted text for terminals (vigen/printable.h)
+ * and refusing strings with NUL bytes (core/printable.h). */
+#include <stdlib.h>
+#include <string.h>
+#include "core/printable.h"
+
+int vigen_utf8_decode(const char *text, size_t left, unsigned long *cp)
+{
+    const unsigned char *p = (const unsigned char *)text;
+    if (left == 0) return 0;
+    unsigned char c = p[0];
+    int n;
+    unsigned char lo = 0x80, hi = 0xBF;   /* range of the second byte (Unicode table 3-7) */
+    unsigned long v;
+    if (c < 0x80) {
+        *cp = c;
+        return 1;
+    }
+    if (c >= 0xC2 && c <= 0xDF) n = 2, v = c & 0x1F;
+    else if (c >= 0xE0 && c <= 0xEF) {
+        n = 3, v = c & 0x0F;
+        if (c == 0xE0) lo = 0xA0;          /* overlong */
+        if (c == 0xED) hi = 0x9F;          /* surrogates */
+    } else if (c >= 0xF0 && c <= 0xF4) {
+        n = 4, v = c & 0x07;
+        if (c == 0xF0) lo = 0x90;          /* overlong */
+        if (c == 0xF4) hi = 0x8F;          /* above U+10FFFF */
+    } else return 0;                       /* continuation byte, C0, C1, F5..FF */
+    if ((size_t)n > left || p[1] < lo || p[1] > hi) return 0;
+    for (int k = 1; k < n; k++) {
+        if ((p[k] & 0xC0) != 0x80) return 0;
+        v = (v << 6) | (p[k] & 0x3F);
+    }
+    *cp = v;
+    return n;
+}
+
+/* Code points shown escaped although well-formed: C1 controls, the line and
+ * paragraph separators, the bidirectional formatting characters. */
+static int hidden(unsigned long cp)
+{
+    return (cp >= 0x80 && cp <= 0x9F) || cp == 0x061C || cp == 0x200E || cp == 0x200F ||
+           (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069);
+}
+
+void vigen_printable_append(vigen_strbuf *sb, const char *text, size_t len)
+{
+    vigen_strbuf_append(sb, "");
+    size_t i = 0;
+    while (i < len) {
+        unsigned long cp;
+        int n = vigen_utf8_decode(text + i, len - i, &cp);
+        unsigned char c = (unsigned char)text[i];
+        if (n == 0) {
+            vigen_strbuf_printf(sb, "\\x%02x", (unsigned)c);
+            i++;
+            continue;
+        }
+        if (c == '\0') vigen_strbuf_append(sb, "\\0");
+        else if (c == '\n') vigen_strbuf_append(sb, "\\n");
+        else if (c == '\r') vigen_strbuf_append(sb, "\\r");
+        else if (c == '\t') vigen_strbuf_append(sb, "\\t");
+        else if (c < 0x20 || c == 0x7F) vigen_strbuf_printf(sb, "\\x%02x", (unsigned)c);
+        else if (hidden(cp)) vigen_strbuf_printf(sb, "\\u%04lx", cp);
+        else vigen_strbuf_appendn(sb, text + i, (size_t)n);
+        i += (size_t)n;
+    }
+}
+
+char *vigen_printable(const char *text)
+{
+    if (text == NULL) return NULL;
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    vigen_printable_append(&sb, text, strlen(text));
+    return sb.data;
+}
+
+int vigen_refuse_nul(const char *text, size_t len, const char *path, const char *entry, vigen_error *err)
+{
+    const char *nul = memchr(text, '\0', len);
+    if (nul == NULL) return VIGEN_OK;
+    return vigen_error_set(err, VIGEN_E_SPEC, "%s: %s contains a NUL byte (\\0 at byte %zu); remove it", path, entry,
+                           (size_t)(nul - text) + 1);
+}
