@@ -3,13 +3,16 @@
  * Tableau files are untrusted: every read below is raw (no __index, __len or
  * other metamethod can run outside a protected call), and tables carrying a
  * metatable are refused outright.  The reads happen after the file has run,
- * with the memory cap lifted, so that they cannot raise a Lua error.
+ * with the memory cap lifted, so that they cannot raise a Lua error.  Every
+ * string is read with its length and refused when it holds a NUL byte, which
+ * would silently end it as a C string ("1\0junk" read as "1").
  */
 #include <stdlib.h>
 #include <string.h>
 #include <lauxlib.h>
 #include "core/decimal.h"
 #include "core/expr.h"
+#include "core/printable.h"
 #include "lua/tableau_file.h"
 
 static void raw_getfield(lua_State *L, int idx, const char *key)
@@ -50,7 +53,9 @@ static char **texts_new(slong n)
 static int read_entry(lua_State *L, char **out, const char *path, const char *label, vigen_error *err)
 {
     if (lua_type(L, -1) == LUA_TSTRING) {
-        const char *text = lua_tostring(L, -1);
+        size_t len;
+        const char *text = lua_tolstring(L, -1, &len);
+        if (vigen_refuse_nul(text, len, path, label, err) != VIGEN_OK) return err->code;
         if (!vigen_decimal_is_rounded(text)) {
             vigen_expr *e = NULL;
             if (vigen_expr_parse(&e, text, 0, err) != VIGEN_OK)
@@ -159,8 +164,12 @@ static int read_string_field(lua_State *L, const char *key, char **out, const ch
 {
     raw_getfield(L, -1, key);
     int rc = VIGEN_OK;
-    if (lua_type(L, -1) == LUA_TSTRING) *out = vigen_strdup(lua_tostring(L, -1));
-    else if (!lua_isnil(L, -1))
+    size_t len;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+        const char *text = lua_tolstring(L, -1, &len);
+        rc = vigen_refuse_nul(text, len, path, key, err);
+        if (rc == VIGEN_OK) *out = vigen_strdup(text);
+    } else if (!lua_isnil(L, -1))
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' must be a string", path, key);
     lua_pop(L, 1);
     return rc;
@@ -170,21 +179,28 @@ static const char *const known_fields[] = {
     "name", "s", "c", "A", "b", "At", "ct", "bt", "digits", "source", "description",
     "basis", "nodes", "generator", "order", "symplectic", "spec", NULL};
 
-/* Unknown fields are most likely typos ("At" spelled "AT"): refused. */
+/* Unknown fields are most likely typos ("At" spelled "AT"): refused.  A key
+ * is compared with its length ("A\0x" is not "A") and shown escaped. */
 static int check_fields(lua_State *L, const char *path, vigen_error *err)
 {
     lua_pushnil(L);
     while (lua_next(L, -2) != 0) {
         lua_pop(L, 1);
         int known = 0;
-        if (lua_type(L, -1) == LUA_TSTRING)
-            for (int k = 0; known_fields[k]; k++) known |= strcmp(lua_tostring(L, -1), known_fields[k]) == 0;
+        size_t len = 0;
+        const char *key = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &len) : NULL;
+        for (int k = 0; key && known_fields[k]; k++)
+            known |= strlen(known_fields[k]) == len && memcmp(key, known_fields[k], len) == 0;
         if (!known) {
-            const char *key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "(a non-string key)";
-            const char *near = lua_type(L, -1) == LUA_TSTRING ? vigen_nearest_name(key, known_fields, 2) : NULL;
+            vigen_strbuf shown;
+            vigen_strbuf_init(&shown);
+            if (key) vigen_printable_append(&shown, key, len);
+            else vigen_strbuf_append(&shown, "(a non-string key)");
+            const char *near = key && strlen(key) == len ? vigen_nearest_name(key, known_fields, 2) : NULL;
             int rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: unknown field '%s'%s%s%s (known: name, s, c, A, b, At, ct, "
                                      "bt, digits, source, description, basis, nodes, generator, order, symplectic)",
-                                     path, key, near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "");
+                                     path, shown.data, near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "");
+            vigen_strbuf_clear(&shown);
             lua_pop(L, 1);
             return rc;
         }

@@ -15,8 +15,8 @@ int vigen_tableau_file_detect(lua_State *L, int idx);
 /* Reads the tableau that the file at path returned, the value on top of sb's
  * stack (vigen_sandbox_run_file), into t (uninitialised on entry; initialised
  * on success).  Messages name the file and the entry ("gauss2.lua:
- * A[2][1]: ..."): missing fields, wrong sizes, Lua floats, unparsable
- * expressions.  No Lua code of the file runs any more: the memory cap of sb
+ * A[2][1]: ..."): missing fields, unknown fields, wrong sizes, Lua floats,
+ * strings holding a NUL byte, unparsable expressions.  No Lua code of the file runs any more: the memory cap of sb
  * is lifted and sb stays with the caller. */
 int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *path, vigen_error *err);
 

@@ -20,6 +20,7 @@
 
 #include <lauxlib.h>
 
+#include "core/printable.h"
 #include "lua/ball.h"
 #include "lua/float_text.h"
 #include "lua/quote.h"
@@ -116,12 +117,13 @@ static int raw_field(lua_State *L, int table, const char *name)
     return lua_rawget(L, table);
 }
 
-/* A string value without embedded zero bytes, or NULL. */
-static const char *plain_string(lua_State *L, int idx)
+/* The string at idx, or NULL after recording an error when it holds a NUL
+ * byte (as a C string it would silently end there). */
+static const char *plain_string(lua_State *L, int idx, const char *entry, load_ctx *cx)
 {
     size_t len;
     const char *s = lua_tolstring(L, idx, &len);
-    return s && strlen(s) == len ? s : NULL;
+    return vigen_refuse_nul(s, len, cx->spec->path, entry, &cx->err) == VIGEN_OK ? s : NULL;
 }
 
 /* ------------------------------------------------------------------ checks */
@@ -132,10 +134,16 @@ static void warn_unknown_fields(lua_State *L, int table, load_ctx *cx)
     while (lua_next(L, table)) {
         char *w = NULL;
         if (lua_type(L, -2) == LUA_TSTRING) {
-            const char *key = lua_tostring(L, -2);
-            int known = 0;
-            for (int i = 0; known_fields[i]; i++) known |= strcmp(key, known_fields[i]) == 0;
+            size_t len;
+            const char *raw = lua_tolstring(L, -2, &len);
+            int known = 0;      /* compared with its length: "name\0x" is not "name" */
+            for (int i = 0; known_fields[i]; i++)
+                known |= strlen(known_fields[i]) == len && memcmp(raw, known_fields[i], len) == 0;
             if (!known) {
+                vigen_strbuf shown;
+                vigen_strbuf_init(&shown);
+                vigen_printable_append(&shown, raw, len);
+                char *key = shown.data;
                 /* the closest known field within 2 edits ('node' is 1 from
                  * 'nodes' and 2 from 'name': nodes) */
                 const char *near = vigen_nearest_name(key, known_fields, 2);
@@ -145,6 +153,7 @@ static void warn_unknown_fields(lua_State *L, int table, load_ctx *cx)
                          : vigen_strdup_printf("%s: unknown field '%s' is ignored (known fields: %s)",
                                                cx->spec->path, key, all);
                 free(all);
+                free(key);
             }
         } else {
             char *k = lua_isinteger(L, -2) ? vigen_strdup_printf("%lld", (long long)lua_tointeger(L, -2))
@@ -179,8 +188,8 @@ static int check_string_field(lua_State *L, int table, const char *field, int re
     } else if (t != LUA_TSTRING) {
         code = vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s must be a string, not a %s", P, field,
                                luaL_typename(L, -1));
-    } else if (plain_string(L, -1) == NULL) {
-        code = vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s contains a zero byte", P, field);
+    } else if (plain_string(L, -1, field, cx) == NULL) {
+        code = cx->err.code;
     } else if (required && lua_rawlen(L, -1) == 0) {
         code = vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is empty", P, field);
     } else {
@@ -246,8 +255,8 @@ static int read_entry(lua_State *L, int idx, const char *field, slong i, load_ct
     } else if (t == LUA_TNUMBER) {
         return refuse_float(cx, cx->entry, lua_tonumber(L, idx));
     } else if (t == LUA_TSTRING) {
-        const char *str = plain_string(L, idx);
-        if (str == NULL) return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s contains a zero byte", P, cx->entry);
+        const char *str = plain_string(L, idx, cx->entry, cx);
+        if (str == NULL) return cx->err.code;
         cx->src = vigen_strdup(str);
     } else if (vigen_vocabulary_get_family(L, idx, NULL, &family, &fs)) {
         return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is %s(%ld); a family is not a list entry: write %s = %s(%ld)",
@@ -320,6 +329,8 @@ static int check_nodes(lua_State *L, int table, load_ctx *cx)
         code = vigen_error_set(&cx->err, VIGEN_E_SPEC,
                                "%s: nodes is missing: give a list of exact numbers such as %s or a node family "
                                "such as gauss_legendre(3) (node families: %s)", P, nodes_example, names);
+    } else if (t == LUA_TSTRING && plain_string(L, idx, "nodes", cx) == NULL) {
+        code = cx->err.code;
     } else if (t == LUA_TSTRING) {
         const char *str = lua_tostring(L, idx);
         vigen_expr *e = NULL;
@@ -434,6 +445,8 @@ static int check_basis(lua_State *L, int table, load_ctx *cx)
             sp->basis_count = s;
             sp->basis_text = vigen_strdup_printf("%s(%ld)", family, s);
         }
+    } else if (t == LUA_TSTRING && plain_string(L, idx, "basis", cx) == NULL) {
+        code = cx->err.code;
     } else if (t == LUA_TSTRING) {
         const char *str = lua_tostring(L, idx);
         int is_family = vigen_basis_is_family(str);
