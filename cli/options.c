@@ -6,6 +6,7 @@
 #include <string.h>
 #include <strings.h>
 #include "cli.h"
+#include "vigen/printable.h"
 
 const vigen_cli_command vigen_cli_commands[VIGEN_CMD_COUNT] = {
 #define COMMAND(name, operand, ask, summary, help) { #name, operand, ask, summary, help },
@@ -43,10 +44,14 @@ int vigen_cli_usage_error(int command, const char *fmt, ...)
     return 2;
 }
 
+/* Messages echo names, entries and Lua errors from files: printed escaped, so
+ * that no control character or stray byte reaches the terminal. */
 int vigen_cli_fail(int command, vigen_error *err)
 {
     print_prefix(command);
-    fprintf(stderr, "%s\n", err->message ? err->message : vigen_status_name(err->code));
+    char *shown = vigen_printable(err->message ? err->message : vigen_status_name(err->code));
+    fprintf(stderr, "%s\n", shown);
+    free(shown);
     int status = vigen_status_exit_code(err->code);
     vigen_error_clear(err);
     return status;

@@ -1,9 +1,10 @@
 /* error.c — error records, status names and exit statuses (status.def),
- * and the warning hook. */
+ * and the warning hook (whose default prints warnings escaped, printable.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/error.h"
+#include "core/printable.h"
 #include "core/strbuf.h"
 
 void vigen_error_init(vigen_error *err) { err->code = VIGEN_OK; err->message = NULL; }
@@ -85,7 +86,13 @@ void vigen_warn(const char *fmt, ...)
     char *msg = vigen_vstrdup_printf(fmt, ap);
     va_end(ap);
     if (warning_fn) warning_fn(msg, warning_ctx);
-    else fprintf(stderr, "vigen: warning: %s\n", msg);
+    else {
+        /* warnings echo names and keys from files: no control character or
+         * stray byte reaches the terminal */
+        char *shown = vigen_printable(msg);
+        fprintf(stderr, "vigen: warning: %s\n", shown);
+        free(shown);
+    }
     free(msg);
 }
 

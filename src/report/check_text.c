@@ -1,8 +1,10 @@
 /* check_text.c — the text report of `vigen check` (vigen_check_print_text).
- */
+ * Texts that may come from the file (the path, the name, notes and problems
+ * quoting entries) are printed escaped (vigen/printable.h). */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
+#include "vigen/printable.h"
 #include "check/balls.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
@@ -10,6 +12,14 @@ static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "(ct, At, bt) alone as an RK method"};
 
 static const char *const within_words = "within the precision of the data";
+
+/* fputs of a text that may come from the file, escaped */
+static void put_shown(const char *text, FILE *out)
+{
+    char *s = vigen_printable(text);
+    fputs(s, out);
+    free(s);
+}
 
 static void print_level_words(FILE *out, const vigen_check_level *L)
 {
@@ -95,10 +105,21 @@ static char *short_integer(const char *digits)
     return vigen_strdup_printf("%.12s...%s (%lu digits)", digits, digits + n - 8, (unsigned long)n);
 }
 
+static void problem_line(FILE *out, const char *message)
+{
+    fputs("  ", out);
+    put_shown(message, out);
+    fputc('\n', out);
+}
+
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
 {
-    fputs(rep->path ? rep->path : "tableau", out);
-    if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) fprintf(out, " (%s)", rep->name);
+    put_shown(rep->path ? rep->path : "tableau", out);
+    if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) {
+        fputs(" (", out);
+        put_shown(rep->name, out);
+        fputs(")", out);
+    }
     fprintf(out, ": %ld stage%s, %s\n", (long)rep->s, rep->s == 1 ? "" : "s",
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
     if (rep->rational_denominator) {
@@ -145,7 +166,11 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
               "  the data when it involves a rounded entry and its radius is at most 2^-10 of its terms; on exact\n"
               "  entries only with a radius below 2^-(prec/2) of its terms and the same verdicts at two precisions;\n"
               "  otherwise it is undecided\n", out);
-    for (slong k = 0; k < rep->nnotes && k < 10; k++) fprintf(out, "  note: %s\n", rep->notes[k].message);
+    for (slong k = 0; k < rep->nnotes && k < 10; k++) {
+        fputs("  note: ", out);
+        put_shown(rep->notes[k].message, out);
+        fputc('\n', out);
+    }
     if (rep->nnotes > 10)
         fprintf(out, "  note: ... and %ld more short decimals (all of them with --json)\n", (long)(rep->nnotes - 10));
 
@@ -304,14 +329,14 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                 continue;
             if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) {
                 if (pairs_shown < 20) {
-                    fprintf(out, "  %s\n", p->message);
+                    problem_line(out, p->message);
                     if (++pairs_shown == 20 && pairs > 20)
                         fprintf(out, "  ... and %ld more pairs (all of them with --json)\n", (long)(pairs - 20));
                 }
                 continue;
             }
             if (other_shown < 40) {
-                fprintf(out, "  %s\n", p->message);
+                problem_line(out, p->message);
                 other_shown++;
             } else other_hidden++;
         }
