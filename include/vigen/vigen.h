@@ -16,6 +16,7 @@
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
 #include "vigen/method.h"
+#include "vigen/printable.h"
 #include "vigen/trees.h"
 #include "vigen/check.h"
 #include "vigen/show.h"
