@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include "cli.h"
 #include "vigen/method.h"
+#include "vigen/printable.h"
 #include "vigen/tableau.h"
 
 static void print_summary(vigen_tableau *t, slong digits)
@@ -11,9 +12,11 @@ static void print_summary(vigen_tableau *t, slong digits)
     arb_init(res);
     vigen_tableau_symplectic_residual(res, t, t->prec);
     char *r = arb_get_str(res, 5, 0);
+    char *name = vigen_printable(t->name);   /* the name comes from the file */
     fprintf(stderr, "vigen: %s: %ld stages, %ld certified digits (working precision %ld bits); "
                     "symplecticity residual %s\n",
-            t->name, (long)t->s, (long)digits, (long)t->prec, r);
+            name, (long)t->s, (long)digits, (long)t->prec, r);
+    free(name);
     flint_free(r);
     arb_clear(res);
 }

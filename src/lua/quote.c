@@ -1,19 +1,24 @@
 /* quote.c — Lua string literals (quote.h).  Long brackets rather than
  * backslash escapes keep expressions and nested literals readable in the
- * file; only a carriage return, which a long bracket does not keep, needs
- * escapes. */
+ * file; a carriage return, which a long bracket does not keep, and any other
+ * control character, which would reach a terminal that shows the file, are
+ * escaped instead. */
 #include <string.h>
 
 #include "lua/quote.h"
 
 void vigen_lua_quote(vigen_strbuf *out, const char *text)
 {
-    if (strpbrk(text, "\"\\\n\r") == NULL) {
+    int control = 0;
+    for (const unsigned char *p = (const unsigned char *)text; *p; p++)
+        if ((*p < 32 && *p != '\n') || *p == 127) control = 1;
+    if (!control && strpbrk(text, "\"\\\n") == NULL) {
         vigen_strbuf_printf(out, "\"%s\"", text);
         return;
     }
-    if (strchr(text, '\r') != NULL) {
-        /* a long bracket would read \r\n back as \n: escape instead */
+    if (control) {
+        /* a long bracket would read \r\n back as \n, and would carry ESC and
+         * the like to the terminal as they are: escape instead */
         vigen_strbuf_append(out, "\"");
         for (const char *p = text; *p; p++) {
             unsigned char ch = (unsigned char)*p;

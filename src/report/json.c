@@ -1,38 +1,20 @@
 /* json.c — the JSON string writer (see json.h). */
-#include "report/json.h"
+#include <string.h>
 
-/* Length of the well-formed UTF-8 sequence at p (RFC 3629, table 3-7 of
- * Unicode), or 0 when the byte at p does not start one. */
-static int utf8_length(const unsigned char *p)
-{
-    unsigned char c = p[0];
-    int n;
-    unsigned char lo = 0x80, hi = 0xBF;   /* range of the second byte */
-    if (c < 0x80) return 1;
-    if (c >= 0xC2 && c <= 0xDF) n = 2;
-    else if (c >= 0xE0 && c <= 0xEF) {
-        n = 3;
-        if (c == 0xE0) lo = 0xA0;          /* overlong */
-        if (c == 0xED) hi = 0x9F;          /* surrogates */
-    } else if (c >= 0xF0 && c <= 0xF4) {
-        n = 4;
-        if (c == 0xF0) lo = 0x90;          /* overlong */
-        if (c == 0xF4) hi = 0x8F;          /* above U+10FFFF */
-    } else return 0;                       /* continuation byte, C0, C1, F5..FF */
-    if (p[1] < lo || p[1] > hi) return 0;
-    for (int k = 2; k < n; k++)
-        if ((p[k] & 0xC0) != 0x80) return 0;
-    return n;
-}
+#include "core/printable.h"
+#include "report/json.h"
 
 void vigen_json_string(vigen_strbuf *sb, const char *text)
 {
     vigen_strbuf_append(sb, "\"");
+    size_t left = strlen(text);
     for (const unsigned char *p = (const unsigned char *)text; *p;) {
-        int n = utf8_length(p);
-        if (n == 0) {
+        unsigned long cp = 0;
+        int n = vigen_utf8_decode((const char *)p, left, &cp);
+        if (n <= 0) {
             vigen_strbuf_append(sb, "\\ufffd");
             p++;
+            left--;
             continue;
         }
         switch (*p) {
@@ -44,10 +26,13 @@ void vigen_json_string(vigen_strbuf *sb, const char *text)
         case '\r': vigen_strbuf_append(sb, "\\r"); break;
         case '\t': vigen_strbuf_append(sb, "\\t"); break;
         default:
-            if (*p < 0x20) vigen_strbuf_printf(sb, "\\u%04x", (unsigned)*p);
+            /* C0, DEL and C1 escaped: valid JSON either way, but a raw C1 (U+009B,
+             * CSI) acts on some terminals */
+            if (cp < 0x20 || (cp >= 0x7f && cp <= 0x9f)) vigen_strbuf_printf(sb, "\\u%04lx", cp);
             else vigen_strbuf_appendn(sb, (const char *)p, (size_t)n);
         }
         p += n;
+        left -= (size_t)n;
     }
     vigen_strbuf_append(sb, "\"");
 }

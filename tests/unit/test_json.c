@@ -81,7 +81,11 @@ int main(void)
     expect("\n", "\"\\n\"");
     expect("\t\r\b\f", "\"\\t\\r\\b\\f\"");
     expect("\x01\x1f", "\"\\u0001\\u001f\"");
-    expect("\x7f", "\"\x7f\"");   /* DEL is not a control character for JSON */
+    /* DEL and the C1 controls need no escape in JSON, but a raw C1 such as
+     * U+009B (CSI) acts on some terminals: escaped too; U+00A0 is not one */
+    expect("\x7f", "\"\\u007f\"");
+    expect("\xc2\x80\xc2\x9b\xc2\x9f", "\"\\u0080\\u009b\\u009f\"");
+    expect("\xc2\xa0", "\"\xc2\xa0\"");
     /* well-formed UTF-8 passes through: U+00E9, U+20AC, U+1F600, U+10FFFF */
     expect("\xc3\xa9", "\"\xc3\xa9\"");
     expect("\xe2\x82\xac", "\"\xe2\x82\xac\"");
