@@ -481,7 +481,7 @@ static int safe_setmetatable(lua_State *L)
  *   print           replaced  writes to stderr; charged by the bytes written
  *   string.format   as is     width and precision have at most 2 digits (Lua refuses more); the
  *                             result is charged as allocation
- *   string.char, sub, upper, lower, reverse, len, tostring, concatenation (..)
+ *   string.char, sub, upper, lower, reverse, tostring, concatenation (..)
  *                   as is     their work is proportional to what they allocate, which is charged
  *   string.find, match, gmatch, gsub
  *                   dropped   patterns backtrack in C, exponentially ('.-.-.-b')
@@ -489,9 +489,16 @@ static int safe_setmetatable(lua_State *L)
  *                   dropped   they loop over a format string in C, and spec files have no binary data
  *   string.dump, load, loadfile, dofile, require, collectgarbage, io, os, debug, package, coroutine, utf8
  *                   dropped   (not a matter of caps: no file system, no bytecode, no other states)
- *   math.*, next, pairs, ipairs, rawget, rawset, rawlen, rawequal, type, getmetatable, assert, error
- *                   as is     constant work per call
+ *   math.*, string.len, next, pairs, ipairs, rawget, rawset, rawlen, rawequal, type, getmetatable,
+ *   assert, error   as is     constant work per call
  *   setmetatable    wrapped   __gc refused (finalisers run with hooks off)
+ *
+ * Not seen by these caps: single VM instructions whose work grows with their
+ * operands without allocating, namely == and < between two long strings of the
+ * same length (memcmp/strcoll), arithmetic on a long numeric string, and
+ * passing `...` of up to ~10^6 values to a Lua function.  Each costs at most
+ * tens of milliseconds (the memory cap bounds a string, Lua's stack limit the
+ * values), so a wall-clock cap is what stops a loop of them.
  */
 
 /* An element read or written by a table function (through __index or
