@@ -9,9 +9,14 @@
  * libraries, loads source text only (never precompiled chunks), caps memory
  * with a custom allocator and caps executed instructions with a count hook.
  * Exceeding a cap raises a Lua error whose message says which cap and how to
- * raise it.  What would run outside the instruction cap is refused: __gc
- * finalisers (setmetatable with a __gc field) and the pattern functions
- * string.find/match/gmatch/gsub.  print writes to stderr.  Reading an unknown
+ * raise it; the error cannot be caught (pcall and xpcall rethrow it, and the
+ * rest of the call raises at once).  Work done in C is charged to the
+ * instruction budget: bytes allocated, and the counts that library loops
+ * (table.move/sort/concat/unpack/insert/remove, string.byte, select,
+ * tonumber) are about to go through.  What would run outside the instruction
+ * cap is refused: __gc finalisers (setmetatable with a __gc field), the
+ * pattern functions string.find/match/gmatch/gsub and
+ * string.pack/unpack/packsize.  print writes to stderr.  Reading an unknown
  * global is an error listing the vocabulary and the functions.
  *
  * The sandbox provides the ball library (see ball.h) that Lua basis functions

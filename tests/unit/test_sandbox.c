@@ -207,6 +207,116 @@ static void test_instruction_cap(void)
     vigen_error_clear(&err);
 }
 
+/* A cap cannot be caught: pcall and xpcall rethrow it, no message handler of
+ * the file runs for it, and the rest of the call raises at once. */
+static void test_caps_unwind(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_sandbox_limits lim;
+    vigen_sandbox_limits_default(&lim);
+    lim.instruction_limit = 1000000;
+    /* a handler that never returns (Lua runs it with hooks off after a cap) */
+    EXPECT("xpcall(function() while true do end end, function(m) while true do end end)", &lim, VIGEN_E_LIMIT,
+           "more than 1000000 Lua instructions");
+    /* the same handler for an ordinary error: it runs, under the cap */
+    EXPECT("xpcall(function() error('x') end, function(m) while true do end end)", &lim, VIGEN_E_LIMIT,
+           "more than 1000000 Lua instructions");
+    /* a handler that raises again, a handler that answers, nested pcalls */
+    EXPECT("for i = 1, 1e9 do xpcall(function() while true do end end, function(m) error(m) end) end", &lim,
+           VIGEN_E_LIMIT, "instructions");
+    EXPECT("local ok, e = xpcall(function() while true do end end, function() return 'handled' end)\n"
+           "return e", &lim, VIGEN_E_LIMIT, "instructions");
+    EXPECT("local ok = pcall(pcall, pcall, function() while true do end end) return ok", &lim, VIGEN_E_LIMIT,
+           "instructions");
+    /* the error object stays the cap's: a table with __tostring does not replace it */
+    EXPECT("local hang = setmetatable({}, {__tostring = function() while true do end end})\n"
+           "local ok, e = xpcall(function() while true do end end, function() return hang end) error(e)", &lim,
+           VIGEN_E_LIMIT, "instructions");
+    /* without a cap, pcall and xpcall behave as Lua's own */
+    CHECK(run("local ok, e = pcall(error, 'x', 0) assert(not ok and e == 'x')\n"
+              "local a, b, c = pcall(function(...) return ... end, 1, 2) assert(a == true and b == 1 and c == 2)\n"
+              "local ok2, e2 = xpcall(function() error({code = 7}) end, function(o) return o.code * 6 end)\n"
+              "assert(not ok2 and e2 == 42)\n"
+              "local ok3, e3 = xpcall(function(a, b) return a + b end, print, 40, 2) assert(ok3 and e3 == 42)\n"
+              "local ok4, e4 = xpcall(error, function(m) error(m) end, 'y')\n"
+              "assert(not ok4)\n"
+              "local ok5 = pcall(error, setmetatable({}, {__tostring = function() return 'obj' end}))\n"
+              "assert(not ok5) return 1", &lim, &err) == VIGEN_OK);
+    CHECK_MSG(err.message == NULL || err.message[0] == 0, "%s", err.message);
+    EXPECT("return xpcall(print)", &lim, VIGEN_E_LUA, "bad argument #2");
+    EXPECT("return pcall()", &lim, VIGEN_E_LUA, "bad argument #1");
+    vigen_error_clear(&err);
+}
+
+/* Library functions whose loops in C take a count from the file: the work is
+ * charged to the instruction budget before it is done. */
+static void test_library_loops(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_sandbox_limits lim;
+    vigen_sandbox_limits_default(&lim);
+    lim.instruction_limit = 1000000;
+    const char *huge_len = "local t = setmetatable({}, {__len = function() return 1 << 40 end})\n";
+    static const char *const hostile[] = {
+        "table.move({}, 1, 1 << 40, 2)",
+        "table.move({}, math.mininteger + 1, -1, 1)",
+        "table.sort(setmetatable({}, {__len = function() return (1 << 31) - 2 end, __index = rawlen,"
+        " __newindex = rawequal}))",
+        "table.sort({3, 2, 1}, function(a, b) while true do end end)",
+        "table.concat(setmetatable({}, {__index = rawlen}), '', 1, 1 << 40)",
+        "table.concat(setmetatable({}, {__index = rawlen, __len = function() return 1 << 40 end}))",
+        "local t = setmetatable({}, {__index = rawlen})\n"
+        "for i = 1, 1e9 do local n = select('#', table.unpack(t, 1, 999000)) end",
+        "local s = string.rep('x', 999000) for i = 1, 1e9 do local n = select('#', s:byte(1, -1)) end",
+        "local function f(...) for i = 1, 1e9 do local n = select('#', ...) end end\n"
+        "f(string.byte(string.rep('x', 400000), 1, -1))",
+        "local s = string.rep('0', 1 << 24) for i = 1, 1e9 do local x = tonumber(s) end",
+        "local s = string.rep('x', 1 << 24) for i = 1, 1e9 do local t = s .. 'y' end",
+        "local s = string.rep('x', 1 << 24) for i = 1, 1e9 do local t = string.rep(s, 2) end",
+        NULL,
+    };
+    for (int i = 0; hostile[i]; i++) EXPECT(hostile[i], &lim, VIGEN_E_LIMIT, "more than 1000000 Lua instructions");
+    /* #t is read once for the charge and passed on: a length that grows on its second reading is not used */
+    char *text = vigen_strdup_printf("%s%s", huge_len, "table.insert(t, 1, 'x')");
+    EXPECT(text, &lim, VIGEN_E_LIMIT, "instructions");
+    free(text);
+    text = vigen_strdup_printf("%s%s", huge_len, "table.remove(t, 1)");
+    EXPECT(text, &lim, VIGEN_E_LIMIT, "instructions");
+    free(text);
+    CHECK_MSG(run("local n = 0 local t = setmetatable({}, {__len = function() n = n + 1\n"
+                  "  return n == 1 and 2 or 1 << 40 end, __index = rawlen})\n"
+                  "assert(table.concat(t) == '00') return 1", &lim, &err) == VIGEN_OK, "%s", err.message);
+    /* the wrapped functions still do what Lua's do */
+    CHECK_MSG(run("local t = {5, 3, 4, 1, 2} table.sort(t) assert(table.concat(t, ',') == '1,2,3,4,5')\n"
+                  "table.sort(t, function(a, b) return a > b end) assert(table.concat(t) == '54321')\n"
+                  "assert(table.concat({1, 2, 3}, '-', 2) == '2-3' and table.concat({}, 'x') == '')\n"
+                  "local m = table.move({1, 2, 3}, 1, 3, 2) assert(table.concat(m) == '1123')\n"
+                  "local a, b, c = table.unpack({7, 8, 9}, 2) assert(a == 8 and b == 9 and c == nil)\n"
+                  "local u = {1, 2, 3} table.insert(u, 1, 0) table.insert(u, 4) assert(table.concat(u) == '01234')\n"
+                  "assert(table.remove(u, 1) == 0 and table.remove(u) == 4 and table.concat(u) == '123')\n"
+                  "assert(table.remove({}) == nil and select('#', string.byte('abc', 1, -1)) == 3)\n"
+                  "assert(select(2, 'a', 'b', 'c') == 'b' and select('#') == 0 and select(-1, 1, 2) == 2)\n"
+                  "assert(tonumber('0x10') == 16 and tonumber('z', 36) == 35 and tonumber('x') == nil)\n"
+                  "assert(string.byte('A') == 65 and ('abc'):byte(-1) == 99 and ('abc'):byte(10) == nil)\n"
+                  "return 1", &lim, &err) == VIGEN_OK, "%s", err.message);
+    EXPECT("table.insert({1}, 5, 'x')", &lim, VIGEN_E_LUA, "position out of bounds");
+    EXPECT("table.move({}, math.mininteger, -1, 1)", &lim, VIGEN_E_LUA, "too many elements to move");
+    EXPECT("table.insert({1}, 1, 2, 3)", &lim, VIGEN_E_LUA, "wrong number of arguments to 'insert'");
+    EXPECT("table.sort({1, 'x'})", &lim, VIGEN_E_LUA, "attempt to compare");
+    EXPECT("table.sort({3, 2, 1}, function(a, b) error('comparator fails') end)", &lim, VIGEN_E_LUA,
+           "comparator fails");
+    /* string.format refuses widths and precisions over two digits */
+    EXPECT("return string.format('%099999999d', 1)", &lim, VIGEN_E_LUA, "invalid conversion");
+    EXPECT("return string.format('%.99999999f', 1)", &lim, VIGEN_E_LUA, "invalid conversion");
+    /* binary packing is not offered */
+    EXPECT("return string.pack('i4', 1)", &lim, VIGEN_E_LUA, "string.pack is not available");
+    EXPECT("return string.packsize(string.rep('b', 1000))", &lim, VIGEN_E_LUA, "string.packsize is not available");
+    EXPECT("return string.unpack('b', 'x')", &lim, VIGEN_E_LUA, "string.unpack is not available");
+    vigen_error_clear(&err);
+}
+
 static void test_memory_cap(void)
 {
     vigen_error err;
@@ -228,9 +338,13 @@ static void test_memory_cap(void)
     EXPECT("local t = {} for i = 1, 1e9 do t[i] = i end", &lim, VIGEN_E_LIMIT, "16 MiB");
     EXPECT("local t = {} for i = 1, 1e9 do t[i] = string.rep('x', 1000) .. i end", &lim, VIGEN_E_LIMIT, "memory");
     EXPECT("local t = {} for i = 1, 1e9 do t[i] = {i} end", &lim, VIGEN_E_LIMIT, "memory");
-    /* a caught memory error ends in the instruction cap, never in a crash */
+    /* a caught memory error is not swallowed: pcall rethrows it, as the memory cap */
     lim.instruction_limit = 5000000;
-    EXPECT("while true do pcall(string.rep, 'x', 1 << 30) end", &lim, VIGEN_E_LIMIT, "instructions");
+    EXPECT("while true do pcall(string.rep, 'x', 1 << 30) end", &lim, VIGEN_E_LIMIT, "16 MiB of memory");
+    EXPECT("local ok = pcall(function() local t = {} for i = 1, 1e9 do t[i] = {i} end end)\n"
+           "if not ok then while true do end end", &lim, VIGEN_E_LIMIT, "16 MiB of memory");
+    EXPECT("xpcall(function() local t = {} for i = 1, 1e9 do t[i] = {i} end end, function(m) return 1 end)\n"
+           "return 1", &lim, VIGEN_E_LIMIT, "16 MiB of memory");
     /* a sandbox that hit the cap works afterwards */
     vigen_sandbox *sb = NULL;
     lim.instruction_limit = 50000000;
@@ -601,6 +715,8 @@ int main(void)
     test_run_and_errors();
     test_escapes();
     test_instruction_cap();
+    test_caps_unwind();
+    test_library_loops();
     test_memory_cap();
     test_vocabulary_mechanism();
     test_vocabulary();
