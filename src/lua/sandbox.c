@@ -35,6 +35,7 @@
 #include <lualib.h>
 
 #include "core/file.h"
+#include "core/printable.h"
 #include "lua/ball.h"
 #include "core/expr.h"
 #include "lua/float_text.h"
@@ -747,7 +748,9 @@ static int safe_rep(lua_State *L)
     return call_original(L, 1);
 }
 
-/* print writes to stderr: stdout may be carrying emitted code. */
+/* print writes to stderr, since stdout may be carrying emitted code, and
+ * escaped (vigen_printable), since the file's bytes must not reach the
+ * terminal as control sequences. */
 static int stderr_print(lua_State *L)
 {
     int n = lua_gettop(L);
@@ -755,8 +758,14 @@ static int stderr_print(lua_State *L)
         size_t len;
         const char *s = luaL_tolstring(L, i, &len);
         charge(L, len / BYTES_PER_INSTRUCTION);
+        /* no Lua call between the allocation and the free: nothing can
+         * raise past the buffer */
+        vigen_strbuf sb;
+        vigen_strbuf_init(&sb);
+        vigen_printable_append(&sb, s, len);
         if (i > 1) fputc('\t', stderr);
-        fwrite(s, 1, len, stderr);
+        if (sb.data) fwrite(sb.data, 1, sb.len, stderr);
+        vigen_strbuf_clear(&sb);
         lua_pop(L, 1);
     }
     fputc('\n', stderr);

@@ -496,7 +496,7 @@ static void test_quote(void)
 {
     static const char *const texts[] = {
         "1/2 - sqrt(3)/6", "", "say \"hi\"", "back\\slash", "\nleading newline", "a]]b", "a]]b]=]c]==]",
-        "line\r\nbreak", "{\"0\", \"1/2\"}",
+        "line\r\nbreak", "{\"0\", \"1/2\"}", "\x1b[31mred\x1b[0m", "bell\a", "del\x7f",
     };
     vigen_error err;
     vigen_error_init(&err);
@@ -518,6 +518,20 @@ static void test_quote(void)
         vigen_error_clear(&err);
         vigen_sandbox_free(sb);
         vigen_strbuf_clear(&chunk);
+    }
+    /* control characters never stand raw in a literal (the file may be shown
+     * on a terminal) */
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        vigen_strbuf q;
+        vigen_strbuf_init(&q);
+        vigen_lua_quote(&q, texts[i]);
+        int raw = 0;
+        for (size_t k = 0; k < q.len; k++) {
+            unsigned char ch = (unsigned char)q.data[k];
+            if ((ch < 32 && ch != '\n') || ch == 127) raw = 1;
+        }
+        CHECK_MSG(!raw, "a raw control character in %s", q.data);
+        vigen_strbuf_clear(&q);
     }
     /* text that needs no escape stays a plain "..." literal */
     vigen_strbuf b;
