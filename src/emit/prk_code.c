@@ -308,8 +308,6 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
     vigen_slots_textf(S, "NEVALS_F", "%ld", X->nevals_f);
     vigen_slots_textf(S, "NEVALS_G", "%ld", X->nevals_g);
     vigen_slots_text(S, "FSAL_NOTE", X->fsal ? ", first-same-as-last gradients reused" : "");
-    vigen_slots_flag(S, "COPY_Q0", X->copy_q0);
-    vigen_slots_flag(S, "COPY_P0", X->copy_p0);
     vigen_slots_flag(S, "FSAL", X->fsal);
     vigen_slot *xp = vigen_slots_lines(S, "X_POINTERS");
     for (long x = 0; X->mode != EMIT_EXPLICIT_NONE && x < X->nx; x++)
@@ -347,15 +345,16 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
             vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = p0[k] - %s;", op->dst, ht);
             break;
         default: {
-            /* the update of q (+) or p (-), compensated or not */
+            /* the new q (+) or p (-) from q0 (p0), compensated or not: into the
+             * workspace, committed by the template once it is finite */
             int isq = op->op == XOP_UPDATE_Q;
             const char *x = isq ? "q" : "p";
             char *arg = isq ? vigen_strdup(ht) : vigen_strdup_printf("-(%s)", ht);
             vigen_slot_line(L, "if (kahan) {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] = vigen_twosum_update%s(%s[k], %s, &c%s[k]);", x,
-                            SFX, x, arg, x);
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] = vigen_twosum_next%s(%s0[k], %s, c%s0[k], &c%s[k]);",
+                            x, SFX, x, arg, x, x);
             vigen_slot_line(L, "} else {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] %c= %s;", x, isq ? '+' : '-', ht);
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] = %s0[k] %c %s;", x, x, isq ? '+' : '-', ht);
             vigen_slot_line(L, "}");
             free(arg);
             break;
@@ -374,9 +373,9 @@ void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, i
     vigen_slots_textf(S, "EXPLICIT_SEPARABLE", "%d", X->mode != EMIT_EXPLICIT_NONE);
     vigen_slots_textf(S, "NX", "%ld", X->nx);
     /* arrays of length dim in the workspace block: Q, P, F, G, Fo, Go per
-     * stage, cq, cp, q0s, p0s, 6 for the finite-difference Hessian, and the
-     * explicit path's work arrays */
-    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 4 + 6 + X->nx);
+     * stage, cq, cp, cqn, cpn, qn, pn, 6 for the finite-difference Hessian,
+     * and the explicit path's work arrays */
+    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 6 + 6 + X->nx);
     implicit_blocks(S, K, name, R->ctype);
     explicit_blocks(S, X, name, R->ctype, R->suffix);
 }

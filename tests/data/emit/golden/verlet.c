@@ -54,7 +54,7 @@
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
-#define VERLET_NARRAYS 26
+#define VERLET_NARRAYS 28
 
 struct verlet_workspace {
     vigen_hamiltonian sys;
@@ -67,7 +67,8 @@ struct verlet_workspace {
     double *F[2], *G[2];     /* dH/dp, dH/dq at the stages */
     double *Fo[2], *Go[2];   /* the same at the previous step's stages */
     double *cq, *cp, ct;           /* compensation of the q, p and t updates */
-    double *q0s, *p0s;             /* copies of q and p when a step needs them */
+    double *cqn, *cpn;             /* the compensation a step computes (swapped with cq, cp) */
+    double *qn, *pn;               /* the new state, copied to q, p once it is finite */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
     int history;                    /* Fo, Go and hprev are valid */
@@ -98,6 +99,43 @@ static inline double verlet_inc_value(verlet_inc m) { double d; memcpy(&d, &m, s
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
 static inline double verlet_rel(double d, double scale) { return d == 0 ? 0.0 : (double)(d / scale); }
+/* Whether x[0 .. n-1] are all finite: x - x is 0 for a finite x and NaN for
+ * an infinite or NaN one. */
+static inline int verlet_finite(const double *x, size_t n)
+{
+    int ok = 1;
+    for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
+    return ok;
+}
+
+/* The end of a step whose new state is in qn, pn (w->qn, w->pn) and,
+ * compensated, its compensation in w->cqn, w->cpn, and ct for t1: a
+ * non-finite new state is refused with t, q, p and the compensation as they
+ * were; otherwise the new state is copied to q, p and the compensation taken
+ * over. */
+static inline int verlet_commit(verlet_workspace *w, double *t, double *q, double *p, const double *qn,
+                                 const double *pn, double t1, double ct, int kahan)
+{
+    const size_t n = w->n;
+    if (!(verlet_finite(qn, n) & verlet_finite(pn, n) & (t1 - t1 == 0))) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, qn, n * sizeof(double));
+    memcpy(p, pn, n * sizeof(double));
+    if (kahan) {
+        /* cq, cp and cqn, cpn are adjacent pairs: swap the pairs */
+        double *c = w->cq; w->cq = w->cqn; w->cqn = c;
+        c = w->cp; w->cp = w->cpn; w->cpn = c;
+        w->ct = ct;
+    }
+    *t = t1;
+    w->stats.steps++;
+    w->t_next = t1;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
+    return VIGEN_SUCCESS;
+}
 
 void verlet_reset(verlet_workspace *w)
 {
@@ -158,8 +196,10 @@ verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     }
     w->cq = m; m += n;
     w->cp = m; m += n;
-    w->q0s = m; m += n;
-    w->p0s = m; m += n;
+    w->cqn = m; m += n;
+    w->cpn = m; m += n;
+    w->qn = m; m += n;
+    w->pn = m; m += n;
     w->fdwork = m; m += 6 * n;
     for (int i = 0; i < 4; i++) { w->x[i] = m; m += n; }
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
@@ -394,29 +434,31 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
         w->stats.failed_steps++;
         return st;
     }
+    /* the new state into w->qn, w->pn; q, p change only if it is finite */
+    double *const qn = w->qn, *const pn = w->pn, t1, ct = w->ct;
     if (w->opt.kahan) {
+        const double *const cq = w->cq, *const cp = w->cp;
+        double *const cqn = w->cqn, *const cpn = w->cpn;
         for (size_t k = 0; k < n; k++) {
-            q[k] = vigen_twosum_update(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), &w->cq[k]);
-            p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), &w->cp[k]);
+            qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
+            pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
         }
-        *t = vigen_twosum_update(t0, h, &w->ct);
+        t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {
-            q[k] += (0x1p-1 * h) * (F1[k] + F2[k]);
-            p[k] -= (0x1p-1 * h) * (G1[k] + G2[k]);
+            qn[k] = q[k] + (0x1p-1 * h) * (F1[k] + F2[k]);
+            pn[k] = p[k] - (0x1p-1 * h) * (G1[k] + G2[k]);
         }
-        *t = t0 + h;
+        t1 = t0 + h;
     }
+    st = verlet_commit(w, t, q, p, qn, pn, t1, ct, w->opt.kahan);
+    if (st != VIGEN_SUCCESS) return st;
     for (int i = 0; i < 2; i++) {
         double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
         tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
     }
     w->hprev = h;
     w->history = 1;
-    w->stats.steps++;
-    w->t_next = *t;
-    w->q_next0 = q[0];
-    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
@@ -424,22 +466,29 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
  * evaluations per step, first-same-as-last gradients reused.  Inlined twice,
  * with kahan = 1 and 0 (verlet_explicit_kahan and _plain), so that neither
  * copy tests the option. */
-VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict q, double *restrict p, double h, const int kahan)
+VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict qu, double *restrict pu, double h, const int kahan)
 {
     const size_t n = w->n;
     const double t0 = *t;
-    double t1;
-    double *restrict const cq = w->cq;
-    double *restrict const cp = w->cp;
+    double t1, ct = w->ct;
+    /* q0, p0: the state at the start (the caller's arrays, read only); q, p:
+     * the new state, built in the workspace and committed once it is finite */
+    const double *restrict const q0 = qu;
+    const double *restrict const p0 = pu;
+    double *restrict const q = w->qn;
+    double *restrict const p = w->pn;
+    const double *restrict const cq0 = w->cq;
+    const double *restrict const cp0 = w->cp;
+    double *restrict const cq = w->cqn;
+    double *restrict const cp = w->cpn;
+    int st;
     double *restrict const X0 = w->x[0];
     double *restrict const X1 = w->x[1];
     double *restrict const X2 = w->x[2];
     double *restrict const X3 = w->x[3];
-    const double *const q0 = q;
-    const double *const p0 = p;
-    if (kahan) t1 = vigen_twosum_update(t0, h, &w->ct);
+    if (kahan) t1 = vigen_twosum_update(t0, h, &ct);
     else t1 = t0 + h;
-    (void)q0; (void)p0; (void)t1; (void)cq; (void)cp;
+    (void)q0; (void)p0; (void)t1; (void)cq; (void)cp; (void)cq0; (void)cp0;
     if (w->fsal) {
         w->stats.fsal_reuses++;
     } else {
@@ -450,25 +499,22 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     verlet_dHdp(w, t0, q, X1, X2);
     w->stats.dHdp_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_update(q[k], h * X2[k], &cq[k]);
+        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_next(q0[k], h * X2[k], cq0[k], &cq[k]);
     } else {
-        for (size_t k = 0; k < n; k++) q[k] += h * X2[k];
+        for (size_t k = 0; k < n; k++) q[k] = q0[k] + h * X2[k];
     }
     verlet_dHdq(w, t1, q, p, X3);
     w->stats.dHdq_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (X0[k] + X3[k])), &cp[k]);
+        for (size_t k = 0; k < n; k++) p[k] = vigen_twosum_next(p0[k], -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
     } else {
-        for (size_t k = 0; k < n; k++) p[k] -= (0x1p-1 * h) * (X0[k] + X3[k]);
+        for (size_t k = 0; k < n; k++) p[k] = p0[k] - (0x1p-1 * h) * (X0[k] + X3[k]);
     }
+    st = verlet_commit(w, t, qu, pu, q, p, t1, ct, kahan);
+    if (st != VIGEN_SUCCESS) return st;
     w->x[0] = X3;
     w->x[3] = X0;
     w->fsal = 1;
-    *t = t1;
-    w->stats.steps++;
-    w->t_next = t1;
-    w->q_next0 = q[0];
-    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
@@ -490,17 +536,20 @@ static inline int verlet_dispatch(verlet_workspace *w, double *t, double *q, dou
     return verlet_implicit(w, t, q, p, h);
 }
 
-/* The unusual cases, out of line: h zero or not finite, or a call that
- * does not continue the last step. */
+/* The unusual cases, out of line: t or h not finite, t + h overflowing, h
+ * zero, or a call that does not continue the last step. */
 VERLET_NOINLINE int verlet_step_slow(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    if (!(h - h == 0)) return VIGEN_EINVAL;
+    const double t1 = *t + h;   /* NaN or infinite when t or h is, or when t + h overflows */
+    if (!(t1 - t1 == 0)) return VIGEN_EINVAL;
     if (h == 0) return VIGEN_SUCCESS;
     verlet_new_trajectory(w);
     return verlet_dispatch(w, t, q, p, h);
 }
 
-/* Arguments: h must be finite (VIGEN_EINVAL otherwise; h = 0 does nothing).
+/* Arguments: t, h and t + h must be finite (VIGEN_EINVAL otherwise, nothing
+ * changed; h = 0 does nothing).  A step whose gradients, stage values or new
+ * state are NaN or infinite returns VIGEN_ENONFINITE with t, q, p unchanged.
  * The pointers are checked for NULL only when VIGEN_CHECK_ARGS or
  * VERLET_CHECK_ARGS is defined where this file is compiled (the workspace
  * from verlet_alloc is never NULL once checked there). */
@@ -509,9 +558,11 @@ int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h)
 #if defined(VIGEN_CHECK_ARGS) || defined(VERLET_CHECK_ARGS)
     if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
 #endif
-    /* One branch for the unusual cases.  For an IEEE double h, finite and
-     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out). */
-    if (((verlet_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff)) | verlet_moved(w, *t, q, p))
+    /* One branch for the unusual cases.  For an IEEE double x, x finite and
+     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out);
+     * t + h is finite <=> (bits << 1) < bits of infinity << 1. */
+    if ((int)((verlet_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff))
+        | (int)((verlet_bits(*t + h) << 1) >= UINT64_C(0xffe0000000000000)) | verlet_moved(w, *t, q, p))
         return verlet_step_slow(w, t, q, p, h);
     return verlet_dispatch(w, t, q, p, h);
 }
