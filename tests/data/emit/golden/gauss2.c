@@ -68,7 +68,8 @@ struct gauss2_workspace {
     double *Fo[2], *Go[2];   /* the same at the previous step's stages */
     double *cq, *cp, ct;           /* compensation of the q, p and t updates */
     double *cqn, *cpn;             /* the compensation a step computes (swapped with cq, cp) */
-    double *qn, *pn;               /* the new state, copied to q, p once it is finite */
+    double *qx, *px;               /* the state at the start of an explicit step (to restore
+                                      it), the new state of an implicit one (until finite) */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
     int history;                    /* Fo, Go and hprev are valid */
@@ -97,30 +98,12 @@ static inline double gauss2_inc_value(gauss2_inc m) { double d; memcpy(&d, &m, s
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
 static inline double gauss2_rel(double d, double scale) { return d == 0 ? 0.0 : (double)(d / scale); }
-/* Whether x[0 .. n-1] are all finite: x - x is 0 for a finite x and NaN for
- * an infinite or NaN one. */
-static inline int gauss2_finite(const double *x, size_t n)
+/* The end of a step whose new state is finite (the caller checks with
+ * gauss2_nf_add below): the compensation computed into w->cqn, w->cpn and
+ * ct (for t1) is taken over, t set to t1. */
+static inline void gauss2_commit(gauss2_workspace *w, double *t, const double *q, const double *p, double t1,
+                                 double ct, int kahan)
 {
-    int ok = 1;
-    for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
-    return ok;
-}
-
-/* The end of a step whose new state is in qn, pn (w->qn, w->pn) and,
- * compensated, its compensation in w->cqn, w->cpn, and ct for t1: a
- * non-finite new state is refused with t, q, p and the compensation as they
- * were; otherwise the new state is copied to q, p and the compensation taken
- * over. */
-static inline int gauss2_commit(gauss2_workspace *w, double *t, double *q, double *p, const double *qn,
-                                 const double *pn, double t1, double ct, int kahan)
-{
-    const size_t n = w->n;
-    if (!(gauss2_finite(qn, n) & gauss2_finite(pn, n) & (t1 - t1 == 0))) {
-        w->stats.failed_steps++;
-        return VIGEN_ENONFINITE;
-    }
-    memcpy(q, qn, n * sizeof(double));
-    memcpy(p, pn, n * sizeof(double));
     if (kahan) {
         /* cq, cp and cqn, cpn are adjacent pairs: swap the pairs */
         double *c = w->cq; w->cq = w->cqn; w->cqn = c;
@@ -132,7 +115,6 @@ static inline int gauss2_commit(gauss2_workspace *w, double *t, double *q, doubl
     w->t_next = t1;
     w->q_next0 = q[0];
     w->p_next0 = p[0];
-    return VIGEN_SUCCESS;
 }
 
 void gauss2_reset(gauss2_workspace *w)
@@ -165,6 +147,14 @@ static inline int gauss2_moved(const gauss2_workspace *w, double t, const double
             | (gauss2_bits(p[0]) ^ gauss2_bits(w->p_next0))) != 0;
 }
 
+/* Is the new state finite?  Each component x is folded in where it is
+ * written, as x - x: 0 for a finite x, NaN for an infinite or NaN one (one
+ * subtraction and one more operation per component, no second pass).  For
+ * double the bits are OR-ed (a one-cycle chain: a floating-point sum would
+ * make the update loops wait on the adder); 0 means finite. */
+typedef uint64_t gauss2_nf;
+static inline gauss2_nf gauss2_nf_add(gauss2_nf a, double x) { return a | gauss2_bits(x - x); }
+
 gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
 {
     if (sys == NULL || sys->dim == 0 || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
@@ -195,8 +185,8 @@ gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     w->cp = m; m += n;
     w->cqn = m; m += n;
     w->cpn = m; m += n;
-    w->qn = m; m += n;
-    w->pn = m; m += n;
+    w->qx = m; m += n;
+    w->px = m; m += n;
     w->fdwork = m; m += 6 * n;
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
         w->nw = vigen_newton_alloc(2, n);
@@ -434,25 +424,33 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
         w->stats.failed_steps++;
         return st;
     }
-    /* the new state into w->qn, w->pn; q, p change only if it is finite */
-    double *const qn = w->qn, *const pn = w->pn, t1, ct = w->ct;
+    /* the new state into w->qx, w->px; q, p change only if it is finite */
+    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    gauss2_nf nf = 0;
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
         for (size_t k = 0; k < n; k++) {
             qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
             pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
         }
         t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {
             qn[k] = q[k] + (0x1p-1 * h) * (F1[k] + F2[k]);
             pn[k] = p[k] - (0x1p-1 * h) * (G1[k] + G2[k]);
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
         }
         t1 = t0 + h;
     }
-    st = gauss2_commit(w, t, q, p, qn, pn, t1, ct, w->opt.kahan);
-    if (st != VIGEN_SUCCESS) return st;
+    if (gauss2_nf_add(nf, t1) != 0) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, qn, n * sizeof(double));
+    memcpy(p, pn, n * sizeof(double));
+    gauss2_commit(w, t, q, p, t1, ct, w->opt.kahan);
     for (int i = 0; i < 2; i++) {
         double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
         tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;

@@ -68,7 +68,8 @@ struct verlet_workspace {
     double *Fo[2], *Go[2];   /* the same at the previous step's stages */
     double *cq, *cp, ct;           /* compensation of the q, p and t updates */
     double *cqn, *cpn;             /* the compensation a step computes (swapped with cq, cp) */
-    double *qn, *pn;               /* the new state, copied to q, p once it is finite */
+    double *qx, *px;               /* the state at the start of an explicit step (to restore
+                                      it), the new state of an implicit one (until finite) */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
     int history;                    /* Fo, Go and hprev are valid */
@@ -99,30 +100,12 @@ static inline double verlet_inc_value(verlet_inc m) { double d; memcpy(&d, &m, s
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
 static inline double verlet_rel(double d, double scale) { return d == 0 ? 0.0 : (double)(d / scale); }
-/* Whether x[0 .. n-1] are all finite: x - x is 0 for a finite x and NaN for
- * an infinite or NaN one. */
-static inline int verlet_finite(const double *x, size_t n)
+/* The end of a step whose new state is finite (the caller checks with
+ * verlet_nf_add below): the compensation computed into w->cqn, w->cpn and
+ * ct (for t1) is taken over, t set to t1. */
+static inline void verlet_commit(verlet_workspace *w, double *t, const double *q, const double *p, double t1,
+                                 double ct, int kahan)
 {
-    int ok = 1;
-    for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
-    return ok;
-}
-
-/* The end of a step whose new state is in qn, pn (w->qn, w->pn) and,
- * compensated, its compensation in w->cqn, w->cpn, and ct for t1: a
- * non-finite new state is refused with t, q, p and the compensation as they
- * were; otherwise the new state is copied to q, p and the compensation taken
- * over. */
-static inline int verlet_commit(verlet_workspace *w, double *t, double *q, double *p, const double *qn,
-                                 const double *pn, double t1, double ct, int kahan)
-{
-    const size_t n = w->n;
-    if (!(verlet_finite(qn, n) & verlet_finite(pn, n) & (t1 - t1 == 0))) {
-        w->stats.failed_steps++;
-        return VIGEN_ENONFINITE;
-    }
-    memcpy(q, qn, n * sizeof(double));
-    memcpy(p, pn, n * sizeof(double));
     if (kahan) {
         /* cq, cp and cqn, cpn are adjacent pairs: swap the pairs */
         double *c = w->cq; w->cq = w->cqn; w->cqn = c;
@@ -134,7 +117,6 @@ static inline int verlet_commit(verlet_workspace *w, double *t, double *q, doubl
     w->t_next = t1;
     w->q_next0 = q[0];
     w->p_next0 = p[0];
-    return VIGEN_SUCCESS;
 }
 
 void verlet_reset(verlet_workspace *w)
@@ -168,6 +150,14 @@ static inline int verlet_moved(const verlet_workspace *w, double t, const double
             | (verlet_bits(p[0]) ^ verlet_bits(w->p_next0))) != 0;
 }
 
+/* Is the new state finite?  Each component x is folded in where it is
+ * written, as x - x: 0 for a finite x, NaN for an infinite or NaN one (one
+ * subtraction and one more operation per component, no second pass).  For
+ * double the bits are OR-ed (a one-cycle chain: a floating-point sum would
+ * make the update loops wait on the adder); 0 means finite. */
+typedef uint64_t verlet_nf;
+static inline verlet_nf verlet_nf_add(verlet_nf a, double x) { return a | verlet_bits(x - x); }
+
 verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
 {
     if (sys == NULL || sys->dim == 0 || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
@@ -198,8 +188,8 @@ verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     w->cp = m; m += n;
     w->cqn = m; m += n;
     w->cpn = m; m += n;
-    w->qn = m; m += n;
-    w->pn = m; m += n;
+    w->qx = m; m += n;
+    w->px = m; m += n;
     w->fdwork = m; m += 6 * n;
     for (int i = 0; i < 4; i++) { w->x[i] = m; m += n; }
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
@@ -434,25 +424,33 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
         w->stats.failed_steps++;
         return st;
     }
-    /* the new state into w->qn, w->pn; q, p change only if it is finite */
-    double *const qn = w->qn, *const pn = w->pn, t1, ct = w->ct;
+    /* the new state into w->qx, w->px; q, p change only if it is finite */
+    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    verlet_nf nf = 0;
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
         for (size_t k = 0; k < n; k++) {
             qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
             pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
+            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
         }
         t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {
             qn[k] = q[k] + (0x1p-1 * h) * (F1[k] + F2[k]);
             pn[k] = p[k] - (0x1p-1 * h) * (G1[k] + G2[k]);
+            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
         }
         t1 = t0 + h;
     }
-    st = verlet_commit(w, t, q, p, qn, pn, t1, ct, w->opt.kahan);
-    if (st != VIGEN_SUCCESS) return st;
+    if (verlet_nf_add(nf, t1) != 0) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, qn, n * sizeof(double));
+    memcpy(p, pn, n * sizeof(double));
+    verlet_commit(w, t, q, p, t1, ct, w->opt.kahan);
     for (int i = 0; i < 2; i++) {
         double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
         tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
@@ -466,52 +464,77 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
  * evaluations per step, first-same-as-last gradients reused.  Inlined twice,
  * with kahan = 1 and 0 (verlet_explicit_kahan and _plain), so that neither
  * copy tests the option. */
-VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict qu, double *restrict pu, double h, const int kahan)
+VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict q, double *restrict p, double h, const int kahan)
 {
     const size_t n = w->n;
     const double t0 = *t;
     double t1, ct = w->ct;
-    /* q0, p0: the state at the start (the caller's arrays, read only); q, p:
-     * the new state, built in the workspace and committed once it is finite */
-    const double *restrict const q0 = qu;
-    const double *restrict const p0 = pu;
-    double *restrict const q = w->qn;
-    double *restrict const p = w->pn;
+    verlet_nf nf = 0;   /* see verlet_nf_add */
+    /* q and p are updated in place; their values at the start are kept in
+     * qs, ps as they are overwritten (read there afterwards, and put back if
+     * the new state is not finite); the compensation goes to cq, cp (w->cqn,
+     * w->cpn) from cq0, cp0, taken over only for a finite new state */
+    double *restrict const qs = w->qx;
+    double *restrict const ps = w->px;
     const double *restrict const cq0 = w->cq;
     const double *restrict const cp0 = w->cp;
     double *restrict const cq = w->cqn;
     double *restrict const cp = w->cpn;
-    int st;
     double *restrict const X0 = w->x[0];
     double *restrict const X1 = w->x[1];
     double *restrict const X2 = w->x[2];
     double *restrict const X3 = w->x[3];
     if (kahan) t1 = vigen_twosum_update(t0, h, &ct);
     else t1 = t0 + h;
-    (void)q0; (void)p0; (void)t1; (void)cq; (void)cp; (void)cq0; (void)cp0;
+    (void)qs; (void)ps; (void)cq; (void)cp; (void)cq0; (void)cp0;
     if (w->fsal) {
         w->stats.fsal_reuses++;
     } else {
-        verlet_dHdq(w, t0, q0, p, X0);
+        verlet_dHdq(w, t0, q, p, X0);
         w->stats.dHdq_evals++;
     }
-    for (size_t k = 0; k < n; k++) X1[k] = p0[k] - (0x1p-1 * h) * X0[k];
+    for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
     verlet_dHdp(w, t0, q, X1, X2);
     w->stats.dHdp_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_next(q0[k], h * X2[k], cq0[k], &cq[k]);
+        for (size_t k = 0; k < n; k++) {
+            const double x = q[k];
+            qs[k] = x;
+            q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+            nf = verlet_nf_add(nf, q[k]);
+        }
     } else {
-        for (size_t k = 0; k < n; k++) q[k] = q0[k] + h * X2[k];
+        for (size_t k = 0; k < n; k++) {
+            const double x = q[k];
+            qs[k] = x;
+            q[k] = x + h * X2[k];
+            nf = verlet_nf_add(nf, q[k]);
+        }
     }
     verlet_dHdq(w, t1, q, p, X3);
     w->stats.dHdq_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) p[k] = vigen_twosum_next(p0[k], -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
+        for (size_t k = 0; k < n; k++) {
+            const double x = p[k];
+            ps[k] = x;
+            p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
+            nf = verlet_nf_add(nf, p[k]);
+        }
     } else {
-        for (size_t k = 0; k < n; k++) p[k] = p0[k] - (0x1p-1 * h) * (X0[k] + X3[k]);
+        for (size_t k = 0; k < n; k++) {
+            const double x = p[k];
+            ps[k] = x;
+            p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
+            nf = verlet_nf_add(nf, p[k]);
+        }
     }
-    st = verlet_commit(w, t, qu, pu, q, p, t1, ct, kahan);
-    if (st != VIGEN_SUCCESS) return st;
+    if (verlet_nf_add(nf, t1) != 0) {
+        memcpy(q, qs, n * sizeof(double));
+        memcpy(p, ps, n * sizeof(double));
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    verlet_commit(w, t, q, p, t1, ct, kahan);
     w->x[0] = X3;
     w->x[3] = X0;
     w->fsal = 1;
