@@ -31,7 +31,8 @@
  *  4. Kepler over 2000 periods: the secular energy error of the emitted
  *     Gauss-2 and of rk4imp at its cheapest setting for errors ~5e-9.
  *   emit_bench [KEPLER_STEPS [FPUT_STEPS]]   defaults 1000000 2000
- *   EMIT_BENCH_SKIP_FPUT_GSL=1 skips rk4imp on the chain (one step ~ 10 s). */
+ *   EMIT_BENCH_SKIP_FPUT_GSL=1 skips rk4imp on the chain (one step ~ 10 s);
+ *   EMIT_BENCH_TABLES_ONLY=1 stops after the Kepler and FPUT tables (1.). */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <stdio.h>
@@ -582,6 +583,12 @@ int main(int argc, char **argv)
         emit_g2_free(g2); emit_g2_free(g2t); emit_g2f_free(g2d);
         emit_sv_free(sv); emit_sv_free(svt); emit_sv_free(sv0); emit_svf_free(svd);
         hg2f_free(hg2); hg2t_free(hg2t); hvf_free(hv); hvf_free(hv0); hvt_free(hvt); hvt_free(hv0t);
+    }
+    if (getenv("EMIT_BENCH_TABLES_ONLY")) {
+        /* the two tables only (side-by-side timing of two builds) */
+        free(fq);
+        free(fp);
+        return 0;
     }
     ideal_sweep_share();
     toda_share(fsteps / 4 > 0 ? fsteps / 4 : 1);

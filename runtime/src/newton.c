@@ -79,20 +79,37 @@ void vigen_newton_matrix_block(vigen_newton *nw, size_t i, size_t j, double ha, 
     }
 }
 
+/* Whether x[0 .. n-1] are all finite (x - x is 0 exactly when x is). */
+static int all_finite(const double *x, size_t n)
+{
+    int ok = 1;
+    for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
+    return ok;
+}
+
+/* A NaN or infinity in M (from the Hessian: gradients that are not finite)
+ * is VIGEN_ENONFINITE, not a singular matrix; so is a factorisation that
+ * overflows.  A zero pivot is VIGEN_ESINGULAR. */
 int vigen_newton_factor(vigen_newton *nw)
 {
     int signum = 0;
+    for (size_t r = 0; r < nw->N; r++)
+        if (!all_finite(gsl_matrix_ptr(nw->M, r, 0), nw->N)) return VIGEN_ENONFINITE;
     if (gsl_linalg_LU_decomp(nw->M, nw->perm, &signum) != GSL_SUCCESS) return VIGEN_ESINGULAR;
     for (size_t k = 0; k < nw->N; k++) {
         double d = gsl_matrix_get(nw->M, k, k);
-        if (d == 0.0 || d != d) return VIGEN_ESINGULAR;
+        if (d == 0.0) return VIGEN_ESINGULAR;
+        if (!(d - d == 0)) return VIGEN_ENONFINITE;
     }
     return VIGEN_SUCCESS;
 }
 
+/* A right-hand side or a solution that is not finite is VIGEN_ENONFINITE. */
 int vigen_newton_solve(vigen_newton *nw)
 {
+    if (!all_finite(nw->rhs->data, nw->N)) return VIGEN_ENONFINITE;
     if (gsl_linalg_LU_solve(nw->M, nw->perm, nw->rhs, nw->x) != GSL_SUCCESS) return VIGEN_ESINGULAR;
+    if (!all_finite(nw->x->data, nw->N)) return VIGEN_ENONFINITE;
     gsl_vector_memcpy(nw->rhs, nw->x);
     return VIGEN_SUCCESS;
 }

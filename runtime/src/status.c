@@ -3,12 +3,12 @@
 
 static const char *const vigen_status_messages[VIGEN_STATUS_MAX] = {
     "success",
-    "invalid argument (NULL pointer, zero dimension or non-finite step size)",
+    "invalid argument (NULL pointer, zero dimension, t or h not finite, or t + h overflows)",
     "out of memory",
     "stage iteration did not converge (increment stopped decreasing above the tolerance)",
     "stage iteration reached the iteration cap (raise max_iter, reduce h or use Newton)",
     "Newton iteration matrix is singular (reduce h)",
-    "a gradient or stage value is NaN or infinite",
+    "a gradient, stage value or the new state is NaN or infinite",
     "option not supported by this stepper",
     "stopped by the observer",
 };

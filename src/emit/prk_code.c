@@ -308,8 +308,6 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
     vigen_slots_textf(S, "NEVALS_F", "%ld", X->nevals_f);
     vigen_slots_textf(S, "NEVALS_G", "%ld", X->nevals_g);
     vigen_slots_text(S, "FSAL_NOTE", X->fsal ? ", first-same-as-last gradients reused" : "");
-    vigen_slots_flag(S, "COPY_Q0", X->copy_q0);
-    vigen_slots_flag(S, "COPY_P0", X->copy_p0);
     vigen_slots_flag(S, "FSAL", X->fsal);
     vigen_slot *xp = vigen_slots_lines(S, "X_POINTERS");
     for (long x = 0; X->mode != EMIT_EXPLICIT_NONE && x < X->nx; x++)
@@ -320,6 +318,9 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
         vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][1], X->swaps[k][0]);
     }
     vigen_slot *L = vigen_slots_lines(S, "EXPLICIT_OPS");
+    /* q and p are updated in place, their start values kept in qs, ps: the
+     * plan's q0 (p0) is q (p) before the update and qs (ps) after it */
+    const char *q0 = "q", *p0 = "p";
     for (slong k = 0; k < X->nops; k++) {
         const emit_xop *op = X->ops + k;
         if (op->op == XOP_EVAL_F || op->op == XOP_EVAL_G) {
@@ -332,7 +333,8 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
                 vigen_slot_line(L, "    w->stats.fsal_reuses++;");
                 vigen_slot_line(L, "} else {");
             }
-            vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, X%ld);", ind, N, fn, tm, op->q, op->p, op->dst);
+            const char *qa = strcmp(op->q, "q0") == 0 ? q0 : op->q, *pa = strcmp(op->p, "p0") == 0 ? p0 : op->p;
+            vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, X%ld);", ind, N, fn, tm, qa, pa, op->dst);
             vigen_slot_line(L, "%sw->stats.%s_evals++;", ind, fn);
             if (op->fsal) vigen_slot_line(L, "}");
             free(tm);
@@ -341,22 +343,34 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
         char *ht = hsum_op(op);
         switch (op->op) {
         case XOP_STAGE_Q:
-            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = q0[k] + %s;", op->dst, ht);
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] + %s;", op->dst, q0, ht);
             break;
         case XOP_STAGE_P:
-            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = p0[k] - %s;", op->dst, ht);
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] - %s;", op->dst, p0, ht);
             break;
         default: {
-            /* the update of q (+) or p (-), compensated or not */
+            /* the new q (+) or p (-) in place, compensated or not, the old value
+             * kept in qs (ps); nf: is it finite (the template's NAME_nf_add) */
             int isq = op->op == XOP_UPDATE_Q;
             const char *x = isq ? "q" : "p";
             char *arg = isq ? vigen_strdup(ht) : vigen_strdup_printf("-(%s)", ht);
             vigen_slot_line(L, "if (kahan) {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] = vigen_twosum_update%s(%s[k], %s, &c%s[k]);", x,
-                            SFX, x, arg, x);
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
+            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
+            vigen_slot_line(L, "        %ss[k] = x;", x);
+            vigen_slot_line(L, "        %s[k] = vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]);", x, SFX, arg, x, x);
+            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
+            vigen_slot_line(L, "    }");
             vigen_slot_line(L, "} else {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) %s[k] %c= %s;", x, isq ? '+' : '-', ht);
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
+            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
+            vigen_slot_line(L, "        %ss[k] = x;", x);
+            vigen_slot_line(L, "        %s[k] = x %c %s;", x, isq ? '+' : '-', ht);
+            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
+            vigen_slot_line(L, "    }");
             vigen_slot_line(L, "}");
+            if (isq) q0 = "qs";
+            else p0 = "ps";
             free(arg);
             break;
         }
@@ -374,9 +388,9 @@ void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, i
     vigen_slots_textf(S, "EXPLICIT_SEPARABLE", "%d", X->mode != EMIT_EXPLICIT_NONE);
     vigen_slots_textf(S, "NX", "%ld", X->nx);
     /* arrays of length dim in the workspace block: Q, P, F, G, Fo, Go per
-     * stage, cq, cp, q0s, p0s, 6 for the finite-difference Hessian, and the
-     * explicit path's work arrays */
-    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 4 + 6 + X->nx);
+     * stage, cq, cp, cqn, cpn, qn, pn, 6 for the finite-difference Hessian,
+     * and the explicit path's work arrays */
+    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 6 + 6 + X->nx);
     implicit_blocks(S, K, name, R->ctype);
     explicit_blocks(S, X, name, R->ctype, R->suffix);
 }

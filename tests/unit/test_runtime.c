@@ -120,6 +120,31 @@ static void test_newton_la(void)
     vigen_newton_matrix_identity(nw);
     vigen_newton_matrix_block(nw, 0, 0, 1.0, -1.0);                   /* 1 + ha hat = 0 */
     CHECK(vigen_newton_factor(nw) == VIGEN_ESINGULAR);
+    /* a Hessian from NaN or infinite gradients is not a singular matrix */
+    const double bad[2] = { NAN, INFINITY };
+    for (int b = 0; b < 2; b++) {
+        H[0] = 1; H[1] = 0; H[2] = bad[b]; H[3] = 1;
+        vigen_newton_matrix_identity(nw);
+        vigen_newton_matrix_block(nw, 0, 0, 0.5, 0.5);
+        CHECK_MSG(vigen_newton_factor(nw) == VIGEN_ENONFINITE, "Hessian entry %g: status %d", bad[b],
+                  vigen_newton_factor(nw));
+    }
+    /* a finite matrix whose factorisation overflows: 1e300 x 1e300 */
+    H[0] = 0; H[1] = 1e300; H[2] = 1e300; H[3] = 0;
+    vigen_newton_matrix_identity(nw);
+    vigen_newton_matrix_block(nw, 0, 0, 1e10, 1e10);
+    CHECK(vigen_newton_factor(nw) == VIGEN_ENONFINITE);
+    /* a non-finite right-hand side (stage gradients NaN) */
+    H[0] = 1; H[1] = 0; H[2] = 0; H[3] = 1;
+    vigen_newton_matrix_identity(nw);
+    vigen_newton_matrix_block(nw, 0, 0, 0.5, 0.5);
+    CHECK(vigen_newton_factor(nw) == VIGEN_SUCCESS);
+    r[0] = NAN; r[1] = 0;
+    CHECK(vigen_newton_solve(nw) == VIGEN_ENONFINITE);
+    r[0] = 1; r[1] = INFINITY;
+    CHECK(vigen_newton_solve(nw) == VIGEN_ENONFINITE);
+    r[0] = 1; r[1] = 0;
+    CHECK(vigen_newton_solve(nw) == VIGEN_SUCCESS && fabs(r[0] - 0.8) < 1e-15);
     vigen_newton_free(nw);
     CHECK(vigen_newton_alloc(0, 3) == NULL);
 }
@@ -213,7 +238,7 @@ static double bad_value;
 static void bad_dq(double t, const double *q, const double *p, double *o, void *c)
 {
     (void)p; (void)c;
-    o[0] = t > 0.55 ? bad_value : q[0];
+    o[0] = t > 0.55 && bad_value != 0 ? bad_value : q[0];   /* bad_value 0: repaired */
 }
 static void test_nonfinite_gradient(void)
 {
@@ -236,6 +261,96 @@ static void test_nonfinite_gradient(void)
             CHECK(fabs(q[0] - cos(0.5)) < 1e-6 && fabs(p[0] + sin(0.5)) < 1e-6);
             gauss2_free(w);
         }
+}
+
+/* Gauss-2 with Newton and a gradient that is NaN from the first call: the
+ * finite-difference Hessian is NaN, which is VIGEN_ENONFINITE (it was
+ * reported as a singular matrix). */
+static void nan_dq(double t, const double *q, const double *p, double *o, void *c)
+{
+    (void)t; (void)q; (void)p; (void)c;
+    o[0] = NAN;
+}
+static void test_newton_nan_first(void)
+{
+    vigen_hamiltonian sys = { 1, nan_dq, ho_dp, ho_H, NULL, 0, NULL };
+    vigen_solver_options o;
+    vigen_solver_options_default(&o);
+    o.solver = VIGEN_SOLVER_NEWTON;
+    gauss2_workspace *w = gauss2_alloc(&sys, &o);
+    double t = 0, q[1] = { 1 }, p[1] = { 0 };
+    int st = gauss2_step(w, &t, q, p, 0.1);
+    CHECK_MSG(st == VIGEN_ENONFINITE, "Newton, NaN gradient: status %d", st);
+    CHECK(t == 0 && q[0] == 1 && p[0] == 0 && !signbit(p[0]));
+    gauss2_free(w);
+}
+
+/* Stormer-Verlet, explicit path, hostile numbers: a NaN or infinite
+ * gradient (first call, mid-run) or initial state is VIGEN_ENONFINITE, a
+ * non-finite t or h or an overflowing t + h VIGEN_EINVAL, each with t, q, p
+ * bit for bit as they were; a step retried after a refusal gives the bits
+ * of a run that never failed.  (Before, the step returned success with a
+ * NaN or infinite state, and accepted t = NaN.) */
+static int same_bits(double a, double b) { return memcmp(&a, &b, sizeof a) == 0; }
+static void test_verlet_hostile(void)
+{
+    for (int kahan = 0; kahan < 2; kahan++)
+        for (int b = 0; b < 2; b++) {
+            bad_value = b ? INFINITY : NAN;
+            vigen_hamiltonian sys = { 1, bad_dq, ho_dp, ho_H, NULL, 1, NULL };
+            vigen_solver_options o;
+            vigen_solver_options_default(&o);
+            o.kahan = kahan;
+            verlet_workspace *w = verlet_alloc(&sys, &o);
+            double t = 0, q[1] = { 1 }, p[1] = { 0 }, t0 = 0, q0 = 1, p0 = 0;
+            int st = VIGEN_SUCCESS, k = 0;
+            for (; k < 10 && st == VIGEN_SUCCESS; k++) {
+                t0 = t; q0 = q[0]; p0 = p[0];
+                st = verlet_step(w, &t, q, p, 0.1);
+            }
+            /* step 6 evaluates dH/dq at t = 0.6 after updating q */
+            CHECK_MSG(st == VIGEN_ENONFINITE && k == 6, "Verlet, %s gradient: status %d at step %d", b ? "inf" : "NaN",
+                      st, k);
+            CHECK(same_bits(t, t0) && same_bits(q[0], q0) && same_bits(p[0], p0));
+            CHECK(verlet_stats(w)->failed_steps == 1 && verlet_stats(w)->steps == 5);
+            /* repaired: the retried step is the step of a run without failures */
+            bad_value = 0;
+            CHECK(verlet_step(w, &t, q, p, 0.1) == VIGEN_SUCCESS);
+            sys.dHdq = ho_dq;
+            verlet_workspace *w2 = verlet_alloc(&sys, &o);
+            double t2 = 0, q2[1] = { 1 }, p2[1] = { 0 };
+            for (int j = 0; j < 6; j++) CHECK(verlet_step(w2, &t2, q2, p2, 0.1) == VIGEN_SUCCESS);
+            CHECK(same_bits(t, t2) && same_bits(q[0], q2[0]) && same_bits(p[0], p2[0]));
+            verlet_free(w2);
+            verlet_free(w);
+        }
+
+    vigen_hamiltonian sys = { 1, ho_dq, ho_dp, ho_H, NULL, 1, NULL };
+    verlet_workspace *w = verlet_alloc(&sys, NULL);
+    /* NaN initial q, then NaN initial p */
+    for (int which = 0; which < 2; which++) {
+        double t = 0, q[1] = { which ? 1 : NAN }, p[1] = { which ? NAN : 0 }, qs = q[0], ps = p[0];
+        CHECK(verlet_step(w, &t, q, p, 0.1) == VIGEN_ENONFINITE);
+        CHECK(t == 0 && same_bits(q[0], qs) && same_bits(p[0], ps));
+    }
+    /* t, h and t + h: after a good step, continuing the trajectory */
+    const double hs[] = { NAN, INFINITY, -INFINITY, 0.1, 1e308 };
+    const double ts[] = { 0, 0, 0, NAN, 1e308 };
+    for (int c = 0; c < 5; c++) {
+        double t = ts[c] == ts[c] ? ts[c] : 0, q[1] = { 1 }, p[1] = { 1 };
+        verlet_reset(w);
+        CHECK(verlet_step(w, &t, q, p, ts[c] == 1e308 ? 1 : 0.1) == VIGEN_SUCCESS);
+        if (ts[c] != ts[c]) t = NAN;
+        double tb = t, qb = q[0], pb = p[0];
+        int st = verlet_step(w, &t, q, p, hs[c]);
+        CHECK_MSG(st == VIGEN_EINVAL, "t = %g, h = %g: status %d", tb, hs[c], st);
+        CHECK(same_bits(t, tb) && same_bits(q[0], qb) && same_bits(p[0], pb));
+    }
+    /* h = 1e300 from t = 0: t + h is finite, the new state is not */
+    double t = 0, q[1] = { 1 }, p[1] = { 1 };
+    CHECK(verlet_step(w, &t, q, p, 1e300) == VIGEN_ENONFINITE);
+    CHECK(t == 0 && q[0] == 1 && p[0] == 1);
+    verlet_free(w);
 }
 
 /* Stormer-Verlet, explicit path: one gradient of each kind per step (the
@@ -338,7 +453,9 @@ int main(void)
     test_gauss2_ho();
     test_huge_step();
     test_nonfinite_gradient();
+    test_newton_nan_first();
     test_verlet();
+    test_verlet_hostile();
     test_driver();
     test_start_values();
     test_time_sum();

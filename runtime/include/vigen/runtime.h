@@ -13,8 +13,11 @@
  *     extern const vigen_stepper_type NAME_type;   for vigen_integrate
  *
  * NAME_step returns VIGEN_SUCCESS (0) or a status code below; on failure t, q
- * and p are left unchanged and NAME_stats(w)->last_iterations tells how many
- * stage iterations were spent.  Every call takes its own h (non-uniform grids).
+ * and p are left unchanged (bit for bit) and NAME_stats(w)->last_iterations
+ * tells how many stage iterations were spent.  t, h and t + h must be finite
+ * (VIGEN_EINVAL); a gradient, stage value or new state that is NaN or
+ * infinite gives VIGEN_ENONFINITE, on every path (explicit, fixed point,
+ * Newton) and for every real type.  Every call takes its own h (non-uniform grids).
  *
  * The problem:  q' = dH/dp(t, q, p),  p' = -dH/dq(t, q, p),  q, p in R^dim.
  * `separable` promises H = T(p) + V(t, q): dHdp ignores t and q, dHdq ignores
@@ -59,14 +62,14 @@ extern "C" {
 /* ---- status codes (values are stable; new codes are appended) ---------- */
 enum {
     VIGEN_SUCCESS = 0,
-    VIGEN_EINVAL,        /* invalid argument: NULL pointer, dim 0, h not finite (an
-                          * emitted NAME_step checks pointers only when compiled
-                          * with -DVIGEN_CHECK_ARGS) */
+    VIGEN_EINVAL,        /* invalid argument: NULL pointer, dim 0, t or h not finite, or
+                          * t + h overflowing (an emitted NAME_step checks pointers
+                          * only when compiled with -DVIGEN_CHECK_ARGS) */
     VIGEN_ENOMEM,        /* allocation failed */
     VIGEN_ENOCONV,       /* stage iteration stopped decreasing above the tolerance (diverges) */
     VIGEN_EMAXITER,      /* stage iteration reached max_iter without converging */
     VIGEN_ESINGULAR,     /* Newton matrix I - h J is singular */
-    VIGEN_ENONFINITE,    /* a gradient or stage value is NaN or infinite */
+    VIGEN_ENONFINITE,    /* a gradient, stage value or the new state is NaN or infinite */
     VIGEN_EUNSUPPORTED,  /* option not available for this stepper */
     VIGEN_ESTOPPED,      /* the observer asked vigen_integrate to stop */
     VIGEN_STATUS_MAX
@@ -165,9 +168,13 @@ void vigen_newton_free(vigen_newton *nw);
 double *vigen_newton_hessian(vigen_newton *nw);              /* buffer to fill */
 void vigen_newton_matrix_identity(vigen_newton *nw);         /* M = I */
 void vigen_newton_matrix_block(vigen_newton *nw, size_t i, size_t j, double ha, double hat);
-int vigen_newton_factor(vigen_newton *nw);                   /* LU; VIGEN_ESINGULAR */
+/* LU; VIGEN_ESINGULAR for a zero pivot, VIGEN_ENONFINITE for a NaN or
+ * infinite entry of M (a Hessian from gradients that are not finite) or an
+ * overflowing factorisation. */
+int vigen_newton_factor(vigen_newton *nw);
 double *vigen_newton_rhs(vigen_newton *nw);                  /* 2 s n doubles */
-int vigen_newton_solve(vigen_newton *nw);                    /* rhs <- M^-1 rhs */
+/* rhs <- M^-1 rhs; VIGEN_ENONFINITE when rhs or the solution is not finite. */
+int vigen_newton_solve(vigen_newton *nw);
 
 /* ---- compensated summation (double; typed variants in runtime_real.h) ---- */
 /* Neumaier-compensated running sum. */

@@ -75,5 +75,18 @@ static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_update)(VIGEN_REAL x, VIGEN_REAL
     return s;
 }
 
+/* The same update written elsewhere: returns x + d with the compensation c
+ * fed in, and the new compensation in *c_out (x and c are left as they are,
+ * so that a step can be refused after computing it).  Bit for bit the result
+ * of vigen_twosum_update. */
+static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_next)(VIGEN_REAL x, VIGEN_REAL d, VIGEN_REAL c, VIGEN_REAL *c_out)
+{
+    VIGEN_REAL e = d + c;
+    VIGEN_REAL s = x + e;
+    VIGEN_REAL bb = s - x;
+    *c_out = (x - (s - bb)) + (e - bb);
+    return s;
+}
+
 /* Compensated sum of an array of this type. */
 VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);

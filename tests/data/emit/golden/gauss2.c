@@ -54,7 +54,7 @@
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
-#define GAUSS2_NARRAYS 22
+#define GAUSS2_NARRAYS 24
 
 struct gauss2_workspace {
     vigen_hamiltonian sys;
@@ -67,7 +67,9 @@ struct gauss2_workspace {
     double *F[2], *G[2];     /* dH/dp, dH/dq at the stages */
     double *Fo[2], *Go[2];   /* the same at the previous step's stages */
     double *cq, *cp, ct;           /* compensation of the q, p and t updates */
-    double *q0s, *p0s;             /* copies of q and p when a step needs them */
+    double *cqn, *cpn;             /* the compensation a step computes (swapped with cq, cp) */
+    double *qx, *px;               /* the state at the start of an explicit step (to restore
+                                      it), the new state of an implicit one (until finite) */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
     int history;                    /* Fo, Go and hprev are valid */
@@ -96,6 +98,24 @@ static inline double gauss2_inc_value(gauss2_inc m) { double d; memcpy(&d, &m, s
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
 static inline double gauss2_rel(double d, double scale) { return d == 0 ? 0.0 : (double)(d / scale); }
+/* The end of a step whose new state is finite (the caller checks with
+ * gauss2_nf_add below): the compensation computed into w->cqn, w->cpn and
+ * ct (for t1) is taken over, t set to t1. */
+static inline void gauss2_commit(gauss2_workspace *w, double *t, const double *q, const double *p, double t1,
+                                 double ct, int kahan)
+{
+    if (kahan) {
+        /* cq, cp and cqn, cpn are adjacent pairs: swap the pairs */
+        double *c = w->cq; w->cq = w->cqn; w->cqn = c;
+        c = w->cp; w->cp = w->cpn; w->cpn = c;
+        w->ct = ct;
+    }
+    *t = t1;
+    w->stats.steps++;
+    w->t_next = t1;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
+}
 
 void gauss2_reset(gauss2_workspace *w)
 {
@@ -127,6 +147,14 @@ static inline int gauss2_moved(const gauss2_workspace *w, double t, const double
             | (gauss2_bits(p[0]) ^ gauss2_bits(w->p_next0))) != 0;
 }
 
+/* Is the new state finite?  Each component x is folded in where it is
+ * written, as x - x: 0 for a finite x, NaN for an infinite or NaN one (one
+ * subtraction and one more operation per component, no second pass).  For
+ * double the bits are OR-ed (a one-cycle chain: a floating-point sum would
+ * make the update loops wait on the adder); 0 means finite. */
+typedef uint64_t gauss2_nf;
+static inline gauss2_nf gauss2_nf_add(gauss2_nf a, double x) { return a | gauss2_bits(x - x); }
+
 gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
 {
     if (sys == NULL || sys->dim == 0 || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
@@ -155,8 +183,10 @@ gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     }
     w->cq = m; m += n;
     w->cp = m; m += n;
-    w->q0s = m; m += n;
-    w->p0s = m; m += n;
+    w->cqn = m; m += n;
+    w->cpn = m; m += n;
+    w->qx = m; m += n;
+    w->px = m; m += n;
     w->fdwork = m; m += 6 * n;
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
         w->nw = vigen_newton_alloc(2, n);
@@ -394,29 +424,39 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
         w->stats.failed_steps++;
         return st;
     }
+    /* the new state into w->qx, w->px; q, p change only if it is finite */
+    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    gauss2_nf nf = 0;
     if (w->opt.kahan) {
+        const double *const cq = w->cq, *const cp = w->cp;
+        double *const cqn = w->cqn, *const cpn = w->cpn;
         for (size_t k = 0; k < n; k++) {
-            q[k] = vigen_twosum_update(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), &w->cq[k]);
-            p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), &w->cp[k]);
+            qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
+            pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
         }
-        *t = vigen_twosum_update(t0, h, &w->ct);
+        t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {
-            q[k] += (0x1p-1 * h) * (F1[k] + F2[k]);
-            p[k] -= (0x1p-1 * h) * (G1[k] + G2[k]);
+            qn[k] = q[k] + (0x1p-1 * h) * (F1[k] + F2[k]);
+            pn[k] = p[k] - (0x1p-1 * h) * (G1[k] + G2[k]);
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
         }
-        *t = t0 + h;
+        t1 = t0 + h;
     }
+    if (gauss2_nf_add(nf, t1) != 0) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, qn, n * sizeof(double));
+    memcpy(p, pn, n * sizeof(double));
+    gauss2_commit(w, t, q, p, t1, ct, w->opt.kahan);
     for (int i = 0; i < 2; i++) {
         double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
         tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
     }
     w->hprev = h;
     w->history = 1;
-    w->stats.steps++;
-    w->t_next = *t;
-    w->q_next0 = q[0];
-    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
@@ -426,17 +466,20 @@ static inline int gauss2_dispatch(gauss2_workspace *w, double *t, double *q, dou
     return gauss2_implicit(w, t, q, p, h);
 }
 
-/* The unusual cases, out of line: h zero or not finite, or a call that
- * does not continue the last step. */
+/* The unusual cases, out of line: t or h not finite, t + h overflowing, h
+ * zero, or a call that does not continue the last step. */
 GAUSS2_NOINLINE int gauss2_step_slow(gauss2_workspace *w, double *t, double *q, double *p, double h)
 {
-    if (!(h - h == 0)) return VIGEN_EINVAL;
+    const double t1 = *t + h;   /* NaN or infinite when t or h is, or when t + h overflows */
+    if (!(t1 - t1 == 0)) return VIGEN_EINVAL;
     if (h == 0) return VIGEN_SUCCESS;
     gauss2_new_trajectory(w);
     return gauss2_dispatch(w, t, q, p, h);
 }
 
-/* Arguments: h must be finite (VIGEN_EINVAL otherwise; h = 0 does nothing).
+/* Arguments: t, h and t + h must be finite (VIGEN_EINVAL otherwise, nothing
+ * changed; h = 0 does nothing).  A step whose gradients, stage values or new
+ * state are NaN or infinite returns VIGEN_ENONFINITE with t, q, p unchanged.
  * The pointers are checked for NULL only when VIGEN_CHECK_ARGS or
  * GAUSS2_CHECK_ARGS is defined where this file is compiled (the workspace
  * from gauss2_alloc is never NULL once checked there). */
@@ -445,9 +488,11 @@ int gauss2_step(gauss2_workspace *w, double *t, double *q, double *p, double h)
 #if defined(VIGEN_CHECK_ARGS) || defined(GAUSS2_CHECK_ARGS)
     if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
 #endif
-    /* One branch for the unusual cases.  For an IEEE double h, finite and
-     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out). */
-    if (((gauss2_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff)) | gauss2_moved(w, *t, q, p))
+    /* One branch for the unusual cases.  For an IEEE double x, x finite and
+     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out);
+     * t + h is finite <=> (bits << 1) < bits of infinity << 1. */
+    if ((int)((gauss2_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff))
+        | (int)((gauss2_bits(*t + h) << 1) >= UINT64_C(0xffe0000000000000)) | gauss2_moved(w, *t, q, p))
         return gauss2_step_slow(w, t, q, p, h);
     return gauss2_dispatch(w, t, q, p, h);
 }

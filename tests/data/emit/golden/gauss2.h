@@ -8,10 +8,12 @@
  * API (see <vigen/runtime.h> for types, status codes and semantics):
  *   gauss2_alloc(sys, opt)  workspace for the problem sys; opt NULL = defaults;
  *                           NULL on invalid arguments or out of memory
- *   gauss2_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status
- *                           (VIGEN_EINVAL for h not finite; NULL pointers are
- *                           checked only if gauss2.c is compiled with
- *                           -DVIGEN_CHECK_ARGS)
+ *   gauss2_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status,
+ *                           t, q, p unchanged on failure (VIGEN_EINVAL for t,
+ *                           h or t + h not finite; VIGEN_ENONFINITE for a NaN
+ *                           or infinite gradient, stage value or new state;
+ *                           NULL pointers are checked only if gauss2.c is
+ *                           compiled with -DVIGEN_CHECK_ARGS)
  *   gauss2_reset(w)        forget the previous step (start a new trajectory)
  *   gauss2_stats(w)        iteration and gradient-evaluation counts
  *   gauss2_free(w)

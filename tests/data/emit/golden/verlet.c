@@ -54,7 +54,7 @@
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
-#define VERLET_NARRAYS 26
+#define VERLET_NARRAYS 28
 
 struct verlet_workspace {
     vigen_hamiltonian sys;
@@ -67,7 +67,9 @@ struct verlet_workspace {
     double *F[2], *G[2];     /* dH/dp, dH/dq at the stages */
     double *Fo[2], *Go[2];   /* the same at the previous step's stages */
     double *cq, *cp, ct;           /* compensation of the q, p and t updates */
-    double *q0s, *p0s;             /* copies of q and p when a step needs them */
+    double *cqn, *cpn;             /* the compensation a step computes (swapped with cq, cp) */
+    double *qx, *px;               /* the state at the start of an explicit step (to restore
+                                      it), the new state of an implicit one (until finite) */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
     int history;                    /* Fo, Go and hprev are valid */
@@ -98,6 +100,24 @@ static inline double verlet_inc_value(verlet_inc m) { double d; memcpy(&d, &m, s
  * largest stage value of the partition (at the start of the step for the
  * fixed-point iteration, in the current iterate for Newton); 0 when d = 0. */
 static inline double verlet_rel(double d, double scale) { return d == 0 ? 0.0 : (double)(d / scale); }
+/* The end of a step whose new state is finite (the caller checks with
+ * verlet_nf_add below): the compensation computed into w->cqn, w->cpn and
+ * ct (for t1) is taken over, t set to t1. */
+static inline void verlet_commit(verlet_workspace *w, double *t, const double *q, const double *p, double t1,
+                                 double ct, int kahan)
+{
+    if (kahan) {
+        /* cq, cp and cqn, cpn are adjacent pairs: swap the pairs */
+        double *c = w->cq; w->cq = w->cqn; w->cqn = c;
+        c = w->cp; w->cp = w->cpn; w->cpn = c;
+        w->ct = ct;
+    }
+    *t = t1;
+    w->stats.steps++;
+    w->t_next = t1;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
+}
 
 void verlet_reset(verlet_workspace *w)
 {
@@ -130,6 +150,14 @@ static inline int verlet_moved(const verlet_workspace *w, double t, const double
             | (verlet_bits(p[0]) ^ verlet_bits(w->p_next0))) != 0;
 }
 
+/* Is the new state finite?  Each component x is folded in where it is
+ * written, as x - x: 0 for a finite x, NaN for an infinite or NaN one (one
+ * subtraction and one more operation per component, no second pass).  For
+ * double the bits are OR-ed (a one-cycle chain: a floating-point sum would
+ * make the update loops wait on the adder); 0 means finite. */
+typedef uint64_t verlet_nf;
+static inline verlet_nf verlet_nf_add(verlet_nf a, double x) { return a | verlet_bits(x - x); }
+
 verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
 {
     if (sys == NULL || sys->dim == 0 || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
@@ -158,8 +186,10 @@ verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     }
     w->cq = m; m += n;
     w->cp = m; m += n;
-    w->q0s = m; m += n;
-    w->p0s = m; m += n;
+    w->cqn = m; m += n;
+    w->cpn = m; m += n;
+    w->qx = m; m += n;
+    w->px = m; m += n;
     w->fdwork = m; m += 6 * n;
     for (int i = 0; i < 4; i++) { w->x[i] = m; m += n; }
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
@@ -394,29 +424,39 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
         w->stats.failed_steps++;
         return st;
     }
+    /* the new state into w->qx, w->px; q, p change only if it is finite */
+    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    verlet_nf nf = 0;
     if (w->opt.kahan) {
+        const double *const cq = w->cq, *const cp = w->cp;
+        double *const cqn = w->cqn, *const cpn = w->cpn;
         for (size_t k = 0; k < n; k++) {
-            q[k] = vigen_twosum_update(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), &w->cq[k]);
-            p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), &w->cp[k]);
+            qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
+            pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
+            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
         }
-        *t = vigen_twosum_update(t0, h, &w->ct);
+        t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {
-            q[k] += (0x1p-1 * h) * (F1[k] + F2[k]);
-            p[k] -= (0x1p-1 * h) * (G1[k] + G2[k]);
+            qn[k] = q[k] + (0x1p-1 * h) * (F1[k] + F2[k]);
+            pn[k] = p[k] - (0x1p-1 * h) * (G1[k] + G2[k]);
+            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
         }
-        *t = t0 + h;
+        t1 = t0 + h;
     }
+    if (verlet_nf_add(nf, t1) != 0) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, qn, n * sizeof(double));
+    memcpy(p, pn, n * sizeof(double));
+    verlet_commit(w, t, q, p, t1, ct, w->opt.kahan);
     for (int i = 0; i < 2; i++) {
         double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
         tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
     }
     w->hprev = h;
     w->history = 1;
-    w->stats.steps++;
-    w->t_next = *t;
-    w->q_next0 = q[0];
-    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
@@ -428,47 +468,76 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
 {
     const size_t n = w->n;
     const double t0 = *t;
-    double t1;
-    double *restrict const cq = w->cq;
-    double *restrict const cp = w->cp;
+    double t1, ct = w->ct;
+    verlet_nf nf = 0;   /* see verlet_nf_add */
+    /* q and p are updated in place; their values at the start are kept in
+     * qs, ps as they are overwritten (read there afterwards, and put back if
+     * the new state is not finite); the compensation goes to cq, cp (w->cqn,
+     * w->cpn) from cq0, cp0, taken over only for a finite new state */
+    double *restrict const qs = w->qx;
+    double *restrict const ps = w->px;
+    const double *restrict const cq0 = w->cq;
+    const double *restrict const cp0 = w->cp;
+    double *restrict const cq = w->cqn;
+    double *restrict const cp = w->cpn;
     double *restrict const X0 = w->x[0];
     double *restrict const X1 = w->x[1];
     double *restrict const X2 = w->x[2];
     double *restrict const X3 = w->x[3];
-    const double *const q0 = q;
-    const double *const p0 = p;
-    if (kahan) t1 = vigen_twosum_update(t0, h, &w->ct);
+    if (kahan) t1 = vigen_twosum_update(t0, h, &ct);
     else t1 = t0 + h;
-    (void)q0; (void)p0; (void)t1; (void)cq; (void)cp;
+    (void)qs; (void)ps; (void)cq; (void)cp; (void)cq0; (void)cp0;
     if (w->fsal) {
         w->stats.fsal_reuses++;
     } else {
-        verlet_dHdq(w, t0, q0, p, X0);
+        verlet_dHdq(w, t0, q, p, X0);
         w->stats.dHdq_evals++;
     }
-    for (size_t k = 0; k < n; k++) X1[k] = p0[k] - (0x1p-1 * h) * X0[k];
+    for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
     verlet_dHdp(w, t0, q, X1, X2);
     w->stats.dHdp_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) q[k] = vigen_twosum_update(q[k], h * X2[k], &cq[k]);
+        for (size_t k = 0; k < n; k++) {
+            const double x = q[k];
+            qs[k] = x;
+            q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+            nf = verlet_nf_add(nf, q[k]);
+        }
     } else {
-        for (size_t k = 0; k < n; k++) q[k] += h * X2[k];
+        for (size_t k = 0; k < n; k++) {
+            const double x = q[k];
+            qs[k] = x;
+            q[k] = x + h * X2[k];
+            nf = verlet_nf_add(nf, q[k]);
+        }
     }
     verlet_dHdq(w, t1, q, p, X3);
     w->stats.dHdq_evals++;
     if (kahan) {
-        for (size_t k = 0; k < n; k++) p[k] = vigen_twosum_update(p[k], -((0x1p-1 * h) * (X0[k] + X3[k])), &cp[k]);
+        for (size_t k = 0; k < n; k++) {
+            const double x = p[k];
+            ps[k] = x;
+            p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
+            nf = verlet_nf_add(nf, p[k]);
+        }
     } else {
-        for (size_t k = 0; k < n; k++) p[k] -= (0x1p-1 * h) * (X0[k] + X3[k]);
+        for (size_t k = 0; k < n; k++) {
+            const double x = p[k];
+            ps[k] = x;
+            p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
+            nf = verlet_nf_add(nf, p[k]);
+        }
     }
+    if (verlet_nf_add(nf, t1) != 0) {
+        memcpy(q, qs, n * sizeof(double));
+        memcpy(p, ps, n * sizeof(double));
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    verlet_commit(w, t, q, p, t1, ct, kahan);
     w->x[0] = X3;
     w->x[3] = X0;
     w->fsal = 1;
-    *t = t1;
-    w->stats.steps++;
-    w->t_next = t1;
-    w->q_next0 = q[0];
-    w->p_next0 = p[0];
     return VIGEN_SUCCESS;
 }
 
@@ -490,17 +559,20 @@ static inline int verlet_dispatch(verlet_workspace *w, double *t, double *q, dou
     return verlet_implicit(w, t, q, p, h);
 }
 
-/* The unusual cases, out of line: h zero or not finite, or a call that
- * does not continue the last step. */
+/* The unusual cases, out of line: t or h not finite, t + h overflowing, h
+ * zero, or a call that does not continue the last step. */
 VERLET_NOINLINE int verlet_step_slow(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    if (!(h - h == 0)) return VIGEN_EINVAL;
+    const double t1 = *t + h;   /* NaN or infinite when t or h is, or when t + h overflows */
+    if (!(t1 - t1 == 0)) return VIGEN_EINVAL;
     if (h == 0) return VIGEN_SUCCESS;
     verlet_new_trajectory(w);
     return verlet_dispatch(w, t, q, p, h);
 }
 
-/* Arguments: h must be finite (VIGEN_EINVAL otherwise; h = 0 does nothing).
+/* Arguments: t, h and t + h must be finite (VIGEN_EINVAL otherwise, nothing
+ * changed; h = 0 does nothing).  A step whose gradients, stage values or new
+ * state are NaN or infinite returns VIGEN_ENONFINITE with t, q, p unchanged.
  * The pointers are checked for NULL only when VIGEN_CHECK_ARGS or
  * VERLET_CHECK_ARGS is defined where this file is compiled (the workspace
  * from verlet_alloc is never NULL once checked there). */
@@ -509,9 +581,11 @@ int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h)
 #if defined(VIGEN_CHECK_ARGS) || defined(VERLET_CHECK_ARGS)
     if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
 #endif
-    /* One branch for the unusual cases.  For an IEEE double h, finite and
-     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out). */
-    if (((verlet_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff)) | verlet_moved(w, *t, q, p))
+    /* One branch for the unusual cases.  For an IEEE double x, x finite and
+     * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out);
+     * t + h is finite <=> (bits << 1) < bits of infinity << 1. */
+    if ((int)((verlet_bits(h) << 1) - 1 >= UINT64_C(0xffdfffffffffffff))
+        | (int)((verlet_bits(*t + h) << 1) >= UINT64_C(0xffe0000000000000)) | verlet_moved(w, *t, q, p))
         return verlet_step_slow(w, t, q, p, h);
     return verlet_dispatch(w, t, q, p, h);
 }

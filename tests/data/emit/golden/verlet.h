@@ -8,10 +8,12 @@
  * API (see <vigen/runtime.h> for types, status codes and semantics):
  *   verlet_alloc(sys, opt)  workspace for the problem sys; opt NULL = defaults;
  *                           NULL on invalid arguments or out of memory
- *   verlet_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status
- *                           (VIGEN_EINVAL for h not finite; NULL pointers are
- *                           checked only if verlet.c is compiled with
- *                           -DVIGEN_CHECK_ARGS)
+ *   verlet_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status,
+ *                           t, q, p unchanged on failure (VIGEN_EINVAL for t,
+ *                           h or t + h not finite; VIGEN_ENONFINITE for a NaN
+ *                           or infinite gradient, stage value or new state;
+ *                           NULL pointers are checked only if verlet.c is
+ *                           compiled with -DVIGEN_CHECK_ARGS)
  *   verlet_reset(w)        forget the previous step (start a new trajectory)
  *   verlet_stats(w)        iteration and gradient-evaluation counts
  *   verlet_free(w)
