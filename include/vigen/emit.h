@@ -58,7 +58,7 @@
  * slot from the tableau.  The PRK slots: NAME, UNAME, TABLEAU_NAME, REAL,
  * SFX, HAM, STEPPER_TYPE, STAGES, ORDER, COEF_HEAD, NARRAYS, NX, texts;
  * HEADER and COEF_LINES, comment lines; DOUBLE, LONG_DOUBLE, FLOAT128,
- * IMPLICIT, EXPLICIT, LAGRANGE, COPY_Q0, COPY_P0, FSAL, HAS_UPDATE_Q,
+ * IMPLICIT, EXPLICIT, LAGRANGE, FSAL, HAS_UPDATE_Q,
  * HAS_UPDATE_P, flags; and the blocks of C lines of the stage loops, the
  * Newton matrix, the extrapolation and the explicit step.
  * docs/templates.md describes each slot and how to add a variant.

@@ -284,34 +284,16 @@ static int plan_explicit(emit_explicit *X, emit_ctx *E, const plan *P)
         if (g_point(P, g) == K_END) ge = g;
     }
     int fsal_f = fs >= 0 && fe >= 0, fsal_g = gs >= 0 && ge >= 0;
-    /* does anything read q0 (p0) after q (p) is updated? */
-    int copy_q0 = 0, copy_p0 = 0, after_uq = 0, after_up = 0;
+    /* gradient evaluations per step, in the order of the explicit step */
     long nevf = 0, nevg = 0;
     for (slong k = 0; k < P->norder; k++) {
         slong a = P->order[k];
-        if (a == id_uq(P)) { after_uq = 1; continue; }
-        if (a == id_up(P)) { after_up = 1; continue; }
-        int reads_q0 = 0, reads_p0 = 0;
-        if (a < P->nq) reads_q0 = 1;
-        else if (a < P->nq + P->np) reads_p0 = 1;
-        else if (a < P->nq + P->np + P->nf) {
-            slong r = P->frep[a - P->nq - P->np];
-            reads_p0 = P->pkind[P->pcls[r]] == K_ZERO;
-            reads_q0 = P->general && P->qkind[P->qcls[r]] == K_ZERO;
-            nevf++;
-        } else {
-            slong r = P->grep[a - P->nq - P->np - P->nf];
-            reads_q0 = P->qkind[P->qcls[r]] == K_ZERO;
-            reads_p0 = P->general && P->pkind[P->pcls[r]] == K_ZERO;
-            nevg++;
-        }
-        copy_q0 |= reads_q0 && after_uq;
-        copy_p0 |= reads_p0 && after_up;
+        if (a == id_uq(P) || a == id_up(P)) continue;
+        if (a >= P->nq + P->np + P->nf) nevg++;
+        else if (a >= P->nq + P->np) nevf++;
     }
     X->mode = P->general ? EMIT_EXPLICIT_GENERAL : EMIT_EXPLICIT_SEPARABLE;
     X->nx = (long)(nx > 0 ? nx : 1);
-    X->copy_q0 = copy_q0;
-    X->copy_p0 = copy_p0;
     X->fsal = fsal_f || fsal_g;
     X->nevals_f = nevf - fsal_f;
     X->nevals_g = nevg - fsal_g;

@@ -37,7 +37,6 @@ typedef struct {
 typedef struct {
     int mode;                 /* EMIT_EXPLICIT_*: general = for any H */
     long nx;                  /* work arrays (at least 1 when explicit) */
-    int copy_q0, copy_p0;     /* q0 (p0) is read after q (p) is updated */
     int fsal;
     long nevals_f, nevals_g;  /* gradient evaluations per step */
     long swaps[2][2];         /* first-same-as-last array exchanges */
