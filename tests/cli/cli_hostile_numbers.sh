@@ -78,6 +78,13 @@ run many-nodes 2 generate "$specs/hostile_num_many_nodes.lua" -o out.lua -- \
 # a literal implying 33 million bits (minutes and gigabytes)
 run literal-precision 3 check "$work/hostile_num_power.lua" -- \
   "hostile_num_power.lua" "above the cap of 524288 bits" "--max-prec"
+# exponents of 2^(2^62) and 2^-(2^62) in one entry (a signed overflow in the
+# magnitude span of the expression evaluator, found by UBSan)
+cat >"$work/hostile_num_span.lua" <<'LUA'
+return { name = "hostile_num_span", s = 1, c = { "1/2" }, b = { "1" }, ct = { "1/2" }, At = { { "1/2" } },
+         A = { { "1/2 + 2^-(2^61) * 2^-(2^61) - 2^(2^61) * 2^(2^61)" } } }
+LUA
+run magnitude-span 3 check "$work/hostile_num_span.lua" -- "hostile_num_span.lua" "--max-prec"
 # --prec 1000000 (minutes)
 run option-prec 3 check "$src/tableaux/published/gauss_2.lua" --prec 1000000 -- \
   "--prec asks for 1000000 bits" "--max-prec"
