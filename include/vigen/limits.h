@@ -18,26 +18,28 @@ void vigen_sandbox_limits_default(vigen_sandbox_limits *limits);
 /* Changes the process-wide defaults (fields <= 0 are left as they are). */
 void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits);
 
-/* The largest number of stages (nodes of a spec, entries of c) a file may
- * give: Theorem 3 and the checker's conditions cost O(s^3) to O(s^4) ball
- * operations per precision, and an s x s tableau of 256 stages is already a
- * 65,536-entry file; a 256-stage Gauss method is generated in minutes. */
+/* The largest number of stages (nodes or basis functions of a spec) a file
+ * may give, the bound node and basis families already had
+ * (VIGEN_NODES_MAX_S): Theorem 3 and the checker's conditions cost O(s^3) to
+ * O(s^4) ball operations per precision; 100,000 nodes made FLINT abort
+ * allocating the s x s matrices. */
 #define VIGEN_MAX_STAGES 256
 
 /* The cap on the working precision, in bits, of every computation a file or
  * an option asks for (the precision implied by the digits of a literal,
  * --prec, --digits and the doubling loops of generate and check).  The
  * default, 2^19 bits (158,000 decimal digits), is 1.5 times what --digits
- * 100000 starts at (a polynomial basis is generated there in seconds) and
- * 128 times what the checker's own cap (4096 bits) allows; a check at 2^19
- * bits still takes about a minute (order 8, 3 stages) and at 10^6 bits
- * several, so a file or an option cannot make vigen run for hours or use
- * gigabytes through precision alone. */
+ * 100000 starts at (a polynomial basis of 2 or 3 stages is generated there in
+ * about a second) and 128 times the checker's own refinement cap (4096 bits);
+ * a check at 10^6 bits takes minutes (gauss_3: over 2 minutes, 290 MB), so
+ * that a file or an option cannot make vigen run for hours or use gigabytes
+ * through precision alone. */
 #define VIGEN_MAX_PREC_DEFAULT 524288L
 
 /* Numerical integration (basis functions without a closed-form integral)
  * costs about the cube of the precision: it runs at most at 1/16 of the cap,
- * 32768 bits (9,800 digits, about a minute for two functions) by default. */
+ * 32768 bits (9,800 digits: about 70 s for one such function, exp(t^2)) by
+ * default. */
 #define VIGEN_QUADRATURE_PREC_SHARE 16
 
 /* The cap in force (the process-wide default unless changed). */
