@@ -15,7 +15,8 @@ static const handler_fn handlers[VIGEN_CMD_COUNT] = {
 #include "commands.def"
 };
 
-/* --max-memory and --max-instructions become the caps of every Lua state. */
+/* --max-memory and --max-instructions become the caps of every Lua state,
+ * --max-prec the cap on working precision. */
 static int apply_sandbox_options(const vigen_cli_args *args)
 {
     vigen_sandbox_limits limits = {0, 0};
@@ -30,6 +31,10 @@ static int apply_sandbox_options(const vigen_cli_args *args)
         limits.instruction_limit = (long)v;
     }
     vigen_sandbox_limits_set_default(&limits);
+    if (args->value[VIGEN_OPT_global_max_prec]) {
+        if ((rc = vigen_cli_whole(&v, args, VIGEN_OPT_global_max_prec, 64, 1LL << 40)) >= 0) return rc;
+        vigen_prec_limit_set((long)v);
+    }
     return -1;
 }
 

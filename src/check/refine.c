@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check/check_internal.h"
+#include "vigen/limits.h"
 
 /* Evaluates t at prec (texts), retrying higher on precision-dependent domain
  * errors; a tableau without texts keeps its balls. */
@@ -109,8 +110,13 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
 
     slong prec = opt.prec > 0 ? opt.prec : chk_adequate_prec(t);
     if (against && opt.prec <= 0 && chk_adequate_prec(against) > prec) prec = chk_adequate_prec(against);
+    /* the precision cap of the command (--max-prec) is never passed: not by
+     * the precision the literals imply, not by --prec, not by the loop */
+    if (vigen_prec_limit_check(prec, opt.prec > 0 ? "--prec asks for" : "the digits of the literals ask for", err))
+        return VIGEN_E_LIMIT;
     /* the entries may ask for more than the cap: allow one confirmation above the start */
     slong cap = opt.max_prec > 2 * prec ? opt.max_prec : 2 * prec;
+    if (cap > vigen_prec_limit()) cap = vigen_prec_limit();
     int refinable = chk_has_texts(t) || (against && chk_has_texts(against));
     exactness ex, ex_against;
     chk_exactness_init(&ex, t);

@@ -30,6 +30,7 @@ static void scale_pow10(arb_t y, const arb_t x, slong k, slong prec)
 static slong estimate_exponent10(const arb_t x)
 {
     arf_srcptr m = arb_midref(x);
+    /* callers have checked that the exponent fits (binary_exponent_fits) */
     /* |m| = f * 2^E with f in [1/2, 1): log10|m| ~ (E + log2 f) * log10(2). */
     slong E = ARF_EXP(m) == 0 ? 0 : fmpz_get_si(ARF_EXPREF(m));
     double f = 0.0;
@@ -71,11 +72,22 @@ static char *render(int negative, const fmpz_t m, slong digits, slong e)
     return sb.data;
 }
 
+/* 1 when the binary exponent of the midpoint of x is within +-3.4 10^8 (10^+-10^8):
+ * the decimal exponents derived from it then fit in a slong with room for
+ * digits and corrections. */
+static int binary_exponent_fits(const arb_t x)
+{
+    arf_srcptr m = arb_midref(x);
+    if (arf_is_zero(m)) return 1;
+    return fmpz_cmp_si(ARF_EXPREF(m), 4 * VIGEN_DECIMAL_EXP_MAX) <= 0 &&
+           fmpz_cmp_si(ARF_EXPREF(m), -4 * VIGEN_DECIMAL_EXP_MAX) >= 0;
+}
+
 char *vigen_decimal_format(const arb_t x, slong digits)
 {
-    if (digits < 1) return NULL;
+    if (digits < 1 || digits > VIGEN_DECIMAL_EXP_MAX) return NULL;
     if (arb_is_zero(x)) return vigen_strdup("0");
-    if (!arb_is_finite(x) || arb_contains_zero(x)) return NULL;
+    if (!arb_is_finite(x) || arb_contains_zero(x) || !binary_exponent_fits(x)) return NULL;
 
     slong prec = arb_bits(x) + (slong)(3.33 * (double)digits) + 64;
     slong e = estimate_exponent10(x);
@@ -123,7 +135,10 @@ char *vigen_decimal_format_zero(const arb_t x)
         arb_t twice;
         arb_init(twice);
         arb_set_arf(twice, u);
-        slong K = estimate_exponent10(twice) + 1; /* first guess: 10^K >= 2u */
+        /* below 10^-K_MIN (2^-(3.33 K_MIN)): written 0e-K_MIN, certified as well */
+        slong K = -VIGEN_DECIMAL_ZERO_EXP_MIN;
+        if (!arf_is_zero(u) && arf_cmp_2exp_si(u, -(slong)(3.33 * VIGEN_DECIMAL_ZERO_EXP_MIN)) > 0)
+            K = estimate_exponent10(twice) + 1; /* first guess: 10^K >= 2u */
         if (K > 0) K = 0;
         for (;;) {
             arb_t p;
@@ -176,7 +191,7 @@ static int split_decimal(const char *text, int *negative, char **digits_out, slo
             e = 10 * e + (*p - '0');
             /* an absurd exponent is not read as a rounded decimal (the exact
              * expression parser, which handles any exponent, reads it) */
-            if (e > 100000000) { vigen_strbuf_clear(&sb); return 0; }
+            if (e > VIGEN_DECIMAL_EXP_MAX) { vigen_strbuf_clear(&sb); return 0; }
             p++;
         }
         if (eneg) e = -e;

@@ -10,13 +10,27 @@
 
 #include <arb.h>
 
+/* The largest decimal exponent read from input ("1e100000000"; the exact
+ * expression parser refuses more, the rounded-decimal reader does not read
+ * it as a rounded decimal): 10^(10^8) is 2^(3.3 10^8), far inside arb's
+ * range, and far beyond the precision cap. */
+#define VIGEN_DECIMAL_EXP_MAX 100000000L
+
+/* The smallest exponent vigen_decimal_format_zero writes: a ball smaller than
+ * 10^-VIGEN_DECIMAL_ZERO_EXP_MIN is written as 0e-VIGEN_DECIMAL_ZERO_EXP_MIN
+ * (still certified), so that a ball of radius 2^-(10^9) costs nothing to
+ * format. */
+#define VIGEN_DECIMAL_ZERO_EXP_MIN 1000000L
+
 /* Formats x with `digits` significant digits ("-0.1234", "1.2345e-7").  Returns
  * a heap string, or NULL when the ball is too wide to certify that many digits
- * (or contains 0).  Exact zero gives "0". */
+ * (or contains 0, or |x| is beyond 10^+-VIGEN_DECIMAL_EXP_MAX).  Exact zero
+ * gives "0". */
 char *vigen_decimal_format(const arb_t x, slong digits);
 
 /* For a ball containing 0: the string "0eK" (K <= 0 the largest exponent such
- * that |x| <= 10^K / 2 is certified), or NULL when |x| may exceed 1/2. */
+ * that |x| <= 10^K / 2 is certified, but at least -VIGEN_DECIMAL_ZERO_EXP_MIN),
+ * or NULL when |x| may exceed 1/2. */
 char *vigen_decimal_format_zero(const arb_t x);
 
 /* 1 if text is a plain decimal with a point or an exponent: [+-]digits[.digits][e[+-]digits]. */

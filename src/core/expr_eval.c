@@ -258,8 +258,12 @@ static void span_node(const node *n, slong *lo, slong *hi, int *any)
     arb_t v;
     arb_init(v);
     if (expr_eval_constant(v, n, 64) && !arb_contains_zero(v)) {
-        /* |v| lies in [2^(e-1), 2^e) up to the ball's tiny radius */
-        slong e = fmpz_get_si(ARF_EXPREF(arb_midref(v)));
+        /* |v| lies in [2^(e-1), 2^e) up to the ball's tiny radius; e is
+         * clamped to +-2^40 (far beyond any precision) so that hi - lo
+         * cannot overflow */
+        const fmpz *x = ARF_EXPREF(arb_midref(v));
+        const slong cap = (slong)1 << 40;
+        slong e = fmpz_cmp_si(x, cap) > 0 ? cap : fmpz_cmp_si(x, -cap) < 0 ? -cap : fmpz_get_si(x);
         if (!*any || e < *lo) *lo = e;
         if (!*any || e > *hi) *hi = e;
         *any = 1;

@@ -13,6 +13,7 @@
 #include <ctype.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/decimal.h"
 #include "core/expr_internal.h"
 
 /* Nesting limit: keeps the recursive parser, evaluator and destructor far
@@ -175,7 +176,19 @@ static int scan_number(parser *p, size_t pos, token *tok)
         size_t j = i + 1;
         if (s[j] == '+' || s[j] == '-') j++;
         if (is_digit(s[j])) {
-            while (is_digit(s[j])) j++;
+            /* range-checked before use: 1e99999999999999999999 would overflow
+             * arb's exponents (FLINT aborts) */
+            long e = 0;
+            while (is_digit(s[j])) {
+                if (e <= VIGEN_DECIMAL_EXP_MAX) e = 10 * e + (s[j] - '0');
+                j++;
+            }
+            if (e > VIGEN_DECIMAL_EXP_MAX) {
+                char *what = vigen_strdup_printf("exponent out of range in '%.*s'", (int)(j - pos), s + pos);
+                return syntax_error_owned(p, pos, what, vigen_strdup_printf("(a decimal exponent is at most %ld in "
+                                                                            "size: write the number another way)",
+                                                                            (long)VIGEN_DECIMAL_EXP_MAX));
+            }
             i = j;
         } else if (s[j] != '\0' && j == i + 1 && is_ident_char(s[j])) {
             /* "2exp(1)": not an exponent; the caller reports the missing '*' */

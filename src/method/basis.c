@@ -8,6 +8,7 @@
 #include <flint/fmpz_poly.h>
 #include "method/basis.h"
 #include "method/families.h"
+#include "vigen/limits.h"
 
 enum { FN_POLY, FN_TRIG, FN_EXPR, FN_LUA };
 
@@ -379,6 +380,13 @@ int vigen_basis_integral(arb_t res, vigen_basis *B, slong i, const arb_t x, slon
         /* sin, cos, exp of linear arguments (cos(pi*t), exp(t/2), ...): the
          * exact antiderivative, much faster than quadrature at high precision */
         if (f->kind == FN_EXPR && vigen_expr_integral_closed_form(res, f->expr, x, prec)) return VIGEN_OK;
+        /* quadrature costs about the cube of the precision: its own share of the cap */
+        if (prec > vigen_prec_limit() / VIGEN_QUADRATURE_PREC_SHARE)
+            return vigen_error_set(err, VIGEN_E_LIMIT, "the integral of %s needs quadrature at %ld bits, above its "
+                                   "cap of %ld bits (1/%d of --max-prec BITS, which raises it; or ask for fewer "
+                                   "--digits, or use basis functions with closed-form integrals)", f->label,
+                                   (long)prec, vigen_prec_limit() / VIGEN_QUADRATURE_PREC_SHARE,
+                                   VIGEN_QUADRATURE_PREC_SHARE);
         integrand_ctx ctx;
         ctx.basis = B;
         ctx.fn = f;

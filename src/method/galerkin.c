@@ -9,6 +9,7 @@
 #include "method/basis.h"
 #include "method/galerkin.h"
 #include "method/nodes.h"
+#include "vigen/limits.h"
 
 slong vigen_galerkin_initial_prec(slong digits, slong s)
 {
@@ -293,6 +294,14 @@ int vigen_galerkin_generate(vigen_tableau *out, vigen_spec *spec, slong digits, 
         return vigen_error_set(err, VIGEN_E_USAGE, "--digits must be between 1 and 100000 (got %ld)", (long)digits);
     slong prec = vigen_galerkin_initial_prec(digits, spec->s);
     slong max_prec = vigen_galerkin_max_prec(digits, spec->s);
+    /* the precision cap of the command (--max-prec) bounds both */
+    char *what = vigen_strdup_printf("%s: %ld certified digits of %ld stages ask for", spec->path, (long)digits,
+                                     (long)spec->s);
+    int rc0 = vigen_prec_limit_check(prec, what, err);
+    free(what);
+    if (rc0 != VIGEN_OK) return rc0;
+    int capped = max_prec > vigen_prec_limit();
+    if (capped) max_prec = vigen_prec_limit();
     int integral_failures = 0;
     for (;;) {
         vigen_error_clear(err);
@@ -315,6 +324,13 @@ int vigen_galerkin_generate(vigen_tableau *out, vigen_spec *spec, slong digits, 
             rc = VIGEN_E_PRECISION;
         }
         if (rc != VIGEN_E_PRECISION) return rc;
+        if (prec >= max_prec && capped) {
+            char *why = vigen_strdup(err->message ? err->message : "");
+            vigen_error_set(err, VIGEN_E_LIMIT, "%s (gave up certifying %ld digits at %ld bits, the precision cap: "
+                            "--max-prec BITS raises it)", why, (long)digits, (long)prec);
+            free(why);
+            return VIGEN_E_LIMIT;
+        }
         if (prec >= max_prec) {
             char *why = vigen_strdup(err->message ? err->message : "");
             vigen_error_set(err, VIGEN_E_PRECISION, "%s (gave up certifying %ld digits at %ld bits, the cap)", why,

@@ -27,6 +27,7 @@
 #include "method/spec.h"
 #include "method/families.h"
 #include "method/vocabulary.h"
+#include "vigen/limits.h"
 
 static const char *const known_fields[] = { "name", "description", "source", "nodes", "basis", NULL };
 
@@ -171,7 +172,7 @@ static void warn_unknown_fields(lua_State *L, int table, load_ctx *cx)
         lua_pop(L, 1);
     }
     /* table traversal order varies from run to run: sort for reproducible output */
-    qsort(cx->warnings, cx->n_warnings, sizeof *cx->warnings, compare_strings);
+    if (cx->n_warnings > 1) qsort(cx->warnings, cx->n_warnings, sizeof *cx->warnings, compare_strings);
     for (size_t i = 0; i < cx->n_warnings; i++) vigen_warn("%s", cx->warnings[i]);
 }
 
@@ -225,6 +226,10 @@ static int check_list(lua_State *L, int idx, const char *field, const char *exam
     }
     if (n == 0)
         return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s is empty; give a list such as %s", P, field, example);
+    if (n > VIGEN_MAX_STAGES)
+        return vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: %s has %lld entries; vigen generates methods of at most "
+                               "%d stages: give at most %d", P, field, (long long)n, VIGEN_MAX_STAGES,
+                               VIGEN_MAX_STAGES);
     *n_out = (slong)n;
     return VIGEN_OK;
 }

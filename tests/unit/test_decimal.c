@@ -193,6 +193,26 @@ int main(void)
     }
     fmpq_clear(v);
     flint_randclear(state);
+
+    /* hostile magnitudes: a zero of radius 2^-4000000000 is certified below
+     * 10^-1000000 / 2 (2^-4000000000 < 10^-1200000) without trying every
+     * exponent down to -1.2e9; balls beyond 10^+-10^8 are not formatted (their
+     * decimal exponents would overflow the arithmetic); exponents beyond
+     * 10^8 are not read as rounded decimals */
+    arb_zero(x);
+    mag_set_ui_2exp_si(arb_radref(x), 1, -4000000000L);
+    s = vigen_decimal_format_zero(x);
+    CHECK_MSG(s != NULL && strcmp(s, "0e-1000000") == 0, "got %s", s ? s : "NULL");
+    free(s);
+    arb_one(x);
+    arb_mul_2exp_si(x, x, (slong)1 << 50);
+    CHECK(vigen_decimal_format(x, 10) == NULL);
+    arb_one(x);
+    arb_mul_2exp_si(x, x, -((slong)1 << 50));
+    CHECK(vigen_decimal_format(x, 10) == NULL);
+    CHECK(vigen_decimal_is_rounded("1e100000000"));
+    CHECK(!vigen_decimal_is_rounded("1e100000001"));
+    CHECK(!vigen_decimal_is_rounded("0.5e-99999999999999999999"));
     arb_clear(x);
     arb_clear(y);
     TEST_MAIN_END();
