@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <string.h>
 #include "cli.h"
+#include "vigen/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
 
@@ -30,6 +31,30 @@ static int apply_sandbox_options(const vigen_cli_args *args)
         limits.instruction_limit = (long)v;
     }
     vigen_sandbox_limits_set_default(&limits);
+    return -1;
+}
+
+/* Caps of the process (vigen/guard.h): --max-seconds, and the arithmetic's
+ * memory, VIGEN_CLI_ARITH_FACTOR times --max-memory.  The time cap is finite
+ * because vigen runs at build time on files from elsewhere: a build step
+ * that hangs is worse than one that fails; 600 s is over a hundred times what
+ * the longest command in the repository takes (a spec at 100000 digits), and
+ * a user who means a longer run says so. */
+enum { VIGEN_CLI_MAX_SECONDS = 600, VIGEN_CLI_ARITH_FACTOR = 4 };
+
+static int apply_caps(const vigen_cli_args *args, int command)
+{
+    long long seconds = VIGEN_CLI_MAX_SECONDS;
+    int rc;
+    if (args->value[VIGEN_OPT_global_max_seconds] &&
+        (rc = vigen_cli_whole(&seconds, args, VIGEN_OPT_global_max_seconds, 1, 31536000)) >= 0)
+        return rc;
+    vigen_sandbox_limits limits; /* --max-memory is there already */
+    vigen_sandbox_limits_default(&limits);
+    char program[64];
+    snprintf(program, sizeof program, "vigen %s", vigen_cli_commands[command].name);
+    vigen_guard_caps caps = { program, (unsigned long)seconds, limits.memory_limit * VIGEN_CLI_ARITH_FACTOR };
+    vigen_guard_set_caps(&caps);
     return -1;
 }
 
@@ -79,6 +104,7 @@ static int run(int *command_out, int argc, char **argv)
     }
     if (args.value[VIGEN_OPT_global_version]) return vigen_cmd_version(&args);
     if ((rc = apply_sandbox_options(&args)) >= 0) return rc;
+    if ((rc = apply_caps(&args, command)) >= 0) return rc;
     const char *operand = vigen_cli_commands[command].operand;
     if (operand[0] != '\0' && operand[0] != '[' && args.operand == NULL)
         return vigen_cli_usage_error(command, "%s", vigen_cli_commands[command].ask);
@@ -92,6 +118,7 @@ static int run(int *command_out, int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    vigen_guard_install();
     int command = VIGEN_CMD_global;
     int rc = run(&command, argc - 1, argv + 1);
     rc = finish_output(command, rc);
