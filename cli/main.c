@@ -37,9 +37,12 @@ static int apply_sandbox_options(const vigen_cli_args *args)
 /* Caps of the process (vigen/guard.h): --max-seconds, and the arithmetic's
  * memory, VIGEN_CLI_ARITH_FACTOR times --max-memory.  The time cap is finite
  * because vigen runs at build time on files from elsewhere: a build step
- * that hangs is worse than one that fails; 600 s is over a hundred times what
- * the longest command in the repository takes (a spec at 100000 digits), and
- * a user who means a longer run says so. */
+ * that hangs is worse than one that fails.  The specs of tableaux/ generate
+ * in well under a second each and emit in a few; a Lua basis (certified
+ * quadrature) at --digits 10000 takes about two minutes, so 600 s leaves
+ * room for slower machines and heavy requests, and a user who means a longer
+ * run says so.  The arithmetic of those runs holds a few tens of MiB, far
+ * below 4 x 256 MiB. */
 enum { VIGEN_CLI_MAX_SECONDS = 600, VIGEN_CLI_ARITH_FACTOR = 4 };
 
 static int apply_caps(const vigen_cli_args *args, int command)

@@ -26,6 +26,8 @@ slow=$src/tableaux/specs/exponential_lua.lua # a Lua basis: quadrature, seconds 
 
 cc -shared -fPIC -o failwrite.so "$src/tests/data/faults/failwrite.c" -ldl || { echo "FAIL cannot compile the shim"; exit 1; }
 shim=$work/failwrite.so
+# a sanitizer build (libasan) accepts the shim loaded before its runtime
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
 
 digest() { sed -n 's/.*Tableau digest (FNV-1a 64 of the canonical text): \([0-9a-f]*\).*/\1/p' "$1"; }
 temps() { ls -a "$1" | grep -c '\.tmp\.' ; }
