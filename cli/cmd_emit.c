@@ -6,6 +6,7 @@
 #include <sys/stat.h>
 #include "cli.h"
 #include "vigen/emit.h"
+#include "vigen/file.h"
 
 /* A stepper that is not what its user expects is worth a warning even with
  * -q: the conditions that certainly fail. */
@@ -32,8 +33,9 @@ static int write_stepper(const char *dir, const char *ident, const char *h, cons
     const char *sep = (dl > 0 && dir[dl - 1] == '/') ? "" : "/";
     char *hp = vigen_strdup_printf("%s%s%s.h", dir, sep, ident);
     char *cp = vigen_strdup_printf("%s%s%s.c", dir, sep, ident);
-    if (rc == VIGEN_OK) rc = vigen_write_file_atomic(hp, h, err);
-    if (rc == VIGEN_OK) rc = vigen_write_file_atomic(cp, c, err);
+    /* both files or neither: a build sees the old pair or the new, never a mix */
+    const char *paths[2] = { hp, cp }, *texts[2] = { h, c };
+    if (rc == VIGEN_OK) rc = vigen_write_files_atomic(2, paths, texts, err);
     if (rc == VIGEN_OK && !quiet) {
         if (spec_digits > 0)
             fprintf(stderr, "vigen emit: wrote %s and %s (tableau generated from the spec with %ld certified digits)\n",

@@ -5,6 +5,7 @@
 #include <errno.h>
 #include <string.h>
 #include "cli.h"
+#include "vigen/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
 
@@ -35,6 +36,33 @@ static int apply_sandbox_options(const vigen_cli_args *args)
         if ((rc = vigen_cli_whole(&v, args, VIGEN_OPT_global_max_prec, 64, 1LL << 40)) >= 0) return rc;
         vigen_prec_limit_set((long)v);
     }
+    return -1;
+}
+
+/* Caps of the process (vigen/guard.h): --max-seconds, and the arithmetic's
+ * memory, VIGEN_CLI_ARITH_FACTOR times --max-memory.  The time cap is finite
+ * because vigen runs at build time on files from elsewhere: a build step
+ * that hangs is worse than one that fails.  The specs of tableaux/ generate
+ * in well under a second each and emit in a few; a Lua basis (certified
+ * quadrature) at --digits 10000 takes about two minutes, so 600 s leaves
+ * room for slower machines and heavy requests, and a user who means a longer
+ * run says so.  The arithmetic of those runs holds a few tens of MiB, far
+ * below 4 x 256 MiB. */
+enum { VIGEN_CLI_MAX_SECONDS = 600, VIGEN_CLI_ARITH_FACTOR = 4 };
+
+static int apply_caps(const vigen_cli_args *args, int command)
+{
+    long long seconds = VIGEN_CLI_MAX_SECONDS;
+    int rc;
+    if (args->value[VIGEN_OPT_global_max_seconds] &&
+        (rc = vigen_cli_whole(&seconds, args, VIGEN_OPT_global_max_seconds, 1, 31536000)) >= 0)
+        return rc;
+    vigen_sandbox_limits limits; /* --max-memory is there already */
+    vigen_sandbox_limits_default(&limits);
+    char program[64];
+    snprintf(program, sizeof program, "vigen %s", vigen_cli_commands[command].name);
+    vigen_guard_caps caps = { program, (unsigned long)seconds, limits.memory_limit * VIGEN_CLI_ARITH_FACTOR };
+    vigen_guard_set_caps(&caps);
     return -1;
 }
 
@@ -84,6 +112,7 @@ static int run(int *command_out, int argc, char **argv)
     }
     if (args.value[VIGEN_OPT_global_version]) return vigen_cmd_version(&args);
     if ((rc = apply_sandbox_options(&args)) >= 0) return rc;
+    if ((rc = apply_caps(&args, command)) >= 0) return rc;
     const char *operand = vigen_cli_commands[command].operand;
     if (operand[0] != '\0' && operand[0] != '[' && args.operand == NULL)
         return vigen_cli_usage_error(command, "%s", vigen_cli_commands[command].ask);
@@ -97,6 +126,7 @@ static int run(int *command_out, int argc, char **argv)
 
 int main(int argc, char **argv)
 {
+    vigen_guard_install();
     int command = VIGEN_CMD_global;
     int rc = run(&command, argc - 1, argv + 1);
     rc = finish_output(command, rc);

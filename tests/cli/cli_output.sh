@@ -5,7 +5,8 @@
 #   - -o through a symbolic link replaces the file it points to and keeps the
 #     link; -o onto a device (/dev/null) or a FIFO writes into it instead of
 #     replacing it; an existing file keeps its permissions; no temporary
-#     files are left behind;
+#     files are left behind; a write error on a file or on standard output
+#     (/dev/full, a read-only directory) is a message and exit status 3;
 #   - hostile or malformed tableau files (metatables, wrong shapes, floats,
 #     bad expressions, unknown fields) get a message naming the file and the
 #     entry, exit status 2, and never crash show or check.
@@ -48,6 +49,23 @@ grep -q gauss_legendre_s1 from_pipe.txt || fail "nothing came through the FIFO"
 # emit creates its output directory
 "$vigen" emit "$src/tests/data/emit/verlet.lua" --name verlet -q -o newdir/ && [ -f newdir/verlet.c ] && [ -f newdir/verlet.h ] ||
   fail "emit -o into a missing directory"
+
+# write errors on files are failures: a full device, a directory without
+# write permission (when not running as root, who may write anyway)
+if [ -w /dev/full ]; then
+  "$vigen" generate "$spec" -q -o /dev/full 2>err.txt
+  [ $? = 3 ] && grep -q "cannot write /dev/full: No space left on device" err.txt ||
+    fail "generate -o /dev/full: $(cat err.txt)"
+  "$vigen" show "$spec" --format lua >/dev/full 2>err.txt
+  [ $? = 3 ] && grep -q "cannot write the standard output" err.txt || fail "show >/dev/full: $(cat err.txt)"
+fi
+mkdir locked && chmod 555 locked
+if ! touch locked/probe 2>/dev/null; then
+  "$vigen" emit "$src/tests/data/emit/verlet.lua" --name verlet -q -o locked 2>err.txt
+  [ $? = 3 ] && grep -q "temporary file next to locked/verlet" err.txt || fail "emit into a read-only directory: $(cat err.txt)"
+  [ -z "$(ls -A locked)" ] || fail "emit into a read-only directory left $(ls -A locked)"
+fi
+chmod 755 locked
 
 leftovers=$(ls | grep -c '\.tmp\.' || true)
 [ "$leftovers" = 0 ] || fail "temporary files left: $(ls)"
