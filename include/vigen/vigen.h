@@ -13,6 +13,7 @@
 
 #include "vigen/error.h"
 #include "vigen/file.h"
+#include "vigen/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
 #include "vigen/method.h"

@@ -14,6 +14,7 @@
 #include "core/expr.h"
 #include "core/printable.h"
 #include "lua/tableau_file.h"
+#include "vigen/limits.h"
 
 static void raw_getfield(lua_State *L, int idx, const char *key)
 {
@@ -247,10 +248,10 @@ int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *pa
     if (rc != VIGEN_OK) return rc;
 
     raw_getfield(L, -1, "s");
-    if (!lua_isinteger(L, -1) || lua_tointeger(L, -1) < 1 || lua_tointeger(L, -1) > 4096) {
+    if (!lua_isinteger(L, -1) || lua_tointeger(L, -1) < 1 || lua_tointeger(L, -1) > VIGEN_MAX_STAGES) {
         lua_pop(L, 1);
-        return vigen_error_set(err, VIGEN_E_SPEC, "%s: 's' (the number of stages) must be an integer from 1 to 4096",
-                               path);
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: 's' (the number of stages) must be an integer from 1 to %d",
+                               path, VIGEN_MAX_STAGES);
     }
     slong s = (slong)lua_tointeger(L, -1);
     lua_pop(L, 1);

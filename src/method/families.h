@@ -5,8 +5,10 @@
 #ifndef VIGEN_FAMILIES_H
 #define VIGEN_FAMILIES_H
 
-/* Largest s accepted by any family (keeps polynomial degrees sane). */
-#define VIGEN_NODES_MAX_S 256
+#include "vigen/limits.h"
+
+/* Largest s accepted by any family: the stage bound of every method. */
+#define VIGEN_NODES_MAX_S VIGEN_MAX_STAGES
 
 /* NULL-terminated lists of the family names, in table order. */
 extern const char *const vigen_nodes_family_names[];

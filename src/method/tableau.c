@@ -8,6 +8,7 @@
 #include "core/expr.h"
 #include "lua/quote.h"
 #include "vigen/tableau.h"
+#include "vigen/limits.h"
 
 static char **texts_new(slong n)
 {
@@ -135,6 +136,8 @@ static int eval_matrix(arb_mat_t out, char **texts, slong prec, const char *key,
 
 int vigen_tableau_evaluate(vigen_tableau *t, slong prec, vigen_error *err)
 {
+    /* every evaluation of entries goes through here: show's refinement too */
+    if (vigen_prec_limit_check(prec, "evaluating the entries asks for", err)) return VIGEN_E_LIMIT;
     slong s = t->s;
     int rc = eval_texts(t->c, t->c_text, s, prec, "c", err);
     if (rc == VIGEN_OK) rc = eval_texts(t->b, t->b_text, s, prec, "b", err);

@@ -96,6 +96,19 @@ run max-prec-generate 3 --max-prec 1000 generate "$src/tableaux/specs/gauss_lege
   -o out.lua -- "gauss_legendre_s2.lua" "above the cap of 1000 bits" "--max-prec"
 run max-prec-check 3 check --max-prec 100 "$src/tableaux/published/gauss_2.lua" -- "--max-prec"
 lines=2 run max-prec-usage 2 check --max-prec x "$src/tableaux/published/gauss_2.lua" -- "--max-prec" "vigen help"
+# show honours the cap too (its refinement doubles the precision)
+run max-prec-show 3 --max-prec 200 show "$src/tableaux/published/gauss_3.lua" --digits 300 -- "--max-prec"
+# a tableau file declaring more stages than any method may have (minutes and
+# gigabytes for 2000 stages)
+python3 - "$work/hostile_num_stages.lua" <<'PY'
+import sys
+s = 300
+z = ", ".join(['"0"'] * s)
+with open(sys.argv[1], "w") as f:
+    f.write('return { name = "stages", s = %d, c = { %s }, b = { %s }, A = { %s } }\n'
+            % (s, z, z, ", ".join(["{ %s }" % z] * s)))
+PY
+run many-stages 2 check "$work/hostile_num_stages.lua" -- "hostile_num_stages.lua" "from 1 to 256"
 # a zero of radius 2^-4000000000 (formatting it ran out of memory)
 run zero-format 0 show "$work/hostile_num_zero_format.lua" -- "0e-34"
 # what is cheap stays valid: 100000 digits of a polynomial basis
