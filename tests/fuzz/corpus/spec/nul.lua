@@ -1,0 +1,1 @@
+return { name = "nul", nodes = {"0", "1\0junk"}, basis = "lagrange" }

@@ -1,0 +1,2 @@
+table.sort(setmetatable({}, {__len = function() return 1 << 40 end}))
+return {}

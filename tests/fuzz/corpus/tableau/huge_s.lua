@@ -1,0 +1,1 @@
+return { name = "t", s = 100000 }
