@@ -72,15 +72,17 @@ static char *render(int negative, const fmpz_t m, slong digits, slong e)
     return sb.data;
 }
 
-/* 1 when the binary exponent of the midpoint of x is within +-3.4 10^8 (10^+-10^8):
- * the decimal exponents derived from it then fit in a slong with room for
- * digits and corrections. */
+/* 1 when the binary exponent of the midpoint of x is within +-3 10^8, that is
+ * |x| within 10^+-(9 10^7): the decimal exponents derived from it fit in a
+ * slong with room for digits and corrections, and every decimal written stays
+ * within the +-10^8 exponents the reader accepts, so that it reads back as the
+ * ball it stands for. */
 static int binary_exponent_fits(const arb_t x)
 {
     arf_srcptr m = arb_midref(x);
     if (arf_is_zero(m)) return 1;
-    return fmpz_cmp_si(ARF_EXPREF(m), 4 * VIGEN_DECIMAL_EXP_MAX) <= 0 &&
-           fmpz_cmp_si(ARF_EXPREF(m), -4 * VIGEN_DECIMAL_EXP_MAX) >= 0;
+    return fmpz_cmp_si(ARF_EXPREF(m), 3 * VIGEN_DECIMAL_EXP_MAX) <= 0 &&
+           fmpz_cmp_si(ARF_EXPREF(m), -3 * VIGEN_DECIMAL_EXP_MAX) >= 0;
 }
 
 char *vigen_decimal_format(const arb_t x, slong digits)

@@ -6,7 +6,11 @@
 #include "core/expr_internal.h"
 
 /* to_arb_poly refuses polynomials of higher degree. */
-#define EXPR_MAX_POLY_DEGREE 100000
+/* Expanding a power of a polynomial costs its degree squared: past this
+ * degree an expression is integrated as a general function instead (under the
+ * caps of time and precision).  4 x the stage bound leaves room for every
+ * basis a spec of at most 256 functions can reasonably write. */
+#define EXPR_MAX_POLY_DEGREE 1024
 
 /* ------------------------------------------------------------------------ */
 /* Polynomials in t                                                           */

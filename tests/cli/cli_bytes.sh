@@ -132,5 +132,17 @@ json_ok "$work/out" '\u202etxt.exe' "check --json"
 run 0 check "$valid_spec" --json
 json_ok "$work/out" ' ' "check --json of a spec"
 
+# a generator field with a newline: the tableau file vigen writes from it
+# stays one comment line and reads back (it cannot carry Lua code of the
+# author's choice into the rewritten file)
+cat >"$work/gen.lua" <<'LUA'
+return { name = "gen", s = 1, c = { "1/2" }, A = { { "1/2" } }, b = { "1" },
+         generator = "x\nreturn { name = 'injected', s = 1, c = { '0' }, A = { { '0' } }, b = { '1' } } --" }
+LUA
+run 0 show "$work/gen.lua" --format lua
+cp "$work/out" "$work/gen_out.lua"
+run 0 show "$work/gen_out.lua" --format json
+grep -q '"name": "gen"' "$work/out" || fail "the rewritten tableau file does not read back as itself: $(head -3 "$work/gen_out.lua")"
+
 [ "$failures" -eq 0 ] || exit 1
 echo "cli_bytes: all checks passed"
