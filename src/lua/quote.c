@@ -32,12 +32,17 @@ void vigen_lua_quote(vigen_strbuf *out, const char *text)
     int level = 0;
     vigen_strbuf close;
     vigen_strbuf_init(&close);
+    /* the level whose closing bracket first occurs where it is appended: a
+     * text ending in ']' would otherwise close "]]" one character early */
     for (;;) {
         vigen_strbuf_clear(&close);
+        vigen_strbuf_append(&close, text);
+        size_t at = close.len;
         vigen_strbuf_append(&close, "]");
         for (int i = 0; i < level; i++) vigen_strbuf_append(&close, "=");
         vigen_strbuf_append(&close, "]");
-        if (strstr(text, close.data) == NULL) break;
+        const char *first = strstr(close.data, close.data + at);
+        if (first == close.data + at) break;
         level++;
     }
     vigen_strbuf_clear(&close);

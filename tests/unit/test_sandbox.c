@@ -496,7 +496,7 @@ static void test_quote(void)
 {
     static const char *const texts[] = {
         "1/2 - sqrt(3)/6", "", "say \"hi\"", "back\\slash", "\nleading newline", "a]]b", "a]]b]=]c]==]",
-        "line\r\nbreak", "{\"0\", \"1/2\"}", "\x1b[31mred\x1b[0m", "bell\a", "del\x7f",
+        "line\r\nbreak", "{\"0\", \"1/2\"}", "\x1b[31mred\x1b[0m", "bell\a", "del\x7f", "new\nline]", "new\nline]=", "]\n]]",
     };
     vigen_error err;
     vigen_error_init(&err);
