@@ -19,21 +19,6 @@ static void dHdq(double t, const double *q, const double *p, double *out, void *
     out[0] = w * w * q[0];
 }
 
-/* L = v^2/2 - omega^2 q^2/2. */
-static double lagrangian(double t, const double *q, const double *v, void *ctx)
-{
-    (void)t;
-    double w = omega_of(ctx);
-    return (v[0] * v[0] - w * w * q[0] * q[0]) / 2;
-}
-
-static void dLdq(double t, const double *q, const double *v, double *out, void *ctx)
-{
-    (void)t; (void)v;
-    double w = omega_of(ctx);
-    out[0] = -w * w * q[0];
-}
-
 static void d2Ldq2(double t, const double *q, const double *v, double *out, void *ctx)
 {
     (void)t; (void)q; (void)v;
@@ -54,10 +39,7 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
 int pbi_harmonic_oscillator_setup(vigen_problem *pb)
 {
     if (pbi_set_dim(pb, 1) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = pbi_copy_v, .H = energy, .separable = 1 };
-    pb->lag = (vigen_lagrangian){ .dim = 1, .dLdq = dLdq, .dLdv = pbi_copy_v, .L = lagrangian,
-                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = pbi_zero_block };
-    pb->legendre_inverse = pbi_copy_v;
+    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[0] = 1;
     pb->period = 2 * PBI_PI / pb->param[0];
     pb->default_time = 100 * pb->period;

@@ -20,20 +20,6 @@ static void dHdq(double t, const double *q, const double *p, double *out, void *
     out[1] = q[1] / r3;
 }
 
-/* L = |v|^2/2 + 1/|q|, v = p. */
-static double lagrangian(double t, const double *q, const double *v, void *ctx)
-{
-    (void)t; (void)ctx;
-    return (v[0] * v[0] + v[1] * v[1]) / 2 + 1 / hypot(q[0], q[1]);
-}
-
-static void dLdq(double t, const double *q, const double *v, double *out, void *ctx)
-{
-    dHdq(t, q, v, out, ctx);
-    out[0] = -out[0];
-    out[1] = -out[1];
-}
-
 static void d2Ldq2(double t, const double *q, const double *v, double *out, void *ctx)
 {
     (void)t; (void)v; (void)ctx;
@@ -89,10 +75,7 @@ int pbi_kepler_setup(vigen_problem *pb)
 {
     double e = pb->param[0];
     if (pbi_set_dim(pb, 2) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = pbi_copy_v, .H = energy, .separable = 1 };
-    pb->lag = (vigen_lagrangian){ .dim = 2, .dLdq = dLdq, .dLdv = pbi_copy_v, .L = lagrangian,
-                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = pbi_zero_block };
-    pb->legendre_inverse = pbi_copy_v;
+    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[0] = 1 - e;
     pb->p0[1] = sqrt((1 + e) / (1 - e));
     pb->period = 2 * PBI_PI;

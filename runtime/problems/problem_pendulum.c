@@ -27,19 +27,6 @@ static void dHdq(double t, const double *q, const double *p, double *out, void *
     out[0] = sin(q[0]);
 }
 
-/* L = v^2/2 + cos q. */
-static double lagrangian(double t, const double *q, const double *v, void *ctx)
-{
-    (void)t; (void)ctx;
-    return v[0] * v[0] / 2 + cos(q[0]);
-}
-
-static void dLdq(double t, const double *q, const double *v, double *out, void *ctx)
-{
-    (void)t; (void)v; (void)ctx;
-    out[0] = -sin(q[0]);
-}
-
 static void d2Ldq2(double t, const double *q, const double *v, double *out, void *ctx)
 {
     (void)t; (void)v; (void)ctx;
@@ -75,10 +62,7 @@ int pbi_pendulum_setup(vigen_problem *pb)
     gsl_set_error_handler(old);
     if (st != GSL_SUCCESS) return VIGEN_EINVAL;
     d->K = K.val;
-    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = pbi_copy_v, .H = energy, .separable = 1 };
-    pb->lag = (vigen_lagrangian){ .dim = 1, .dLdq = dLdq, .dLdv = pbi_copy_v, .L = lagrangian,
-                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = pbi_zero_block };
-    pb->legendre_inverse = pbi_copy_v;
+    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[0] = a;
     pb->period = 4 * d->K;
     pb->default_time = 100 * pb->period;

@@ -42,6 +42,12 @@ void pbi_copy_v(double t, const double *q, const double *v, double *out, void *c
 void pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx);
 void pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx);
 
+/* Sets the Hamiltonian H = |p|^2/2 + V(q) (given H and dH/dq; dim set
+ * before), its Lagrangian |v|^2/2 - V(q) with d2L/dq2 = -d2V/dq2 as given,
+ * and the identity as inverse Legendre map. */
+void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
+                   vigen_lhess_fn d2Ldq2);
+
 static inline double pbi_sq(double x) { return x * x; }
 
 #define PBI_PI 3.14159265358979323846
