@@ -7,7 +7,8 @@
  * Prints the largest relative errors of the energy, the total linear
  * momentum and the total angular momentum over the run, and Jupiter's mean
  * orbital period measured from the simulation (its angle about the Sun,
- * unwrapped): about 4332.6 days, or 11.86 years.
+ * unwrapped): about 4332.6 days, or 11.86 years; then the final positions
+ * (AU).
  *
  *   outer_solar_system [DAYS [H]]        defaults 200000 and 10
  */
@@ -75,6 +76,9 @@ int main(int argc, char **argv)
     printf("momentum-error %.3e\n", dP);
     printf("angular-momentum-error %.3e\n", dL);
     printf("jupiter-period-days %.1f\n", t * 2 * 3.14159265358979323846 / fabs(angle));
+    static const char *const body[6] = { "sun", "jupiter", "saturn", "uranus", "neptune", "pluto" };
+    for (int i = 0; i < 6; i++)
+        printf("position-%s %.10f %.10f %.10f\n", body[i], q[3 * i], q[3 * i + 1], q[3 * i + 2]);
     gauss2_free(w);
     vigen_problem_free(pb);
     return 0;

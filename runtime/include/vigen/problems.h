@@ -7,7 +7,8 @@
  *     if (vigen_problem_create(&pb, "kepler", "e=0.9", why, sizeof why) != VIGEN_SUCCESS)
  *         { fprintf(stderr, "%s\n", why); ... }
  *     const vigen_hamiltonian *H = vigen_problem_hamiltonian(pb);
- *     double t, q[8], p[8];                       dim = vigen_problem_dim(pb)
+ *     size_t dim = vigen_problem_dim(pb);          (fput: n; outer-solar-system: 18)
+ *     double t, *q = malloc(dim * sizeof *q), *p = malloc(dim * sizeof *p);
  *     vigen_problem_initial(pb, &t, q, p);
  *     ... integrate with any stepper ...
  *     double dE = vigen_problem_energy(pb, t, q, p) - E0;
