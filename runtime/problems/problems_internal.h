@@ -15,9 +15,11 @@ typedef double (*pbi_invariant_fn)(const vigen_problem *pb, size_t k, double t, 
                                    const double *p);
 typedef int (*pbi_reference_fn)(const vigen_problem *pb, double t, double *q, double *p);
 
+enum { PBI_MAX_PARAMS = 8 };
+
 struct vigen_problem {
     const vigen_problem_info *info;
-    double param[8];              /* values, in the order of info->params */
+    double param[PBI_MAX_PARAMS]; /* values, in the order of info->params */
     size_t dim;
     vigen_hamiltonian ham;        /* ctx = this problem */
     vigen_lagrangian lag;         /* dim 0: none; ctx = this problem */
@@ -47,8 +49,6 @@ void pbi_zero_block(double t, const double *q, const double *v, double *out, voi
  * and the identity as inverse Legendre map. */
 void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
                    vigen_lhess_fn d2Ldq2);
-
-static inline double pbi_sq(double x) { return x * x; }
 
 #define PBI_PI 3.14159265358979323846
 
