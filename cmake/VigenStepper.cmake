@@ -21,8 +21,8 @@
 # linked to vigen::runtime.  A program then does
 #   target_link_libraries(app PRIVATE <target>)
 # and `#include "<name>.h"`.  TABLEAU and SPEC are relative to the current
-# source directory; exactly one of them is given.  NAME must be a C identifier (it prefixes every emitted symbol)
-# and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
+# source directory; exactly one of them is given.  NAME must be a C
+# identifier (it prefixes every emitted symbol) and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
 # REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
 # decimal entries as written when they have too few digits for REAL).
 # Compile the program without -ffast-math (the emitted code refuses it).
@@ -40,10 +40,10 @@ function(vigen_add_stepper)
   if((VAS_TABLEAU AND VAS_SPEC) OR (NOT VAS_TABLEAU AND NOT VAS_SPEC))
     message(FATAL_ERROR "vigen_add_stepper: give either TABLEAU <file> or SPEC <file> (exactly one)")
   endif()
-  if(VAS_DIGITS AND NOT VAS_SPEC)
+  if(DEFINED VAS_DIGITS AND NOT VAS_SPEC)
     message(FATAL_ERROR "vigen_add_stepper: DIGITS goes with SPEC (a TABLEAU file has its digits already)")
   endif()
-  if(NOT VAS_DIGITS)
+  if(NOT DEFINED VAS_DIGITS)
     set(VAS_DIGITS 40)
   endif()
   if(NOT VAS_DIGITS MATCHES "^[1-9][0-9]*$" OR VAS_DIGITS GREATER 100000)

@@ -150,6 +150,8 @@ check 'bad_call TARGET s TABLEAU a.lua SPEC b.lua NAME s && grep -q "either TABL
 check 'bad_call TARGET s NAME s && grep -q "either TABLEAU <file> or SPEC <file>" "$T/log"' "neither TABLEAU nor SPEC is refused"
 check 'bad_call TARGET s TABLEAU a.lua DIGITS 30 NAME s && grep -q "DIGITS goes with SPEC" "$T/log"' \
     "DIGITS without SPEC is refused"
+check 'bad_call TARGET s SPEC a.lua DIGITS 0 NAME s && grep -q "DIGITS must be an integer from 1 to 100000, not .0." "$T/log"' \
+    "DIGITS 0 is refused"
 check 'bad_call TARGET s SPEC a.lua DIGITS 3x NAME s && grep -q "DIGITS must be an integer from 1 to 100000, not .3x." "$T/log"' \
     "DIGITS 3x is refused"
 
