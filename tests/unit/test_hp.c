@@ -293,6 +293,58 @@ static void test_charged(void)
     free(e);
 }
 
+/* second derivatives of the charged particle's L, for the exact Jacobian */
+static void cp_qq(double t, const double *q, const double *v, double *o, void *c)
+{
+    NOUNUSED;
+    double f_x = cp_B0 * cp_kappa * q[0], f_y = cp_B0 * cp_kappa * q[1], f_z = cp_B0 * cp_mu * q[2];
+    double s = q[0] * v[1] - q[1] * v[0];
+    o[0] = cp_B0 * cp_kappa * s + 2 * f_x * v[1] - cp_w2; o[1] = f_y * v[1] - f_x * v[0]; o[2] = f_z * v[1];
+    o[3] = o[1]; o[4] = cp_B0 * cp_kappa * s - 2 * f_y * v[0] - cp_w2; o[5] = -f_z * v[0];
+    o[6] = o[2]; o[7] = o[5]; o[8] = cp_B0 * cp_mu * s - 1;
+}
+static void cp_qv(double t, const double *q, const double *v, double *o, void *c)
+{
+    NOUNUSED; (void)v;
+    double f = cp_f(q), f_x = cp_B0 * cp_kappa * q[0], f_y = cp_B0 * cp_kappa * q[1], f_z = cp_B0 * cp_mu * q[2];
+    o[0] = -f_x * q[1];     o[1] = f_x * q[0] + f; o[2] = 0;
+    o[3] = -f_y * q[1] - f; o[4] = f_y * q[0];     o[5] = 0;
+    o[6] = -f_z * q[1];     o[7] = f_z * q[0];     o[8] = 0;
+}
+static void id3_vv(double t, const double *q, const double *v, double *o, void *c)
+{
+    NOUNUSED; (void)q; (void)v;
+    for (int k = 0; k < 9; k++) o[k] = (k % 4 == 0);
+}
+
+/* The exact Jacobian (second derivatives given) against differences on a
+ * non-separable L with d2L/dqdv not symmetric: the same trajectory, and
+ * Newton's iteration counts of an exact Jacobian (a wrong block, e.g. a
+ * transposed d2L/dqdv, shows as slow or failed convergence at this h). */
+static void test_exact_jacobian(void)
+{
+    for (int rule = 0; rule < 2; rule++) {
+        vigen_lagrangian lf = { 3, cp_dq, cp_dv, NULL, NULL, NULL, NULL, NULL };
+        vigen_lagrangian lx = { 3, cp_dq, cp_dv, NULL, NULL, cp_qq, id3_vv, cp_qv };
+        vigen_hp *wf = vigen_hp_alloc(&lf, rule, NULL, NULL), *wx = vigen_hp_alloc(&lx, rule, NULL, NULL);
+        double tf = 0, qf[3] = { 1.0, 0.2, 0.3 }, pf[3] = { 0.1, 1.2, -0.2 };
+        double tx = 0, qx[3] = { 1.0, 0.2, 0.3 }, px[3] = { 0.1, 1.2, -0.2 }, err = 0;
+        for (int k = 0; k < 300; k++) {
+            CHECK(vigen_hp_step(wf, &tf, qf, pf, 0.3) == 0 && vigen_hp_step(wx, &tx, qx, px, 0.3) == 0);
+            for (int i = 0; i < 3; i++) err = fmax(err, fmax(fabs(qf[i] - qx[i]), fabs(pf[i] - px[i])));
+        }
+        const vigen_stats *sf = vigen_hp_stats(wf), *sx = vigen_hp_stats(wx);
+        CHECK_MSG(err < 1e-11, "rule %d: exact vs difference Jacobian: trajectories differ by %.3e", rule, err);
+        CHECK_MSG(sx->iterations <= sf->iterations + sf->iterations / 20 && sx->max_iterations <= 12,
+                  "rule %d: %lu iterations (max %lu per step) with the exact Jacobian, %lu with differences", rule,
+                  sx->iterations, sx->max_iterations, sf->iterations);
+        /* differences cost 3 residuals per Jacobian, the exact one none */
+        CHECK(sx->dHdq_evals < sf->dHdq_evals);
+        vigen_hp_free(wf);
+        vigen_hp_free(wx);
+    }
+}
+
 /* ---- order 2: forced oscillator, L = v^2/2 - q^2/2 + q F cos(w t) ----------
  * q(t) = q0 cos t + p0 sin t + F (cos wt - cos t)/(1 - w^2), p = q'. */
 static const double fo_F = 0.8, fo_w = 2.3;
@@ -467,6 +519,7 @@ int main(void)
     test_emitted();
     test_relativistic();
     test_charged();
+    test_exact_jacobian();
     test_order();
     test_time_sum();
     test_bad_input();
