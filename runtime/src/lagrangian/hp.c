@@ -238,6 +238,7 @@ void vigen_hp_reset(vigen_hp *w)
     memset(&w->stats, 0, sizeof w->stats);
     if (w->m) memcpy(w->a, w->a0, w->m * sizeof(double));
     memset(w->v, 0, w->n * sizeof(double));
+    memset(w->vh, 0, w->n * sizeof(double));
     w->nhist = 0;
     w->have_end = 0;
 }
