@@ -11,7 +11,8 @@
  *   - the relativistic particle L = -m c^2 sqrt(1 - |v|^2/c^2) - k|q|^2/2:
  *     the energy c sqrt(m^2 c^2 + |p|^2) + V(q) has no drift over 10^5 steps
  *     and the angular momentum q x p (Noether, rotations) is conserved to
- *     round-off;
+ *     round-off; at 0.95 c, where plain Newton steps overshoot beyond c,
+ *     the steps succeed with a small energy error;
  *   - a charged particle in an axially symmetric static magnetic field,
  *     L = 1/2 |v|^2 + A(q).v - phi(q): bounded energy 1/2 |p - A|^2 + phi over
  *     10^5 steps, canonical angular momentum x p_y - y p_x (Noether) to
@@ -225,6 +226,18 @@ static void test_relativistic(void)
         CHECK_MSG(st == 0, "relativistic, rule %d: status %d at step %ld", rule, st, k);
         if (st == 0) check_no_drift(rule ? "relativistic, HP midpoint" : "relativistic, HP trapezoidal", e, n, e0, 1e-3);
         CHECK_MSG(lerr < 1e-12, "relativistic rule %d: angular momentum drifts by %.3e", rule, lerr);
+        vigen_hp_free(w);
+        /* |p| = 3 m c (v = 0.95 c): a plain Newton step from v = 0 would
+         * overshoot to |v| > c, where L is not defined; the steps succeed */
+        w = vigen_hp_alloc(&lag, rule, NULL, NULL);
+        double tf = 0, qf[2] = { 1.0, 0.0 }, pf[2] = { 0.0, 3.0 }, ef = 0;
+        const double ef0 = rel_energy(&r, qf, pf);
+        for (k = 0, st = 0; k < 2000 && st == 0; k++) {
+            st = vigen_hp_step(w, &tf, qf, pf, 0.01);
+            ef = fmax(ef, fabs(rel_energy(&r, qf, pf) - ef0));
+        }
+        CHECK_MSG(st == 0 && ef < 1e-3 * ef0, "relativistic at 0.95 c, rule %d: status %d at step %ld, energy error %.3e", rule,
+                  st, k, ef);
         vigen_hp_free(w);
     }
     free(e);
