@@ -22,6 +22,8 @@
  *   - the predictor: extrapolation saves iterations and changes nothing
  *     beyond round-off; a state changed from outside restarts the history
  *     (bit for bit a fresh workspace);
+ *   - symmetry: a step with -h undoes a step with h (both discrete
+ *     Lagrangians are symmetric), also for a time-dependent L;
  *   - order 2 against the exact solution of a forced oscillator (time
  *     dependent L, so the time arguments are checked too);
  *   - t as a compensated sum of the steps, v_{n+1/2} = (q_{n+1} - q_n)/h,
@@ -403,6 +405,36 @@ static void test_predictor(void)
     fprintf(stderr, "  predictor: %lu Newton iterations in 500 steps with extrapolation, %lu without\n", its[1], its[0]);
 }
 
+/* Both discrete Lagrangians are symmetric, so each stepper is its own
+ * adjoint: a step with -h from the result of a step with h returns to the
+ * start (time-dependent L included), to round-off. */
+static void fo_dq(double t, const double *q, const double *v, double *o, void *c);
+static void fo_dv(double t, const double *q, const double *v, double *o, void *c);
+static void test_symmetric(void)
+{
+    vigen_lagrangian lc = { 3, cp_dq, cp_dv, NULL, NULL, NULL, NULL, NULL };
+    vigen_lagrangian lf = { 1, fo_dq, fo_dv, NULL, NULL, NULL, NULL, NULL };
+    for (int rule = 0; rule < 2; rule++) {
+        for (int prob = 0; prob < 2; prob++) {
+            vigen_hp *w = vigen_hp_alloc(prob ? &lf : &lc, rule, NULL, NULL);
+            const size_t n = prob ? 1 : 3;
+            double t = 0.3, q[3] = { 1.0, 0.2, 0.3 }, p[3] = { 0.1, 1.2, -0.2 };
+            for (int k = 0; k < 20; k++) CHECK(vigen_hp_step(w, &t, q, p, 0.1) == 0);
+            double t0 = t, q0[3], p0[3], err = 0;
+            memcpy(q0, q, sizeof q);
+            memcpy(p0, p, sizeof p);
+            for (int k = 0; k < 5; k++) {
+                CHECK(vigen_hp_step(w, &t, q, p, 0.17) == 0 && vigen_hp_step(w, &t, q, p, -0.17) == 0);
+                for (size_t i = 0; i < n; i++) err = fmax(err, fmax(fabs(q[i] - q0[i]), fabs(p[i] - p0[i])));
+                err = fmax(err, fabs(t - t0));
+            }
+            CHECK_MSG(err < 1e-14, "rule %d, %s: a step with -h does not undo the step with h: %.3e", rule,
+                      prob ? "forced oscillator" : "charged particle", err);
+            vigen_hp_free(w);
+        }
+    }
+}
+
 /* ---- order 2: forced oscillator, L = v^2/2 - q^2/2 + q F cos(w t) ----------
  * q(t) = q0 cos t + p0 sin t + F (cos wt - cos t)/(1 - w^2), p = q'. */
 static const double fo_F = 0.8, fo_w = 2.3;
@@ -579,6 +611,7 @@ int main(void)
     test_charged();
     test_exact_jacobian();
     test_predictor();
+    test_symmetric();
     test_order();
     test_time_sum();
     test_bad_input();
