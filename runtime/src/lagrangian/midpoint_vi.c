@@ -22,6 +22,7 @@
  * Statistics: dHdq_evals counts dL/dq calls; dHdp_evals counts dL/dv calls
  * and calls of g (g is dH/dp of the Hamiltonian p.v - L); the shared solver
  * counts iterations, Jacobians (hessian_evals) and LU decompositions. */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -49,9 +50,11 @@ struct vigen_midpoint_vi {
     double *pc;                 /* p1 of the two-step residual */
     double *qn, *pn, *cqn, *cpn;
     double *cq, *cp, ct;        /* compensation of the q, p and t updates */
-    double *vprev;              /* v of the last step (predictor) */
+    double *vprev, *vprev2;     /* v of the last two steps (predictor) */
+    double hprev, hprev2;       /* their steps */
     double *qlast, *plast, tlast;   /* what the last step returned */
-    int history;                /* vprev, qlast, plast, tlast and compensation valid */
+    int history;                /* steps behind (0, 1, 2) with vprev.., qlast, plast, tlast
+                                   and the compensation valid */
     /* second derivatives: four n x n blocks, a base gradient pair, LU */
     double *Lqq, *Lqv, *Lvq, *Lvv;      /* adjacent, in this order */
     double *gq, *gv, *xq, *xv, *sq, *sv;   /* differences: base, point, shifted gradients */
@@ -113,9 +116,9 @@ static int mvi_hessian(vigen_midpoint_vi *w, double t, const double *q, const do
         w->lag.d2Ldv2(t, q, v, w->Lvv, w->lag.ctx);
         for (size_t i = 0; i < n; i++)
             for (size_t j = 0; j < n; j++) w->Lvq[i * n + j] = w->Lqv[j * n + i];
-        return mvi_finite(w->Lqq, 4 * n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+        return mvi_finite(w->Lqq, 4 * n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;   /* the 4 blocks */
     }
-    const double fd = w->opt.fd_step > 0 ? w->opt.fd_step : sqrt(2.220446049250313e-16);
+    const double fd = w->opt.fd_step > 0 ? w->opt.fd_step : sqrt(DBL_EPSILON);
     int st = mvi_dLdq(w, t, q, v, w->gq);
     if (st == VIGEN_SUCCESS) st = mvi_dLdv(w, t, q, v, w->gv);
     memcpy(w->xq, q, n * sizeof *q);
@@ -140,6 +143,13 @@ static int mvi_hessian(vigen_midpoint_vi *w, double t, const double *q, const do
     return st;
 }
 
+/* The second derivatives at the mid-point of the current solve's unknown d. */
+static int mvi_hessian_at(vigen_midpoint_vi *w, const double *d)
+{
+    mvi_midpoint(w, w->q0, d, w->h);
+    return mvi_hessian(w, w->tau, w->qbar, w->v);
+}
+
 /* LU of Lvv into w->A, w->perm.  VIGEN_ESINGULAR when Lvv is singular to
  * working precision (a degenerate Lagrangian: dL/dv cannot be inverted). */
 static int mvi_factor_lvv(vigen_midpoint_vi *w)
@@ -153,9 +163,9 @@ static int mvi_factor_lvv(vigen_midpoint_vi *w)
     int signum = 0;
     if (big == 0.0 || gsl_linalg_LU_decomp(w->A, w->perm, &signum) != GSL_SUCCESS)
         return VIGEN_ESINGULAR;
-    const double floor_ = 64.0 * (double)n * 2.220446049250313e-16 * big;
+    const double tiny = 64.0 * (double)n * DBL_EPSILON * big;
     for (size_t k = 0; k < n; k++)
-        if (!(fabs(gsl_matrix_get(w->A, k, k)) > floor_)) return VIGEN_ESINGULAR;
+        if (!(fabs(gsl_matrix_get(w->A, k, k)) > tiny)) return VIGEN_ESINGULAR;
     return VIGEN_SUCCESS;
 }
 
@@ -184,8 +194,7 @@ static int mvi_jacobian1(const double *d, double *J, void *ctx)
     vigen_midpoint_vi *w = ctx;
     const size_t n = w->n;
     const double h = w->h;
-    mvi_midpoint(w, w->q0, d, h);
-    int st = mvi_hessian(w, w->tau, w->qbar, w->v);
+    int st = mvi_hessian_at(w, d);
     if (st != VIGEN_SUCCESS) return st;
     for (size_t k = 0; k < n * n; k++) J[k] = 0.25 * h * h * w->Lqq[k] + 0.5 * h * w->Lqv[k];
     st = mvi_dLdq(w, w->tau, w->qbar, w->v, w->lq);
@@ -227,7 +236,12 @@ static int mvi_step1(vigen_midpoint_vi *w, double *t, double *q, double *p, doub
     w->q0 = q;
     w->p0 = p;
     int st = VIGEN_SUCCESS;
-    if (w->history) {
+    if (w->history == 2 && w->opt.extrapolate) {
+        /* v at the midpoints t - hprev/2 and t - hprev - hprev2/2, linearly
+         * extrapolated to t + h/2 */
+        const double s = (w->hprev + h) / (w->hprev2 + w->hprev);
+        for (size_t k = 0; k < n; k++) w->d[k] = h * (w->vprev[k] + s * (w->vprev[k] - w->vprev2[k]));
+    } else if (w->history) {
         for (size_t k = 0; k < n; k++) w->d[k] = h * w->vprev[k];
     } else {
         st = mvi_g(w, *t, q, p, w->lv);
@@ -264,11 +278,16 @@ static int mvi_step1(vigen_midpoint_vi *w, double *t, double *q, double *p, doub
         w->ct = ct;
     }
     *t = t1;
+    double *v2 = w->vprev2;
+    w->vprev2 = w->vprev;
+    w->vprev = v2;
     memcpy(w->vprev, w->v, n * sizeof *q);
+    w->hprev2 = w->hprev;
+    w->hprev = h;
     memcpy(w->qlast, q, n * sizeof *q);
     memcpy(w->plast, p, n * sizeof *p);
     w->tlast = t1;
-    w->history = 1;
+    w->history = w->history < 2 ? w->history + 1 : 2;
     return VIGEN_SUCCESS;
 }
 
@@ -306,8 +325,7 @@ static int mvi_jacobian2(const double *d, double *J, void *ctx)
     vigen_midpoint_vi *w = ctx;
     const size_t n = w->n;
     const double h = w->h;
-    mvi_midpoint(w, w->q0, d, h);
-    int st = mvi_hessian(w, w->tau, w->qbar, w->v);
+    int st = mvi_hessian_at(w, d);
     if (st == VIGEN_SUCCESS) st = mvi_factor_lvv(w);
     if (st != VIGEN_SUCCESS) return st;
     for (size_t k = 0; k < n * n; k++)
@@ -361,8 +379,8 @@ vigen_midpoint_vi *vigen_midpoint_vi_alloc(const vigen_lagrangian *lag, vigen_lg
 {
     if (vigen_lagrangian_validate(lag, NULL, NULL) != VIGEN_SUCCESS) return NULL;
     const size_t n = lag->dim;
-    enum { NVEC = 22, NMAT = 4 };
-    if (n > 4096) return NULL;      /* dense n x n Jacobians: far beyond their use */
+    enum { NVEC = 23, NMAT = 4 };
+    if ((size_t)-1 / sizeof(double) / (NVEC + NMAT) / n < n) return NULL;   /* size overflows */
     gsl_set_error_handler_off();
     vigen_midpoint_vi *w = calloc(1, sizeof *w);
     if (w == NULL) return NULL;
@@ -383,7 +401,7 @@ vigen_midpoint_vi *vigen_midpoint_vi_alloc(const vigen_lagrangian *lag, vigen_lg
     }
     double *m = w->mem;
     double **vecs[NVEC] = {&w->qbar, &w->v, &w->lq, &w->lv, &w->pm, &w->d, &w->pc, &w->qn, &w->pn,
-                           &w->cqn, &w->cpn, &w->cq, &w->cp, &w->vprev, &w->qlast, &w->plast,
+                           &w->cqn, &w->cpn, &w->cq, &w->cp, &w->vprev, &w->vprev2, &w->qlast, &w->plast,
                            &w->gq, &w->gv, &w->xq, &w->xv, &w->sq, &w->sv};
     for (size_t i = 0; i < NVEC; i++, m += n) *vecs[i] = m;
     double **mats[NMAT] = {&w->Lqq, &w->Lqv, &w->Lvq, &w->Lvv};
