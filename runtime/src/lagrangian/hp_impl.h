@@ -1,0 +1,19 @@
+/* hp_impl.h — what the trapezoidal variational integrator uses of the
+ * Hamilton–Pontryagin stepper (internal to the runtime): a step between two
+ * given times, so that a grid's times are used as given rather than
+ * re-accumulated from steps, and write access to the statistics. */
+#ifndef VIGEN_HP_IMPL_H
+#define VIGEN_HP_IMPL_H
+
+#include <vigen/lagrangian.h>
+
+/* One step from (q, p) at t0 to t1 with step h (the caller's t1 - t0, or its
+ * own h with t1 its compensated t0 + h).  Same contract as vigen_hp_step,
+ * with the time left to the caller.  positions_only: the caller computed p
+ * from positions (a two-step form), so the predictor may continue from the
+ * last step when t0 and q match it, but compensations do not carry over. */
+int vigen_hp_step_between(vigen_hp *w, double t0, double t1, double h, double *q, double *p,
+                          int positions_only);
+vigen_stats *vigen_hp_stats_rw(vigen_hp *w);
+
+#endif
