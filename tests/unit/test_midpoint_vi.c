@@ -106,6 +106,11 @@ static void id1_dLdv(double t, const double *q, const double *v, double *o, void
     (void)t; (void)q; (void)c;
     o[0] = v[0];
 }
+static void id1_g(double t, const double *q, const double *p, double *o, void *c)
+{
+    (void)t; (void)q; (void)c;
+    o[0] = p[0];
+}
 
 /* Relativistic particle, m = 1.3, c = 1, central potential
  * V = k |q|^2/2 + b |q|^4/4 (k = 1, b = 0.5) or, with aniso set, the
@@ -359,7 +364,7 @@ static void check_order(void)
     L.dim = 1;
     L.dLdq = forced_dLdq;
     L.dLdv = id1_dLdv;
-    vigen_midpoint_vi *w = vigen_midpoint_vi_alloc(&L, unit_g, NULL);
+    vigen_midpoint_vi *w = vigen_midpoint_vi_alloc(&L, id1_g, NULL);
     CHECK(w != NULL);
     if (w == NULL) return;
     const double t0 = 0.3, T = 2.0;
@@ -779,7 +784,7 @@ static void check_bad_input(void)
     Lc.dim = 1;
     Lc.dLdq = cubic_dLdq;
     Lc.dLdv = id1_dLdv;
-    w = vigen_midpoint_vi_alloc(&Lc, unit_g, NULL);
+    w = vigen_midpoint_vi_alloc(&Lc, id1_g, NULL);
     CHECK(w != NULL);
     if (w == NULL) return;
     {
