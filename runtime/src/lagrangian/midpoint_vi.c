@@ -236,9 +236,10 @@ static int mvi_step1(vigen_midpoint_vi *w, double *t, double *q, double *p, doub
     w->q0 = q;
     w->p0 = p;
     int st = VIGEN_SUCCESS;
-    if (w->history == 2 && w->opt.extrapolate) {
+    if (w->history == 2 && w->opt.extrapolate && (w->hprev > 0) == (h > 0) && (w->hprev2 > 0) == (h > 0)) {
         /* v at the midpoints t - hprev/2 and t - hprev - hprev2/2, linearly
-         * extrapolated to t + h/2 */
+         * extrapolated to t + h/2 (not across a reversal of direction,
+         * where the two midpoints may coincide) */
         const double s = (w->hprev + h) / (w->hprev2 + w->hprev);
         for (size_t k = 0; k < n; k++) w->d[k] = h * (w->vprev[k] + s * (w->vprev[k] - w->vprev2[k]));
     } else if (w->history) {
