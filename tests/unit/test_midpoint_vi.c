@@ -27,7 +27,8 @@
  *   - Noether: q x p is conserved to round-off for rotation-invariant L
  *     (relativistic, central potential) and is not for an anisotropic one;
  *   - t advances by the compensated sum of the steps (one unit in the last
- *     place of the exact sum over 10^5 steps);
+ *     place of the exact sum over 10^5 steps, and over 2000 alternating
+ *     steps), or by the naive sum bit for bit without compensation;
  *   - bad input: clear status and the state unchanged bit for bit. */
 #include <math.h>
 #include <stdio.h>
@@ -630,6 +631,48 @@ static void check_reversible(void)
     vigen_midpoint_vi_free(w);
 }
 
+/* Options: without compensation t is the naive running sum, bit for bit;
+ * with it t is within an ulp of the exact sum (long double reference) of
+ * 2000 alternating steps; without extrapolation the predictor is only
+ * worse; the trajectories agree to round-off. */
+static void check_options(void)
+{
+    rel_ctx r = {1.3, 1.0, 0};
+    vigen_lagrangian L = rel_lagrangian(&r, 1);
+    vigen_solver_options o;
+    vigen_solver_options_default(&o);
+    o.kahan = 0;
+    o.extrapolate = 0;
+    vigen_midpoint_vi *w0 = vigen_midpoint_vi_alloc(&L, rel_g, &o), *w1 = vigen_midpoint_vi_alloc(&L, rel_g, NULL);
+    CHECK(w0 != NULL && w1 != NULL);
+    if (w0 == NULL || w1 == NULL) {
+        vigen_midpoint_vi_free(w0);
+        vigen_midpoint_vi_free(w1);
+        return;
+    }
+    double t0 = 0.1, t1 = 0.1, naive = 0.1, q0[2] = {1.0, 0.2}, p0[2] = {-0.3, 1.1}, q1[2] = {1.0, 0.2},
+           p1[2] = {-0.3, 1.1}, diff = 0.0;
+    long double exact = 0.1L;
+    int st = VIGEN_SUCCESS;
+    for (int i = 0; i < 2000 && st == VIGEN_SUCCESS; i++) {
+        const double h = (i % 2) ? 0.0017 : 0.001;
+        st = vigen_midpoint_vi_step(w0, &t0, q0, p0, h);
+        if (st == VIGEN_SUCCESS) st = vigen_midpoint_vi_step(w1, &t1, q1, p1, h);
+        naive += h;
+        exact += (long double)h;
+        for (int k = 0; k < 2; k++) diff = fmax(diff, fmax(fabs(q0[k] - q1[k]), fabs(p0[k] - p1[k])));
+    }
+    CHECK(st == VIGEN_SUCCESS);
+    CHECK_MSG(memcmp(&t0, &naive, sizeof t0) == 0, "t without compensation %.17g, naive sum %.17g", t0, naive);
+    const double te = (double)exact;
+    CHECK_MSG(fabs(t1 - te) <= nextafter(te, 1e300) - te, "compensated t %.17g, exact %.17g", t1, te);
+    CHECK_MSG(fabs(naive - te) > nextafter(te, 1e300) - te, "the naive sum is exact here: the test shows nothing");
+    CHECK_MSG(diff < 1e-12, "options change the trajectory by %.3g", diff);
+    CHECK(vigen_midpoint_vi_stats(w0)->iterations >= vigen_midpoint_vi_stats(w1)->iterations);
+    vigen_midpoint_vi_free(w0);
+    vigen_midpoint_vi_free(w1);
+}
+
 /* The Hamilton–Pontryagin midpoint integrator with the trivial map solves
  * the same discrete Euler–Lagrange equations (with the same momenta) for
  * (q1, v) from L alone; the Cresson–Safi form solves for q1 through g. */
@@ -862,6 +905,7 @@ int main(void)
     check_relativistic_vs_hp(1);
     check_relativistic_long();
     check_reversible();
+    check_options();
     check_bad_input();
     TEST_MAIN_END();
 }
