@@ -11,11 +11,19 @@
  *   - the relativistic particle L = -m c^2 sqrt(1 - |v|^2/c^2) - k|q|^2/2:
  *     the energy c sqrt(m^2 c^2 + |p|^2) + V(q) has no drift over 10^5 steps
  *     and the angular momentum q x p (Noether, rotations) is conserved to
- *     round-off;
+ *     round-off; at 0.95 c, where plain Newton steps overshoot beyond c,
+ *     the steps succeed with a small energy error;
  *   - a charged particle in an axially symmetric static magnetic field,
  *     L = 1/2 |v|^2 + A(q).v - phi(q): bounded energy 1/2 |p - A|^2 + phi over
  *     10^5 steps, canonical angular momentum x p_y - y p_x (Noether) to
  *     round-off;
+ *   - the exact Jacobian (second derivatives of L) against differences:
+ *     same trajectory, Newton's iteration counts (a wrong block shows);
+ *   - the predictor: extrapolation saves iterations and changes nothing
+ *     beyond round-off; a state changed from outside restarts the history
+ *     (bit for bit a fresh workspace);
+ *   - symmetry: a step with -h undoes a step with h (both discrete
+ *     Lagrangians are symmetric), also for a time-dependent L;
  *   - order 2 against the exact solution of a forced oscillator (time
  *     dependent L, so the time arguments are checked too);
  *   - t as a compensated sum of the steps, v_{n+1/2} = (q_{n+1} - q_n)/h,
@@ -142,6 +150,7 @@ static void test_emitted(void)
         CHECK_MSG(harness_value(out, "status", -1) == 0 && harness_value(out, "steps", 0) == 1000, "%s: %s", runs[r].name, out);
         double dq = harness_value(out, "dq", 1), dp = harness_value(out, "dp", 1);
         CHECK_MSG(dq < 1e-12 && dp < 1e-12, "HP rule %d vs emitted %s: dq %.3e dp %.3e", runs[r].rule, runs[r].name, dq, dp);
+        fprintf(stderr, "  HP rule %d vs emitted %s, 1000 steps: dq %.2e, dp %.2e (relative)\n", runs[r].rule, runs[r].name, dq, dp);
         CHECK_MSG(harness_value(out, "tdiff", 1) == 0, "%s: t differs", runs[r].name);
         free(out);
         free(cmd);
@@ -225,6 +234,18 @@ static void test_relativistic(void)
         if (st == 0) check_no_drift(rule ? "relativistic, HP midpoint" : "relativistic, HP trapezoidal", e, n, e0, 1e-3);
         CHECK_MSG(lerr < 1e-12, "relativistic rule %d: angular momentum drifts by %.3e", rule, lerr);
         vigen_hp_free(w);
+        /* |p| = 3 m c (v = 0.95 c): a plain Newton step from v = 0 would
+         * overshoot to |v| > c, where L is not defined; the steps succeed */
+        w = vigen_hp_alloc(&lag, rule, NULL, NULL);
+        double tf = 0, qf[2] = { 1.0, 0.0 }, pf[2] = { 0.0, 3.0 }, ef = 0;
+        const double ef0 = rel_energy(&r, qf, pf);
+        for (k = 0, st = 0; k < 2000 && st == 0; k++) {
+            st = vigen_hp_step(w, &tf, qf, pf, 0.01);
+            ef = fmax(ef, fabs(rel_energy(&r, qf, pf) - ef0));
+        }
+        CHECK_MSG(st == 0 && ef < 1e-3 * ef0, "relativistic at 0.95 c, rule %d: status %d at step %ld, energy error %.3e", rule,
+                  st, k, ef);
+        vigen_hp_free(w);
     }
     free(e);
 }
@@ -291,6 +312,127 @@ static void test_charged(void)
         vigen_hp_free(w);
     }
     free(e);
+}
+
+/* second derivatives of the charged particle's L, for the exact Jacobian */
+static void cp_qq(double t, const double *q, const double *v, double *o, void *c)
+{
+    NOUNUSED;
+    double f_x = cp_B0 * cp_kappa * q[0], f_y = cp_B0 * cp_kappa * q[1], f_z = cp_B0 * cp_mu * q[2];
+    double s = q[0] * v[1] - q[1] * v[0];
+    o[0] = cp_B0 * cp_kappa * s + 2 * f_x * v[1] - cp_w2; o[1] = f_y * v[1] - f_x * v[0]; o[2] = f_z * v[1];
+    o[3] = o[1]; o[4] = cp_B0 * cp_kappa * s - 2 * f_y * v[0] - cp_w2; o[5] = -f_z * v[0];
+    o[6] = o[2]; o[7] = o[5]; o[8] = cp_B0 * cp_mu * s - 1;
+}
+static void cp_qv(double t, const double *q, const double *v, double *o, void *c)
+{
+    NOUNUSED; (void)v;
+    double f = cp_f(q), f_x = cp_B0 * cp_kappa * q[0], f_y = cp_B0 * cp_kappa * q[1], f_z = cp_B0 * cp_mu * q[2];
+    o[0] = -f_x * q[1];     o[1] = f_x * q[0] + f; o[2] = 0;
+    o[3] = -f_y * q[1] - f; o[4] = f_y * q[0];     o[5] = 0;
+    o[6] = -f_z * q[1];     o[7] = f_z * q[0];     o[8] = 0;
+}
+static void id3_vv(double t, const double *q, const double *v, double *o, void *c)
+{
+    NOUNUSED; (void)q; (void)v;
+    for (int k = 0; k < 9; k++) o[k] = (k % 4 == 0);
+}
+
+/* The exact Jacobian (second derivatives given) against differences on a
+ * non-separable L with d2L/dqdv not symmetric: the same trajectory, and
+ * Newton's iteration counts of an exact Jacobian (a wrong block, e.g. a
+ * transposed d2L/dqdv, shows as slow or failed convergence at this h). */
+static void test_exact_jacobian(void)
+{
+    for (int rule = 0; rule < 2; rule++) {
+        vigen_lagrangian lf = { 3, cp_dq, cp_dv, NULL, NULL, NULL, NULL, NULL };
+        vigen_lagrangian lx = { 3, cp_dq, cp_dv, NULL, NULL, cp_qq, id3_vv, cp_qv };
+        vigen_hp *wf = vigen_hp_alloc(&lf, rule, NULL, NULL), *wx = vigen_hp_alloc(&lx, rule, NULL, NULL);
+        double tf = 0, qf[3] = { 1.0, 0.2, 0.3 }, pf[3] = { 0.1, 1.2, -0.2 };
+        double tx = 0, qx[3] = { 1.0, 0.2, 0.3 }, px[3] = { 0.1, 1.2, -0.2 }, err = 0;
+        for (int k = 0; k < 300; k++) {
+            CHECK(vigen_hp_step(wf, &tf, qf, pf, 0.3) == 0 && vigen_hp_step(wx, &tx, qx, px, 0.3) == 0);
+            for (int i = 0; i < 3; i++) err = fmax(err, fmax(fabs(qf[i] - qx[i]), fabs(pf[i] - px[i])));
+        }
+        const vigen_stats *sf = vigen_hp_stats(wf), *sx = vigen_hp_stats(wx);
+        CHECK_MSG(err < 1e-11, "rule %d: exact vs difference Jacobian: trajectories differ by %.3e", rule, err);
+        CHECK_MSG(sx->iterations <= sf->iterations + sf->iterations / 20 && sx->max_iterations <= 12,
+                  "rule %d: %lu iterations (max %lu per step) with the exact Jacobian, %lu with differences", rule,
+                  sx->iterations, sx->max_iterations, sf->iterations);
+        /* differences cost 3 residuals per Jacobian, the exact one none */
+        CHECK(sx->dHdq_evals < sf->dHdq_evals);
+        vigen_hp_free(wf);
+        vigen_hp_free(wx);
+    }
+}
+
+/* The predictor: extrapolating v_{n-1/2} in time saves Newton iterations
+ * without changing the result beyond round-off; a state other than the one
+ * the last step returned drops the history, so the step is bit for bit
+ * that of a fresh workspace. */
+static void test_predictor(void)
+{
+    vigen_lagrangian lag = { 3, cp_dq, cp_dv, NULL, NULL, NULL, NULL, NULL };
+    vigen_solver_options o;
+    vigen_solver_options_default(&o);
+    double qe[2][3], pe[2][3];
+    unsigned long its[2];
+    for (int ex = 0; ex < 2; ex++) {
+        o.extrapolate = ex;
+        vigen_hp *w = vigen_hp_alloc(&lag, VIGEN_HP_MIDPOINT, NULL, &o);
+        double t = 0, q[3] = { 1.0, 0.2, 0.3 }, p[3] = { 0.1, 1.2, -0.2 };
+        for (int k = 0; k < 500; k++) CHECK(vigen_hp_step(w, &t, q, p, 0.1) == 0);
+        memcpy(qe[ex], q, sizeof q);
+        memcpy(pe[ex], p, sizeof p);
+        its[ex] = vigen_hp_stats(w)->iterations;
+        if (ex) {
+            /* a kick from outside: the next step starts afresh */
+            p[0] += 0.01;
+            double t2 = t, q2[3], p2[3];
+            memcpy(q2, q, sizeof q);
+            memcpy(p2, p, sizeof p);
+            vigen_hp *fresh = vigen_hp_alloc(&lag, VIGEN_HP_MIDPOINT, NULL, &o);
+            CHECK(vigen_hp_step(w, &t, q, p, 0.1) == 0 && vigen_hp_step(fresh, &t2, q2, p2, 0.1) == 0);
+            CHECK(t == t2 && memcmp(q, q2, sizeof q) == 0 && memcmp(p, p2, sizeof p) == 0);
+            vigen_hp_free(fresh);
+        }
+        vigen_hp_free(w);
+    }
+    double d = 0;
+    for (int i = 0; i < 3; i++) d = fmax(d, fmax(fabs(qe[0][i] - qe[1][i]), fabs(pe[0][i] - pe[1][i])));
+    CHECK_MSG(d < 1e-12, "extrapolated predictor changes the trajectory by %.3e", d);
+    CHECK_MSG(its[1] < its[0], "%lu iterations with extrapolation, %lu without", its[1], its[0]);
+    fprintf(stderr, "  predictor: %lu Newton iterations in 500 steps with extrapolation, %lu without\n", its[1], its[0]);
+}
+
+/* Both discrete Lagrangians are symmetric, so each stepper is its own
+ * adjoint: a step with -h from the result of a step with h returns to the
+ * start (time-dependent L included), to round-off. */
+static void fo_dq(double t, const double *q, const double *v, double *o, void *c);
+static void fo_dv(double t, const double *q, const double *v, double *o, void *c);
+static void test_symmetric(void)
+{
+    vigen_lagrangian lc = { 3, cp_dq, cp_dv, NULL, NULL, NULL, NULL, NULL };
+    vigen_lagrangian lf = { 1, fo_dq, fo_dv, NULL, NULL, NULL, NULL, NULL };
+    for (int rule = 0; rule < 2; rule++) {
+        for (int prob = 0; prob < 2; prob++) {
+            vigen_hp *w = vigen_hp_alloc(prob ? &lf : &lc, rule, NULL, NULL);
+            const size_t n = prob ? 1 : 3;
+            double t = 0.3, q[3] = { 1.0, 0.2, 0.3 }, p[3] = { 0.1, 1.2, -0.2 };
+            for (int k = 0; k < 20; k++) CHECK(vigen_hp_step(w, &t, q, p, 0.1) == 0);
+            double t0 = t, q0[3], p0[3], err = 0;
+            memcpy(q0, q, sizeof q);
+            memcpy(p0, p, sizeof p);
+            for (int k = 0; k < 5; k++) {
+                CHECK(vigen_hp_step(w, &t, q, p, 0.17) == 0 && vigen_hp_step(w, &t, q, p, -0.17) == 0);
+                for (size_t i = 0; i < n; i++) err = fmax(err, fmax(fabs(q[i] - q0[i]), fabs(p[i] - p0[i])));
+                err = fmax(err, fabs(t - t0));
+            }
+            CHECK_MSG(err < 1e-14, "rule %d, %s: a step with -h does not undo the step with h: %.3e", rule,
+                      prob ? "forced oscillator" : "charged particle", err);
+            vigen_hp_free(w);
+        }
+    }
 }
 
 /* ---- order 2: forced oscillator, L = v^2/2 - q^2/2 + q F cos(w t) ----------
@@ -467,6 +609,9 @@ int main(void)
     test_emitted();
     test_relativistic();
     test_charged();
+    test_exact_jacobian();
+    test_predictor();
+    test_symmetric();
     test_order();
     test_time_sum();
     test_bad_input();

@@ -1,8 +1,9 @@
 /* test_lsolve.c — the Newton solver shared by the Lagrangian integrators
  * (runtime/src/lagrangian/lsolve.h): solutions of systems whose roots are
- * are known in closed form, with the caller's Jacobian and with differences,
+ * known in closed form, with the caller's Jacobian and with differences,
  * badly scaled equations, singular Jacobians, callbacks that fail or give
- * NaN, divergence, the iteration cap, and the statistics. */
+ * NaN (damped steps back into the finite region), divergence, the
+ * iteration cap, and the statistics. */
 #include <math.h>
 #include <string.h>
 #include <vigen/runtime.h>
@@ -72,6 +73,9 @@ static int nan_r(const double *x, double *r, void *c)
     r[0] = fabs(x[0]) < 2.0 ? x[0] - 5.0 : NAN;
     return VIGEN_SUCCESS;
 }
+/* sqrt(1 - x) = 1/2 at x = 3/4; Newton from -10 first jumps past x = 1,
+ * where the square root is NaN, and must come back by damping */
+static int sqrt_r(const double *x, double *r, void *c) { (void)c; r[0] = sqrt(1.0 - x[0]) - 0.5; return VIGEN_SUCCESS; }
 static int fail_r(const double *x, double *r, void *c)
 {
     int *calls = c;
@@ -146,8 +150,19 @@ static void test_failures(void)
 
     s = vigen_lsolve_alloc(1);
     double z[1] = { 0.0 };
-    /* the first Newton step lands on x = 5, where the residual is NaN */
-    CHECK(vigen_lsolve_run(s, z, nan_r, NULL, NULL, NULL, NULL) == VIGEN_ENONFINITE);
+    /* the root x = 5 lies where the residual is NaN: every full step lands
+     * there, the damped ones only approach the edge x = 2 until ten
+     * halvings are not enough */
+    vigen_stats st1;
+    memset(&st1, 0, sizeof st1);
+    CHECK(vigen_lsolve_run(s, z, nan_r, NULL, NULL, NULL, &st1) == VIGEN_ENONFINITE && st1.last_iterations > 1);
+    /* NaN at the start */
+    z[0] = 3.0;
+    CHECK(vigen_lsolve_run(s, z, nan_r, NULL, NULL, NULL, &st1) == VIGEN_ENONFINITE && st1.last_iterations == 0);
+    /* a step into the NaN region on the way to a root in the finite one */
+    z[0] = -10.0;
+    CHECK(vigen_lsolve_run(s, z, sqrt_r, NULL, NULL, NULL, NULL) == VIGEN_SUCCESS);
+    CHECK_MSG(fabs(z[0] - 0.75) < 4e-16, "%.17g", z[0]);
     /* a callback's own status stops the solve and is returned */
     int calls = 0;
     z[0] = 0.0;

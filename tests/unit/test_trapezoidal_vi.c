@@ -116,6 +116,7 @@ static void test_emitted_verlet(void)
         CHECK_MSG(harness_value(out, "status", -1) == 0 && harness_value(out, "steps", 0) == 1000, "%s", out);
         double dq = harness_value(out, "dq", 1), dp = harness_value(out, "dp", 1);
         CHECK_MSG(dq < 1e-12 && dp < 1e-12, "grid driver vs emitted Stormer-Verlet with per-call h: dq %.3e dp %.3e", dq, dp);
+        fprintf(stderr, "  grid driver vs emitted Stormer-Verlet, 1000 steps: dq %.2e, dp %.2e (relative)\n", dq, dp);
         free(out);
         free(cmd);
         free(exe);

@@ -17,7 +17,9 @@
  * runtime; a solve that does not converge is an error, never a result.
  * Statistics use vigen_stats: dHdq_evals counts dL/dq calls, dHdp_evals dL/dv
  * calls, hessian_evals Jacobians (user second derivatives or finite
- * differences), iterations Newton iterations.
+ * differences), lu_decompositions their factorisations, iterations Newton
+ * iterations; steps and failed_steps as for the SPRK steppers (a two-step
+ * call is one step); fsal_reuses stays 0.
  *
  * A workspace is not thread-safe; distinct workspaces are independent.
  */
@@ -93,7 +95,11 @@ typedef struct vigen_hp vigen_hp;
  * vigen_lagrangian_validate fails, rule is unknown, or memory runs out. */
 vigen_hp *vigen_hp_alloc(const vigen_lagrangian *lag, int rule, const vigen_velocity_map *phi,
                          const vigen_solver_options *opt);
-/* One step from (t, q, p) with step h (any sign, finite, nonzero). */
+/* One step from (t, q, p) with step h (any sign, finite, nonzero).  The
+ * first step (and any step from a state other than the one the last step
+ * returned) predicts v by solving dL/dv(t, q, v) = p; VIGEN_ESINGULAR there
+ * means d2L/dv2 is singular: a degenerate Lagrangian, which has no (q, p)
+ * phase space for these steppers. */
 int vigen_hp_step(vigen_hp *w, double *t, double *q, double *p, double h);
 /* The parameters a_{n,n+1} of the last successful step (a0 before the first);
  * nparams entries, NULL when there are none.  They also start the next step's
@@ -145,7 +151,9 @@ int vigen_trapezoidal_vi_step2(vigen_trapezoidal_vi *w, double t0, double t1, do
  * from (q, p) at times[0]; on return (q, p) is the state at the last time
  * reached.  qs and ps (ntimes x dim each, may be NULL) receive the state at
  * every time, row n at times[n].  *done (may be NULL) receives the number of
- * steps taken; on error the state is the last good one. */
+ * steps taken; on error the state is the last good one.  Each step runs
+ * from times[n] to times[n+1] as given (no accumulated sum of steps); a grid
+ * that is not strictly monotone and finite is VIGEN_EINVAL before any step. */
 int vigen_trapezoidal_vi_integrate(vigen_trapezoidal_vi *w, const double *times, size_t ntimes,
                                    double *q, double *p, double *qs, double *ps, size_t *done);
 const vigen_stats *vigen_trapezoidal_vi_stats(const vigen_trapezoidal_vi *w);

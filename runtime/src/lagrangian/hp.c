@@ -238,6 +238,7 @@ void vigen_hp_reset(vigen_hp *w)
     memset(&w->stats, 0, sizeof w->stats);
     if (w->m) memcpy(w->a, w->a0, w->m * sizeof(double));
     memset(w->v, 0, w->n * sizeof(double));
+    memset(w->vh, 0, w->n * sizeof(double));
     w->nhist = 0;
     w->have_end = 0;
 }
@@ -277,7 +278,10 @@ static int predict(vigen_hp *w)
         int st = legendre_velocity(w);
         if (st != VIGEN_SUCCESS) return st;
         for (size_t i = 0; i < n; i++) w->x[i] = h * w->v[i];
-    } else if (w->nhist >= 2 && w->opt.extrapolate && w->tm_h != w->tm_prev) {
+    } else if (w->nhist >= 2 && w->opt.extrapolate && w->tm_h != w->tm_prev &&
+               (tm - w->tm_h) / (w->tm_h - w->tm_prev) > 0 && (tm - w->tm_h) / (w->tm_h - w->tm_prev) <= 4) {
+        /* the steps go on in the same direction at comparable sizes (a
+         * reversal, or a step many times the last, is not extrapolated) */
         const double s = (tm - w->tm_h) / (w->tm_h - w->tm_prev);
         for (size_t i = 0; i < n; i++) w->x[i] = h * (w->vh[i] + s * (w->vh[i] - w->vh_prev[i]));
     } else {

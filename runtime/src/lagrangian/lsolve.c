@@ -11,6 +11,10 @@
 #include <gsl/gsl_vector.h>
 #include "lsolve.h"
 
+/* Halvings of a Newton step that lands where the residual is not finite
+ * (a factor 1/1024 at most) before the solve gives up. */
+#define VIGEN_LSOLVE_HALVINGS 10
+
 struct vigen_lsolve {
     size_t n;
     double *J;          /* n x n Jacobian, row-major */
@@ -18,6 +22,7 @@ struct vigen_lsolve {
     double *rp;         /* residual at a perturbed x (differences) */
     double *xp;         /* perturbed x */
     double *rs, *cs;    /* row and column scales of the equilibrated matrix */
+    double *xo;         /* the iterate before the step (for damping) */
     gsl_matrix *M;      /* equilibrated Jacobian, then its LU */
     gsl_permutation *perm;
     gsl_vector *b, *y;
@@ -44,6 +49,7 @@ vigen_lsolve *vigen_lsolve_alloc(size_t n)
     s->xp = s->r + 2 * n;
     s->rs = s->r + 3 * n;
     s->cs = s->r + 4 * n;
+    s->xo = s->r + 5 * n;
     return s;
 }
 
@@ -170,6 +176,7 @@ int vigen_lsolve_run(vigen_lsolve *s, double *x, vigen_lsolve_residual_fn rf,
         }
         st = solve(s);
         if (st != VIGEN_SUCCESS) break;
+        memcpy(s->xo, x, n * sizeof(double));
         double dmax = 0.0, xmax = 0.0;
         for (size_t k = 0; k < n; k++) {
             double xn = x[k] + s->xp[k];
@@ -179,12 +186,29 @@ int vigen_lsolve_run(vigen_lsolve *s, double *x, vigen_lsolve_residual_fn rf,
         }
         iters++;
         last = dmax == 0.0 ? 0.0 : dmax / fmax(xmax, DBL_MIN);
+        const vigen_iter_monitor before = mon;
         int verdict = vigen_iter_judge(&mon, last, tol, max_iter);
         if (verdict >= 0) {
             st = verdict;
             break;
         }
         st = residual(rf, x, s->r, n, ctx);
+        if (st != VIGEN_ENONFINITE) continue;
+        /* The full step left the region where the residual is finite:
+         * halve it until it is back.  A damped step is no evidence of
+         * convergence, so the stopping rule does not see it, and the
+         * Jacobian is formed afresh where the iteration now is. */
+        mon = before;
+        double lambda = 1.0;
+        for (int k = 0; k < VIGEN_LSOLVE_HALVINGS && st == VIGEN_ENONFINITE; k++) {
+            lambda *= 0.5;
+            for (size_t i = 0; i < n; i++) x[i] = s->xo[i] + lambda * s->xp[i];
+            st = residual(rf, x, s->r, n, ctx);
+        }
+        have_lu = 0;
+        last = -1.0;
+        /* still running into non-finite values when the budget ends */
+        if (st == VIGEN_SUCCESS && iters >= max_iter) st = VIGEN_ENONFINITE;
     }
     if (stats) {
         stats->iterations += (unsigned long)iters;

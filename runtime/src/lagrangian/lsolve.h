@@ -12,7 +12,14 @@
  * instead of a Jacobian (n residuals when it comes from differences).
  * Equations and unknowns are equilibrated (rows, then columns, scaled by
  * their largest entry) before the factorisation, so that the singularity
- * test — a pivot below 16 n epsilon — does not depend on their units. */
+ * test — a pivot below 16 n epsilon — does not depend on their units.
+ * A step that lands where the residual is not finite (a relativistic
+ * velocity beyond c, a square root of a negative number) is halved, up to
+ * ten times, until it is back in the finite region; such damped steps are
+ * not shown to the stopping rule (a shrinking step towards the edge of the
+ * region is no convergence), and a solve that keeps needing them until
+ * max_iter gives VIGEN_ENONFINITE.  A residual that is not finite at the
+ * starting point is VIGEN_ENONFINITE at once. */
 #ifndef VIGEN_LSOLVE_H
 #define VIGEN_LSOLVE_H
 
