@@ -663,6 +663,21 @@ static void check_reversible(void)
     const double dq = fmax(fabs(q[0] - q0[0]), fabs(q[1] - q0[1])), dp = fmax(fabs(p[0] - p0[0]), fabs(p[1] - p0[1]));
     /* a non-symmetric method of order 2 misses by O(h^3) a step: about 1e-3 here */
     CHECK_MSG(dq < 1e-12 && dp < 1e-12 && fabs(t - 0.5) < 1e-13, "forward then back: %.3g, %.3g, t %.17g", dq, dp, t);
+    /* small steps, then one 300 times larger: the same result as from a
+     * fresh workspace (another predictor: the solution does not depend on it) */
+    for (int i = 0; i < 10 && st == VIGEN_SUCCESS; i++) st = vigen_midpoint_vi_step(w, &t, q, p, 0.001);
+    vigen_midpoint_vi *fresh = vigen_midpoint_vi_alloc(&L, rel_g, NULL);
+    CHECK(fresh != NULL && st == VIGEN_SUCCESS);
+    if (fresh != NULL) {
+        double tf = t, qf[2] = {q[0], q[1]}, pf[2] = {p[0], p[1]};
+        st = vigen_midpoint_vi_step(w, &t, q, p, 0.3);
+        const int stf = vigen_midpoint_vi_step(fresh, &tf, qf, pf, 0.3);
+        CHECK_MSG(st == VIGEN_SUCCESS && stf == VIGEN_SUCCESS, "large step: %d, fresh %d", st, stf);
+        /* (the continuing workspace carries its compensation: ulps apart) */
+        const double d = fmax(fmax(fabs(q[0] - qf[0]), fabs(q[1] - qf[1])), fmax(fabs(p[0] - pf[0]), fabs(p[1] - pf[1])));
+        CHECK_MSG(fabs(t - tf) < 1e-15 && d < 1e-14, "large step: t %.17g vs %.17g, state %.3g apart", t, tf, d);
+        vigen_midpoint_vi_free(fresh);
+    }
     vigen_midpoint_vi_free(w);
 }
 

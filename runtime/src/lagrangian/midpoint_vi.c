@@ -236,11 +236,13 @@ static int mvi_step1(vigen_midpoint_vi *w, double *t, double *q, double *p, doub
     w->q0 = q;
     w->p0 = p;
     int st = VIGEN_SUCCESS;
-    if (w->history == 2 && w->opt.extrapolate && (w->hprev > 0) == (h > 0) && (w->hprev2 > 0) == (h > 0)) {
-        /* v at the midpoints t - hprev/2 and t - hprev - hprev2/2, linearly
-         * extrapolated to t + h/2 (not across a reversal of direction,
-         * where the two midpoints may coincide) */
-        const double s = (w->hprev + h) / (w->hprev2 + w->hprev);
+    /* v at the midpoints t - hprev/2 and t - hprev - hprev2/2, linearly
+     * extrapolated to t + h/2: s is the ratio of the distances.  Not across
+     * a reversal of direction (the two midpoints may coincide), nor to a
+     * step many times the last ones (the line would be followed far out). */
+    const int same_way = w->history == 2 && (w->hprev > 0) == (h > 0) && (w->hprev2 > 0) == (h > 0);
+    const double s = same_way ? (w->hprev + h) / (w->hprev2 + w->hprev) : 0.0;
+    if (same_way && w->opt.extrapolate && s <= 4.0) {
         for (size_t k = 0; k < n; k++) w->d[k] = h * (w->vprev[k] + s * (w->vprev[k] - w->vprev2[k]));
     } else if (w->history) {
         for (size_t k = 0; k < n; k++) w->d[k] = h * w->vprev[k];
