@@ -6,6 +6,10 @@
  *
  *     NAME_workspace *NAME_alloc(const vigen_hamiltonian *sys,
  *                                const vigen_solver_options *opt);  NULL opt = defaults
+ *     NAME_workspace *NAME_alloc_mechanical(const vigen_mechanical *sys,
+ *                                const vigen_solver_options *opt);  H = p^T M^-1 p / 2 + V,
+ *                                the force -dV/dq given: stepped in Nystrom form
+ *     size_t NAME_dim(void);     the only dimension alloc takes (emit --dim), 0 = any
  *     int  NAME_step(NAME_workspace *w, double *t, double *q, double *p, double h);
  *     void NAME_reset(NAME_workspace *w);     forget history (new trajectory)
  *     const vigen_stats *NAME_stats(const NAME_workspace *w);
@@ -43,6 +47,15 @@
  *         int separable;
  *         vigen_hess_fn hessian;     optional, may be left out of an initialiser
  *     } vigen_hamiltonian;
+ *
+ *     typedef void (*vigen_force_fn)(double t, const double *q, double *f, void *ctx);
+ *     typedef struct {                   H = 1/2 p^T M^-1 p + V(t, q), M diagonal
+ *         size_t dim;
+ *         vigen_force_fn force;          f = -dV/dq(t, q)
+ *         double (*V)(double t, const double *q, void *ctx);   optional
+ *         void *ctx;
+ *         const double *inv_mass;        dim entries of diag(M^-1); NULL = identity
+ *     } vigen_mechanical;
  *
  * State is never shared between workspaces; a workspace is not thread-safe,
  * distinct workspaces are.  Compile emitted code without -ffast-math: the
