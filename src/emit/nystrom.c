@@ -33,6 +33,9 @@ void vigen_emit_nys_clear(nys_coefs *Y, slong s)
         for (slong i = 0; i < ns[k]; i++) free(vs[k][i]);
         free(vs[k]);
     }
+    if (Y->inv1)
+        for (slong i = 0; i < s; i++) free(Y->inv1[i]);
+    free(Y->inv1);
     free(Y->sb);
     memset(Y, 0, sizeof *Y);
 }
@@ -67,6 +70,22 @@ int vigen_emit_nys_round(nys_coefs *Y, emit_ctx *E)
         arb_zero(x);
         for (slong i = 0; i < s; i++) arb_addmul(x, E->b + i, arb_mat_entry(E->At, i, k), E->prec);
         rc = vigen_emit_literal(Y->bat + k, E, x, -1, "(b^T At)[k] (Nystrom)");
+    }
+    /* the start force: a node at 1 besides distinct c_j, none of them 1 */
+    int distinct = s >= 2;
+    for (slong i = 0; i < s && distinct; i++) {
+        arb_sub_ui(x, E->c + i, 1, E->prec);
+        if (arb_contains_zero(x)) distinct = 0;
+        for (slong j = 0; j < i && distinct; j++)
+            if (arb_overlaps(E->c + i, E->c + j)) distinct = 0;
+    }
+    if (distinct && rc == VIGEN_OK) {
+        Y->inv1 = strv0(s);
+        for (slong j = 0; j < s && rc == VIGEN_OK; j++) {
+            arb_sub_ui(x, E->c + j, 1, E->prec);
+            arb_inv(x, x, E->prec);
+            rc = vigen_emit_literal(Y->inv1 + j, E, x, -1, "1/(c_j - 1)");
+        }
     }
     arb_mat_clear(P);
     arb_clear(x);
@@ -155,6 +174,28 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         for (slong j = 0; j < s; j++) free(wrow[j]);
     }
     free(wrow);
+
+    /* the start force f(t0, q) in fe as node 1 (the end of the previous
+     * step): the weights of the s + 1 nodes are those of the s nodes times
+     * (x_i - 1)/(c_j - 1), and for node 1 the product of (x_i - c_m)/(1 - c_m) */
+    vigen_slots_flag(S, "MECH_START_FORCE", Y->inv1 != NULL);
+    vigen_slot *fw = vigen_slots_lines(S, "MECH_FORCE_WEIGHTS");
+    vigen_slot *fa = vigen_slots_lines(S, "MECH_FORCE_APPLY");
+    for (slong i = 1; Y->inv1 && i <= s; i++) {
+        vigen_strbuf e;
+        vigen_strbuf_init(&e);
+        for (slong j = 1; j <= s; j++) {
+            vigen_slot_line(fw, "const %s u%ld_%ld = w%ld_%ld * (x%ld - 1) * %s;", R, i, j, i, j, i, Y->inv1[j - 1]);
+            vigen_strbuf_printf(&e, "%s(x%ld - %s) * %s", e.len ? " * " : "", i, K->c[j - 1], Y->inv1[j - 1]);
+        }
+        /* 1/(1 - c_m) = -1/(c_m - 1): the sign of the product of s of them */
+        vigen_slot_line(fw, "const %s u%ld_e = %s%s%s;", R, i, s % 2 ? "-(" : "", e.data, s % 2 ? ")" : "");
+        vigen_strbuf_clear(&e);
+        vigen_strbuf_init(&e);
+        for (slong j = 1; j <= s; j++) vigen_strbuf_printf(&e, "u%ld_%ld * fo%ld[k] + ", i, j, j);
+        vigen_slot_line(fa, "f%ld[k] = %su%ld_e * fe[k];", i, e.data, i);
+        vigen_strbuf_clear(&e);
+    }
 
     /* the new state */
     char *uq = increment(Y->sb, Y->bat, s, "f", "[k]");

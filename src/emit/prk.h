@@ -15,6 +15,8 @@
  * for an exact zero). */
 typedef struct {
     char **ca, **aat, *sb, **bat;
+    char **inv1;     /* 1/(c_j - 1) when the nodes are distinct and none is 1 (else NULL):
+                        the force at the step's start joins the extrapolation */
 } nys_coefs;
 
 typedef struct {

@@ -26,7 +26,10 @@
  *     problem of another dimension (NULL from both allocs) and gives the
  *     same bits as the dynamic one;
  *   - the long double Gauss-2 agrees with its general stepper to its
- *     round-off. */
+ *     round-off;
+ *   - the solver option start_force (the force at the step's start joins
+ *     the extrapolated starting forces) leaves the Gauss-2 trajectory as it
+ *     is to round-off and costs exactly one force per step. */
 #include "test_emit_harness.h"
 
 static char *run(const char *exe, const char *args)
@@ -146,6 +149,29 @@ int main(void)
                   "long double Gauss-2: mechanical and general differ by %.3e", d);
         free(out);
         free(args);
+    }
+
+    /* the start force (solver option start_force): the same trajectory (only
+     * the starting values of the iteration change), one more force per step
+     * (its own count: 2 per sweep plus 1 per step, the first step's start
+     * included) */
+    for (int pr = 0; pr < 2; pr++) {
+        const char *prob = pr ? "fput" : "kepler";
+        char *args = vigen_strdup_printf("compare %s 0 1 1000 %s 1", prob, H);
+        char *base = vigen_strdup_printf("compare %s 0 1 1000 %s 0", prob, H);
+        char *out = run(g2, args), *ref = run(g2, base);
+        double d = harness_value(out, "maxdiff", 1), it = harness_value(out, "m_iter", -1);
+        CHECK_MSG(harness_value(out, "status_m", -1) == 0 && d < 1e-11, "gauss2 %s: start_force changes the "
+                  "trajectory by %.3e", args, d);
+        CHECK_MSG(harness_value(out, "m_dHdq", -1) == 2 * it + 1000, "gauss2 %s: %g forces for %g sweeps in 1000 steps",
+                  args, harness_value(out, "m_dHdq", -1), it);
+        fprintf(stderr, "  gauss2 %s, start force: sweeps per step %.3f (extrapolated: %.3f), forces %.2f (%.2f)\n",
+                prob, it / 1000, harness_value(ref, "m_iter", 0) / 1000, harness_value(out, "m_dHdq", 0) / 1000,
+                harness_value(ref, "m_dHdq", 0) / 1000);
+        free(out);
+        free(ref);
+        free(args);
+        free(base);
     }
 
     /* the Stormer-Verlet formula */

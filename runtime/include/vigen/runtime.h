@@ -103,6 +103,10 @@ typedef struct {
     int extrapolate;     /* start from the previous step's stages extrapolated; default 1 */
     double fd_step;      /* relative step of the finite-difference Hessian; 0 = default
                             (square root of epsilon) */
+    int start_force;     /* mechanical problems, implicit tableaux with every node c_i != 1:
+                            one more force per step, at the step's start, joins the
+                            extrapolation of the previous step's stage forces (degree s
+                            instead of s - 1); default 0 (ignored elsewhere) */
 } vigen_solver_options;
 
 /* Fills the defaults listed above. */

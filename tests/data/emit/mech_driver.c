@@ -16,9 +16,10 @@
  * The general problem is the same H written with dH/dq = -f and
  * dH/dp = M^-1 p, separable set.
  *
- *   mech_driver compare PROBLEM SOLVER KAHAN N H
+ *   mech_driver compare PROBLEM SOLVER KAHAN N H [START_FORCE]
  *       N steps of size H from the start with each problem type (SOLVER 0
- *       fixed point, 1 Newton; KAHAN compensated updates): maxdiff = the
+ *       fixed point, 1 Newton; KAHAN compensated updates; START_FORCE the
+ *       solver option start_force, default 0): maxdiff = the
  *       largest |(q, p)_mech - (q, p)_general| over the steps, relative to
  *       the largest |component|; bitequal = 1 when every state was equal
  *       bit for bit; status_g, status_m; the statistics of the mechanical
@@ -136,12 +137,15 @@ static real energy(real t, const real *q, const real *p, size_t n)
     return e;
 }
 
+static int start_force;
+
 static FN(workspace) *alloc_pair(int mech, size_t n, int solver, int kahan)
 {
     vigen_solver_options opt;
     vigen_solver_options_default(&opt);
     opt.solver = solver;
     opt.kahan = kahan;
+    opt.start_force = start_force;
     if (mech) {
         mechanical m = { n, force, potential, NULL, problem == KEPLER ? NULL : inv_mass };
         return FN(alloc_mechanical)(&m, &opt);
@@ -164,6 +168,7 @@ static int compare(int argc, char **argv)
     int solver = atoi(argv[3]), kahan = atoi(argv[4]);
     long N = atol(argv[5]);
     real h = (real)strtod(argv[6], NULL);
+    start_force = argc > 7 ? atoi(argv[7]) : 0;
     real qg[NF], pg[NF], qm[NF], pm[NF], tg = 0, tm = 0;
     size_t n = start(qg, pg);
     start(qm, pm);

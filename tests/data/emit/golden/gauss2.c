@@ -685,9 +685,27 @@ GAUSS2_NOINLINE int gauss2_mech_implicit(gauss2_workspace *w, double *t, double 
         const double w1_2 = (x1 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
         const double w2_1 = (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
         const double w2_2 = (x2 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
-        for (size_t k = 0; k < n; k++) {
-            f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
-            f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+        if (w->opt.start_force) {
+            /* with the force at (t0, q), the end of the previous step, as
+             * one more node (1, in units of the previous step): degree s */
+            double *const fe = w->F[0];
+            const double u1_1 = w1_1 * (x1 - 1) * (-0x1.4498517a7b356p+0);
+            const double u1_2 = w1_2 * (x1 - 1) * (-0x1.2ed9eba16132bp+2);
+            const double u1_e = (x1 - 0x1.b0cb174df99c7p-3) * (-0x1.4498517a7b356p+0) * (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.2ed9eba16132bp+2);
+            const double u2_1 = w2_1 * (x2 - 1) * (-0x1.4498517a7b356p+0);
+            const double u2_2 = w2_2 * (x2 - 1) * (-0x1.2ed9eba16132bp+2);
+            const double u2_e = (x2 - 0x1.b0cb174df99c7p-3) * (-0x1.4498517a7b356p+0) * (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.2ed9eba16132bp+2);
+            gauss2_force(w, t0, q, fe);
+            w->stats.dHdq_evals++;
+            for (size_t k = 0; k < n; k++) {
+                f1[k] = u1_1 * fo1[k] + u1_2 * fo2[k] + u1_e * fe[k];
+                f2[k] = u2_1 * fo1[k] + u2_2 * fo2[k] + u2_e * fe[k];
+            }
+        } else {
+            for (size_t k = 0; k < n; k++) {
+                f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
+                f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+            }
         }
     } else {
         /* Start from the force at (t, q) at every stage. */
