@@ -29,7 +29,9 @@
  *     round-off;
  *   - the solver option start_force (the force at the step's start joins
  *     the extrapolated starting forces) leaves the Gauss-2 trajectory as it
- *     is to round-off and costs exactly one force per step. */
+ *     is to round-off and costs exactly one force per step;
+ *   - Gauss-3 and Lobatto IIIA-IIIB 3 (tableaux/published) agree with their
+ *     general steppers too, with and without start_force. */
 #include "test_emit_harness.h"
 
 static char *run(const char *exe, const char *args)
@@ -172,6 +174,30 @@ int main(void)
         free(ref);
         free(args);
         free(base);
+    }
+
+    /* more shapes: Gauss-3 (an odd number of nodes: the sign of the start
+     * force's weight) and Lobatto IIIA-IIIB 3 (implicit, a node at 1: no
+     * start force) agree with their general steppers, with and without the
+     * option */
+    static const char *const more[] = { "gauss_3", "lobatto_iiia_iiib_3" };
+    for (size_t k = 0; k < 2; k++) {
+        char *path = vigen_strdup_printf("tableaux/published/%s.lua", more[k]);
+        char *nm = vigen_strdup_printf("m%zu", k);
+        char *exe = harness_emit(path, nm, VIGEN_REAL_DOUBLE, NULL) ? build("gcc", nm, "") : NULL;
+        for (int sf = 0; exe && sf <= 1; sf++) {
+            char *args = vigen_strdup_printf("compare kepler 0 1 500 %s %d", H, sf);
+            char *out = run(exe, args);
+            double d = harness_value(out, "maxdiff", 1);
+            CHECK_MSG(harness_value(out, "status_m", -1) == 0 && harness_value(out, "m_dHdp", -1) == 0 && d < 1e-11,
+                      "%s %s: mechanical and general differ by %.3e", more[k], args, d);
+            free(out);
+            free(args);
+        }
+        CHECK_MSG(exe != NULL, "%s: not built", more[k]);
+        free(exe);
+        free(nm);
+        free(path);
     }
 
     /* the Stormer-Verlet formula */
