@@ -57,10 +57,21 @@ int vigen_cmd_emit(const vigen_cli_args *args)
         if (vigen_emit_real_parse(&real, r) != VIGEN_OK)
             return vigen_cli_usage_error(args->command, "--real takes %s, not '%s'", vigen_emit_real_names(), r);
     }
+    size_t dim = 0;
+    if (args->value[VIGEN_OPT_emit_dim]) {
+        const char *d = args->value[VIGEN_OPT_emit_dim];
+        char *end = NULL;
+        errno = 0;
+        unsigned long long v = (d[0] >= '0' && d[0] <= '9') ? strtoull(d, &end, 10) : 0;
+        if (end == NULL || *end != '\0' || errno != 0 || v < 1 || v > VIGEN_EMIT_MAX_DIM)
+            return vigen_cli_usage_error(args->command, "--dim takes a dimension from 1 to %d, not '%s'",
+                                         VIGEN_EMIT_MAX_DIM, d);
+        dim = (size_t)v;
+    }
     const char *base = strrchr(file, '/');
     vigen_emit_options opt = { .name = name, .real = real, .input_label = base ? base + 1 : file,
                                .allow_inexact = args->value[VIGEN_OPT_emit_allow_inexact] != NULL,
-                               .variant = args->value[VIGEN_OPT_emit_variant] };
+                               .variant = args->value[VIGEN_OPT_emit_variant], .dim = dim };
 
     vigen_error err;
     vigen_error_init(&err);

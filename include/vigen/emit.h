@@ -1,7 +1,7 @@
 /* emit.h — `vigen emit`: compiles a tableau into a specialised C stepper.
  *
  *   vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]
- *              [--variant NAME] [--allow-inexact] [-q]
+ *              [--variant NAME] [--dim N] [--allow-inexact] [-q]
  *
  * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
  * templates/<variant>/stepper.h.in and templates/<variant>/stepper.c.in
@@ -47,6 +47,12 @@
  *   gradients, zero coefficients are skipped, and the gradient at the end of
  *   a step is reused at the start of the next (first same as last) when the
  *   tableau has a zero row and a row equal to b.
+ * - Mechanical problems (NAME_alloc_mechanical, H = 1/2 p^T M^-1 p + V with
+ *   the force given) are stepped in Nystrom form: positions as the only
+ *   stage unknowns, one force per stage and sweep, the row sums of A, A At,
+ *   sum b and b^T At rounded from balls like the other coefficients; the
+ *   explicit path calls the force in place of dH/dq (docs/emit.md).
+ * - --dim N (opt->dim): a static dimension, see vigen_emit_options.dim.
  *
  * Variants: src/emit/variants.def lists the steppers the emitter can write,
  * chosen by name (vigen_emit_options.variant; today one, "prk", the default:
@@ -72,6 +78,10 @@
 
 enum { VIGEN_REAL_DOUBLE, VIGEN_REAL_LONG_DOUBLE, VIGEN_REAL_FLOAT128 };
 
+/* The largest static dimension vigen_emit_options.dim takes (the arrays of
+ * such a workspace are inside it: about 30 + 6 s arrays of dim reals). */
+#define VIGEN_EMIT_MAX_DIM 100000
+
 typedef struct {
     const char *name;        /* requested NAME (sanitised by the emitter) */
     int real;                /* VIGEN_REAL_* */
@@ -89,6 +99,11 @@ typedef struct {
     const char *variant;     /* the stepper to write, by its name in src/emit/variants.def (its
                                 templates are templates/<variant>/); NULL: the first row,
                                 "prk" */
+    size_t dim;              /* static dimension: 0 (any dimension, chosen at alloc), or N
+                                (`--dim N`): loops of the fixed length N, the arrays in the
+                                workspace itself, and NAME_alloc / NAME_alloc_mechanical
+                                refusing (NULL) a problem whose dim is not N; the header
+                                defines NAME_DIM (upper case) as N, 0 when any */
 } vigen_emit_options;
 
 /* The target types by name, as `vigen emit --real` takes them:

@@ -27,6 +27,7 @@ void vigen_solver_options_default(vigen_solver_options *opt)
     opt->kahan = 1;
     opt->extrapolate = 1;
     opt->fd_step = 0.0;
+    opt->start_force = 0;
 }
 
 double vigen_sum_naive(const double *x, size_t n)

@@ -34,6 +34,9 @@ static int check_options(const vigen_emit_variant **variant, const vigen_emit_op
     if (vigen_emit_real_name(opt->real) == NULL)
         return vigen_error_set(err, VIGEN_E_USAGE, "unknown real type %d (the types are %s)", opt->real,
                                vigen_emit_real_names());
+    if (opt->dim > VIGEN_EMIT_MAX_DIM)
+        return vigen_error_set(err, VIGEN_E_USAGE, "static dimension %zu is too large (at most %d; 0 for any)",
+                               opt->dim, VIGEN_EMIT_MAX_DIM);
     *variant = vigen_emit_variant_find(opt->variant);
     if (*variant != NULL) return VIGEN_OK;
     vigen_strbuf known;

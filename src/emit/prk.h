@@ -10,16 +10,37 @@
 
 /* The rounded coefficients of one pass: literals, NULL for an exact zero
  * (c: "0"); inv[j * s + m] = 1/(c_j - c_m) when lagrange. */
+/* The Nystrom coefficients of the tableau (nystrom.c), for mechanical
+ * problems: row sums of A, A At, sum b and b^T At, rounded from balls (NULL
+ * for an exact zero). */
+typedef struct {
+    char **ca, **aat, *sb, **bat;
+    char **inv1;     /* 1/(c_j - 1) when the nodes are distinct and none is 1 (else NULL):
+                        the force at the step's start joins the extrapolation */
+} nys_coefs;
+
 typedef struct {
     slong s;
     char **c, **b, **bt, **a, **at, **inv;
     int lagrange;
     emit_explicit X;
+    nys_coefs Y;
 } prk_coefs;
 
 int vigen_emit_prk_round(prk_coefs *K, emit_ctx *E);
 void vigen_emit_prk_clear(prk_coefs *K);
 void vigen_emit_prk_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *opt, const char *ident);
 void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, int real);
+/* nystrom.c: rounds K->Y (after the PRK coefficients), clears it, and
+ * writes the mechanical implicit step's blocks. */
+int vigen_emit_nys_round(nys_coefs *Y, emit_ctx *E);
+void vigen_emit_nys_clear(nys_coefs *Y, slong s);
+void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *name, int real);
+/* prk_code.c helpers shared with nystrom.c */
+char *vigen_emit_times(const char *coef, const char *x);
+char *vigen_emit_lin(char *const *coefs, slong n, const char *pre, const char *post);
+char *vigen_emit_at_time(const char *c);
+/* Whether column j of the s x s literals m has a nonzero entry. */
+int vigen_emit_colused(char *const *m, slong s, slong j);
 
 #endif

@@ -41,7 +41,7 @@ static int is_pow2(const char *c)
 }
 
 /* coef * x (heap), x alone for an exact 1, NULL for "0". */
-static char *times(const char *coef, const char *x)
+char *vigen_emit_times(const char *coef, const char *x)
 {
     if (strcmp(coef, "0") == 0) return NULL;
     if (is_one(coef)) return vigen_strdup(x);
@@ -49,9 +49,9 @@ static char *times(const char *coef, const char *x)
 }
 
 /* "t0 + c h" for a node c, "t0" when it is 0. */
-static char *at_time(const char *c)
+char *vigen_emit_at_time(const char *c)
 {
-    char *d = times(c, "h");
+    char *d = vigen_emit_times(c, "h");
     char *r = d ? vigen_strdup_printf("t0 + %s", d) : vigen_strdup("t0");
     free(d);
     return r;
@@ -59,7 +59,7 @@ static char *at_time(const char *c)
 
 /* "c1 * <pre>1<post> + c2 * <pre>2<post> ..." over the nonzero coefficients
  * (NULL entries); NULL when there are none. */
-static char *lin(char *const *coefs, slong n, const char *pre, const char *post)
+char *vigen_emit_lin(char *const *coefs, slong n, const char *pre, const char *post)
 {
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
@@ -92,7 +92,7 @@ static char *hterms(const hterm *l, slong n)
         vigen_strbuf_append(&sb, ")");
         return sb.data;
     }
-    char *ch = times(l[0].coef, "h");
+    char *ch = vigen_emit_times(l[0].coef, "h");
     if (strcmp(ch, "h") == 0) vigen_strbuf_append(&sb, "h");
     else vigen_strbuf_printf(&sb, "(%s)", ch);
     free(ch);
@@ -136,7 +136,7 @@ static char *hsum_op(const emit_xop *op)
 }
 
 /* Whether column j of m has a nonzero entry (the stage's gradient is read). */
-static int colused(char *const *m, slong s, slong j)
+int vigen_emit_colused(char *const *m, slong s, slong j)
 {
     for (slong i = 0; i < s; i++)
         if (m[i * s + j]) return 1;
@@ -146,7 +146,7 @@ static int colused(char *const *m, slong s, slong j)
 /* "<base> + h * (sum)" / "<base> - h * (sum)", or base alone. */
 static char *stage_sum(const char *base, char sign, char *const *row, slong s, const char *pre, const char *post)
 {
-    char *sum = lin(row, s, pre, post);
+    char *sum = vigen_emit_lin(row, s, pre, post);
     char *r = sum ? vigen_strdup_printf("%s %c h * (%s)", base, sign, sum) : vigen_strdup(base);
     free(sum);
     return r;
@@ -162,12 +162,12 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, c
     vigen_slot *fg = vigen_slots_lines(S, "FP_G_EVALS");
     vigen_slot *ff = vigen_slots_lines(S, "FP_F_EVALS");
     for (slong i = 1; i <= s; i++) {
-        char *ti = at_time(K->c[i - 1]);
+        char *ti = vigen_emit_at_time(K->c[i - 1]);
         vigen_slot_line(sw, "%s_dHdp(w, %s, w->Q[%ld], w->P[%ld], w->F[%ld]);", N, ti, i - 1, i - 1, i - 1);
         vigen_slot_line(sw, "%s_dHdq(w, %s, w->Q[%ld], w->P[%ld], w->G[%ld]);", N, ti, i - 1, i - 1, i - 1);
         vigen_slot_line(ptr, "%s *const Q%ld = w->Q[%ld], *const P%ld = w->P[%ld];", R, i, i - 1, i, i - 1);
-        if (colused(K->a, s, i - 1)) vigen_slot_line(ptr, "const %s *const F%ld = w->F[%ld];", R, i, i - 1);
-        if (colused(K->at, s, i - 1)) vigen_slot_line(ptr, "const %s *const G%ld = w->G[%ld];", R, i, i - 1);
+        if (vigen_emit_colused(K->a, s, i - 1)) vigen_slot_line(ptr, "const %s *const F%ld = w->F[%ld];", R, i, i - 1);
+        if (vigen_emit_colused(K->at, s, i - 1)) vigen_slot_line(ptr, "const %s *const G%ld = w->G[%ld];", R, i, i - 1);
         vigen_slot_line(fg, "%s_dHdq(w, %s, Q%ld, P%ld, w->G[%ld]);", N, ti, i, i, i - 1);
         vigen_slot_line(ff, "%s_dHdp(w, %s, Q%ld, P%ld, w->F[%ld]);", N, ti, i, i, i - 1);
         free(ti);
@@ -197,7 +197,7 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, c
         vigen_slot *b = vigen_slots_lines(S, half[h].slot);
         char *const *m = half[h].q ? K->a : K->at;
         for (slong i = 1; i <= s; i++)
-            if (colused(m, s, i - 1)) vigen_slot_line(b, "const %s %s%ld = %s%ld[k];", R, half[h].load, i, half[h].grad, i);
+            if (vigen_emit_colused(m, s, i - 1)) vigen_slot_line(b, "const %s %s%ld = %s%ld[k];", R, half[h].load, i, half[h].grad, i);
         for (slong i = 1; i <= s; i++) {
             char *x = stage_sum(half[h].base, half[h].sign, m + (i - 1) * s, s, half[h].load, "");
             vigen_slot_line(b, "const %s %s%ld = %s;", R, half[h].var, i, x);
@@ -259,7 +259,7 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, c
     vigen_slots_flag(S, "LAGRANGE", K->lagrange);
     if (K->lagrange) {
         for (slong i = 1; i <= s; i++) {
-            char *cr = times(K->c[i - 1], "r");
+            char *cr = vigen_emit_times(K->c[i - 1], "r");
             if (cr) vigen_slot_line(ew, "const %s x%ld = 1 + %s;", R, i, cr);
             else vigen_slot_line(ew, "const %s x%ld = 1;", R, i);
             free(cr);
@@ -280,7 +280,7 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, c
         if (wrow == NULL) abort();
         for (slong i = 1; i <= s; i++) {
             for (slong j = 1; j <= s; j++) wrow[j - 1] = vigen_strdup_printf("w%ld_%ld", i, j);
-            char *fo = lin(wrow, s, "Fo", "[k]"), *go = lin(wrow, s, "Go", "[k]");
+            char *fo = vigen_emit_lin(wrow, s, "Fo", "[k]"), *go = vigen_emit_lin(wrow, s, "Go", "[k]");
             vigen_slot_line(ea, "F%ld[k] = %s;", i, fo);
             vigen_slot_line(ea, "G%ld[k] = %s;", i, go);
             free(fo);
@@ -302,6 +302,84 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, c
 
 /* ---------------------------------------------------------- the explicit path */
 
+/* The operations of the explicit step, in order.  For a mechanical problem
+ * (mech) dH/dp is M^-1 p, written inline with the diagonal im, and dH/dq is
+ * -f with f the force: the stage and update sums of p change sign instead
+ * of the force (the same values bit for bit), and only forces are counted. */
+static void explicit_ops(vigen_slot *L, const emit_explicit *X, const char *N, const char *R, const char *SFX, int mech)
+{
+    /* q and p are updated in place, their start values kept in qs, ps: the
+     * plan's q0 (p0) is q (p) before the update and qs (ps) after it */
+    const char *q0 = "q", *p0 = "p";
+    const char psign = mech ? '+' : '-';
+    for (slong k = 0; k < X->nops; k++) {
+        const emit_xop *op = X->ops + k;
+        if (op->op == XOP_EVAL_F || op->op == XOP_EVAL_G) {
+            int isf = op->op == XOP_EVAL_F;
+            const char *fn = isf ? "dHdp" : "dHdq";
+            char *tm = op->time == XTIME_T0 ? vigen_strdup("t0") : op->time == XTIME_T1 ? vigen_strdup("t1")
+                                                                                      : vigen_emit_at_time(op->tc);
+            const char *ind = op->fsal ? "    " : "";
+            if (op->fsal) {
+                vigen_slot_line(L, "if (w->fsal) {");
+                vigen_slot_line(L, "    w->stats.fsal_reuses++;");
+                vigen_slot_line(L, "} else {");
+            }
+            const char *qa = strcmp(op->q, "q0") == 0 ? q0 : op->q, *pa = strcmp(op->p, "p0") == 0 ? p0 : op->p;
+            if (!mech) {
+                vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, X%ld);", ind, N, fn, tm, qa, pa, op->dst);
+                vigen_slot_line(L, "%sw->stats.%s_evals++;", ind, fn);
+            } else if (isf) {
+                vigen_slot_line(L, "%sfor (size_t k = 0; k < n; k++) X%ld[k] = im[k] * %s[k];", ind, op->dst, pa);
+            } else {
+                vigen_slot_line(L, "%s%s_force(w, %s, %s, X%ld);", ind, N, tm, qa, op->dst);
+                vigen_slot_line(L, "%sw->stats.dHdq_evals++;", ind);
+            }
+            if (op->fsal) vigen_slot_line(L, "}");
+            free(tm);
+            continue;
+        }
+        char *ht = hsum_op(op);
+        switch (op->op) {
+        case XOP_STAGE_Q:
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] + %s;", op->dst, q0, ht);
+            break;
+        case XOP_STAGE_P:
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] %c %s;", op->dst, p0, psign, ht);
+            break;
+        default: {
+            /* the new q (+) or p (-; + for mech) in place, compensated or
+             * not, the old value kept in qs (ps); nf: is it finite (the
+             * template's NAME_nf_add) */
+            int isq = op->op == XOP_UPDATE_Q;
+            const char *x = isq ? "q" : "p";
+            char sign = isq ? '+' : psign;
+            char *arg = sign == '+' ? vigen_strdup(ht) : vigen_strdup_printf("-(%s)", ht);
+            vigen_slot_line(L, "if (kahan) {");
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
+            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
+            vigen_slot_line(L, "        %ss[k] = x;", x);
+            vigen_slot_line(L, "        %s[k] = vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]);", x, SFX, arg, x, x);
+            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
+            vigen_slot_line(L, "    }");
+            vigen_slot_line(L, "} else {");
+            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
+            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
+            vigen_slot_line(L, "        %ss[k] = x;", x);
+            vigen_slot_line(L, "        %s[k] = x %c %s;", x, sign, ht);
+            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
+            vigen_slot_line(L, "    }");
+            vigen_slot_line(L, "}");
+            if (isq) q0 = "qs";
+            else p0 = "ps";
+            free(arg);
+            break;
+        }
+        }
+        free(ht);
+    }
+}
+
 static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *N, const char *R, const char *SFX)
 {
     vigen_slots_text(S, "EXPLICIT_WHAT", X->mode == EMIT_EXPLICIT_GENERAL ? "any H" : "separable H");
@@ -317,66 +395,8 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
         vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][0], X->swaps[k][1]);
         vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][1], X->swaps[k][0]);
     }
-    vigen_slot *L = vigen_slots_lines(S, "EXPLICIT_OPS");
-    /* q and p are updated in place, their start values kept in qs, ps: the
-     * plan's q0 (p0) is q (p) before the update and qs (ps) after it */
-    const char *q0 = "q", *p0 = "p";
-    for (slong k = 0; k < X->nops; k++) {
-        const emit_xop *op = X->ops + k;
-        if (op->op == XOP_EVAL_F || op->op == XOP_EVAL_G) {
-            const char *fn = op->op == XOP_EVAL_F ? "dHdp" : "dHdq";
-            char *tm = op->time == XTIME_T0 ? vigen_strdup("t0") : op->time == XTIME_T1 ? vigen_strdup("t1")
-                                                                                      : at_time(op->tc);
-            const char *ind = op->fsal ? "    " : "";
-            if (op->fsal) {
-                vigen_slot_line(L, "if (w->fsal) {");
-                vigen_slot_line(L, "    w->stats.fsal_reuses++;");
-                vigen_slot_line(L, "} else {");
-            }
-            const char *qa = strcmp(op->q, "q0") == 0 ? q0 : op->q, *pa = strcmp(op->p, "p0") == 0 ? p0 : op->p;
-            vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, X%ld);", ind, N, fn, tm, qa, pa, op->dst);
-            vigen_slot_line(L, "%sw->stats.%s_evals++;", ind, fn);
-            if (op->fsal) vigen_slot_line(L, "}");
-            free(tm);
-            continue;
-        }
-        char *ht = hsum_op(op);
-        switch (op->op) {
-        case XOP_STAGE_Q:
-            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] + %s;", op->dst, q0, ht);
-            break;
-        case XOP_STAGE_P:
-            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] - %s;", op->dst, p0, ht);
-            break;
-        default: {
-            /* the new q (+) or p (-) in place, compensated or not, the old value
-             * kept in qs (ps); nf: is it finite (the template's NAME_nf_add) */
-            int isq = op->op == XOP_UPDATE_Q;
-            const char *x = isq ? "q" : "p";
-            char *arg = isq ? vigen_strdup(ht) : vigen_strdup_printf("-(%s)", ht);
-            vigen_slot_line(L, "if (kahan) {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
-            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
-            vigen_slot_line(L, "        %ss[k] = x;", x);
-            vigen_slot_line(L, "        %s[k] = vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]);", x, SFX, arg, x, x);
-            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
-            vigen_slot_line(L, "    }");
-            vigen_slot_line(L, "} else {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
-            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
-            vigen_slot_line(L, "        %ss[k] = x;", x);
-            vigen_slot_line(L, "        %s[k] = x %c %s;", x, isq ? '+' : '-', ht);
-            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
-            vigen_slot_line(L, "    }");
-            vigen_slot_line(L, "}");
-            if (isq) q0 = "qs";
-            else p0 = "ps";
-            free(arg);
-            break;
-        }
-        }
-        free(ht);
-    }
+    explicit_ops(vigen_slots_lines(S, "EXPLICIT_OPS"), X, N, R, SFX, 0);
+    explicit_ops(vigen_slots_lines(S, "MECH_EXPLICIT_OPS"), X, N, R, SFX, 1);
 }
 
 void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, int real)
@@ -389,8 +409,9 @@ void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, i
     vigen_slots_textf(S, "NX", "%ld", X->nx);
     /* arrays of length dim in the workspace block: Q, P, F, G, Fo, Go per
      * stage, cq, cp, cqn, cpn, qn, pn, 6 for the finite-difference Hessian,
-     * and the explicit path's work arrays */
-    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 6 + 6 + X->nx);
+     * the diagonal of M^-1 of a mechanical problem, and the explicit path's
+     * work arrays */
+    vigen_slots_textf(S, "NARRAYS", "%ld", 6 * (long)K->s + 6 + 6 + 1 + X->nx);
     implicit_blocks(S, K, name, R->ctype);
     explicit_blocks(S, X, name, R->ctype, R->suffix);
 }

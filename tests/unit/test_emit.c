@@ -161,7 +161,7 @@ static void test_tableau(const char *path, const char *runtime_lib)
     char *ident = vigen_strdup_printf("t_%s", ident0);
     free(ident0);
     int real = ps >= 6 ? VIGEN_REAL_LONG_DOUBLE : VIGEN_REAL_DOUBLE;
-    vigen_emit_options opt = { ident, real, "input.lua", 0, NULL, NULL };
+    vigen_emit_options opt = { ident, real, "input.lua", 0, NULL, NULL, 0 };
     char *h1 = NULL, *c1 = NULL, *h2 = NULL, *c2 = NULL, *id1 = NULL, *id2 = NULL;
     int rc = vigen_emit_render(&t, &opt, &h1, &c1, &id1, &err);
     if (rc == VIGEN_E_INEXACT) {
@@ -273,7 +273,7 @@ static void test_rounding(void)
         vigen_error_clear(&err);
         return;
     }
-    vigen_emit_options opt = { "rnd", VIGEN_REAL_DOUBLE, "rounding.lua", 0, NULL, NULL };
+    vigen_emit_options opt = { "rnd", VIGEN_REAL_DOUBLE, "rounding.lua", 0, NULL, NULL, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     CHECK(c && strstr(c, "0x1.5555555555555p-2") != NULL);     /* 1/3, rounded down (…0101|0101…) */
@@ -335,7 +335,7 @@ static void test_golden(const char *name)
         return;
     }
     char *label = vigen_strdup_printf("%s.lua", name);
-    vigen_emit_options opt = { name, VIGEN_REAL_DOUBLE, label, 0, NULL, NULL };
+    vigen_emit_options opt = { name, VIGEN_REAL_DOUBLE, label, 0, NULL, NULL, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     char *gh = vigen_strdup_printf("tests/data/emit/golden/%s.h", name), *gc = vigen_strdup_printf("tests/data/emit/golden/%s.c", name);
@@ -376,7 +376,7 @@ static void test_names(void)
     t.description = vigen_strdup("evil */ int injected; /* \"\\ ?\?/\n#include <x>");
     free(t.name);
     t.name = vigen_strdup("bad\"name */ int x;");
-    vigen_emit_options opt = { "evil", VIGEN_REAL_DOUBLE, "evil */.lua", 0, NULL, NULL };
+    vigen_emit_options opt = { "evil", VIGEN_REAL_DOUBLE, "evil */.lua", 0, NULL, NULL, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     CHECK(c && strstr(c, "*/ int injected") == NULL && strstr(c, "\n#include <x>") == NULL);
@@ -496,7 +496,7 @@ static void test_inexact(void)
         free(path);
         return;
     }
-    vigen_emit_options opt = { "g3", VIGEN_REAL_DOUBLE, "gauss3_34.lua", 0, NULL, NULL };
+    vigen_emit_options opt = { "g3", VIGEN_REAL_DOUBLE, "gauss3_34.lua", 0, NULL, NULL, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     vigen_strbuf_clear(&audit_text);
     vigen_strbuf_init(&audit_text);
@@ -515,12 +515,15 @@ static void test_inexact(void)
               "advice for a 34-digit tableau as float128: %s", m);
     vigen_error_clear(&err);
     /* rounded as written: one warning for 24 entries (c, A, b, At; bt = b is
-     * not counted twice) and the 6 reciprocals 1/(c_j - c_m) */
+     * not counted twice) and 25 derived coefficients: the 6 reciprocals
+     * 1/(c_j - c_m), the 16 of the Nystrom form (3 row sums of A, the 9
+     * entries of A At, sum b and the 3 of b^T At) and the 3 reciprocals
+     * 1/(c_j - 1) of the start force */
     opt.allow_inexact = 1;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     CHECK_MSG(audit_count == 1, "%d warnings: %s", audit_count, audit_text.data);
     CHECK_MSG(strstr(audit_text.data, "gauss3_34.lua: --allow-inexact: rounded 24 entries to float128 (113 bits)") != NULL &&
-                  strstr(audit_text.data, "(c[1], c[2], c[3], A[1][1], A[1][2] and 19 more; and 6 coefficients") != NULL &&
+                  strstr(audit_text.data, "(c[1], c[2], c[3], A[1][1], A[1][2] and 19 more; and 25 coefficients") != NULL &&
                   strstr(audit_text.data, "only as good as these decimals") != NULL,
               "summary: %s", audit_text.data);
     CHECK(c && strstr(c, "--allow-inexact") != NULL);
@@ -533,7 +536,7 @@ static void test_inexact(void)
     vigen_strbuf_init(&audit_text);
     vigen_strbuf_append(&audit_text, "");
     if (vigen_tableau_load(&t, "tableaux/published/blanes_moan_s6_4.lua", NULL, &err) == VIGEN_OK) {
-        vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0, NULL, NULL };
+        vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0, NULL, NULL, 0 };
         CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_E_INEXACT);
         m = err.message ? err.message : "";
         CHECK_MSG(strstr(m, "c[1] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits") != NULL &&
@@ -554,7 +557,7 @@ static void test_inexact(void)
 
     /* a spec generated for the emitter: the header says from what */
     CHECK(vigen_galerkin_generate(&g, spec, vigen_emit_spec_digits(VIGEN_REAL_FLOAT128), &err) == VIGEN_OK);
-    vigen_emit_options so = { "g3s", VIGEN_REAL_FLOAT128, "gauss_legendre_s3.lua", 0, NULL, NULL };
+    vigen_emit_options so = { "g3s", VIGEN_REAL_FLOAT128, "gauss_legendre_s3.lua", 0, NULL, NULL, 0 };
     audit_count = 0;
     CHECK(vigen_emit_render(&g, &so, &h, &c, &id, &err) == VIGEN_OK && audit_count == 0);
     CHECK(c && strstr(c, "Tableau generated from the spec gauss_legendre_s3.lua with 60 certified digits") != NULL);

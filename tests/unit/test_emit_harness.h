@@ -114,7 +114,14 @@ static void harness_done(void)
 /* Emits the tableau file path as stepper `name` for the real type real into
  * the scratch directory (name.h, name.c); the C text is returned in *c_text
  * when c_text is not NULL.  Returns 0 on failure (reported). */
+static int harness_emit_dim(const char *path, const char *name, int real, size_t dim, char **c_text);
 static int harness_emit(const char *path, const char *name, int real, char **c_text)
+{
+    return harness_emit_dim(path, name, real, 0, c_text);
+}
+
+/* The same with a static dimension (vigen_emit_options.dim; 0: any). */
+static int harness_emit_dim(const char *path, const char *name, int real, size_t dim, char **c_text)
 {
     vigen_error err;
     vigen_error_init(&err);
@@ -125,7 +132,7 @@ static int harness_emit(const char *path, const char *name, int real, char **c_t
         vigen_error_clear(&err);
         return 0;
     }
-    vigen_emit_options opt = { name, real, path, 0, NULL, NULL };
+    vigen_emit_options opt = { name, real, path, 0, NULL, NULL, dim };
     char *h = NULL, *c = NULL, *id = NULL;
     int rc = vigen_emit_render(&t, &opt, &h, &c, &id, &err);
     vigen_tableau_clear(&t);

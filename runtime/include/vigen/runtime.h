@@ -6,6 +6,10 @@
  *
  *     NAME_workspace *NAME_alloc(const vigen_hamiltonian *sys,
  *                                const vigen_solver_options *opt);  NULL opt = defaults
+ *     NAME_workspace *NAME_alloc_mechanical(const vigen_mechanical *sys,
+ *                                const vigen_solver_options *opt);  H = p^T M^-1 p / 2 + V,
+ *                                the force -dV/dq given: stepped in Nystrom form
+ *     size_t NAME_dim(void);     the only dimension alloc takes (emit --dim), 0 = any
  *     int  NAME_step(NAME_workspace *w, double *t, double *q, double *p, double h);
  *     void NAME_reset(NAME_workspace *w);     forget history (new trajectory)
  *     const vigen_stats *NAME_stats(const NAME_workspace *w);
@@ -43,6 +47,15 @@
  *         int separable;
  *         vigen_hess_fn hessian;     optional, may be left out of an initialiser
  *     } vigen_hamiltonian;
+ *
+ *     typedef void (*vigen_force_fn)(double t, const double *q, double *f, void *ctx);
+ *     typedef struct {                   H = 1/2 p^T M^-1 p + V(t, q), M diagonal
+ *         size_t dim;
+ *         vigen_force_fn force;          f = -dV/dq(t, q)
+ *         double (*V)(double t, const double *q, void *ctx);   optional
+ *         void *ctx;
+ *         const double *inv_mass;        dim entries of diag(M^-1); NULL = identity
+ *     } vigen_mechanical;
  *
  * State is never shared between workspaces; a workspace is not thread-safe,
  * distinct workspaces are.  Compile emitted code without -ffast-math: the
@@ -90,6 +103,10 @@ typedef struct {
     int extrapolate;     /* start from the previous step's stages extrapolated; default 1 */
     double fd_step;      /* relative step of the finite-difference Hessian; 0 = default
                             (square root of epsilon) */
+    int start_force;     /* mechanical problems, implicit tableaux with every node c_i != 1:
+                            one more force per step, at the step's start, joins the
+                            extrapolation of the previous step's stage forces (degree s
+                            instead of s - 1); default 0 (ignored elsewhere) */
 } vigen_solver_options;
 
 /* Fills the defaults listed above. */

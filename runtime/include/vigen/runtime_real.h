@@ -25,6 +25,22 @@ typedef struct {
     VIGEN_SFX(vigen_hess_fn) hessian;
 } VIGEN_SFX(vigen_hamiltonian);
 
+/* A mechanical problem, H = 1/2 p^T M^-1 p + V(t, q) with M diagonal: the
+ * user supplies the force f = -dV/dq(t, q) only.  An emitted stepper takes
+ * it through NAME_alloc_mechanical and then integrates q' = M^-1 p,
+ * p' = f(t, q) in Nystrom form (stage values for the positions only, one
+ * force evaluation per stage and sweep, no dH/dp).  V is optional (not
+ * called by the stepper); inv_mass holds dim entries of the diagonal of
+ * M^-1 (copied at alloc; NULL = identity). */
+typedef void (*VIGEN_SFX(vigen_force_fn))(VIGEN_REAL t, const VIGEN_REAL *q, VIGEN_REAL *f, void *ctx);
+typedef struct {
+    size_t dim;
+    VIGEN_SFX(vigen_force_fn) force;
+    VIGEN_REAL (*V)(VIGEN_REAL t, const VIGEN_REAL *q, void *ctx);
+    void *ctx;
+    const VIGEN_REAL *inv_mass;
+} VIGEN_SFX(vigen_mechanical);
+
 /* A stepper as a const type object (GSL style), for the driver. */
 typedef struct {
     const char *name;          /* tableau name */
@@ -59,6 +75,18 @@ void VIGEN_SFX(vigen_hessian_fd)(const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_
                                  const VIGEN_REAL *q, const VIGEN_REAL *p, double *hess,
                                  VIGEN_REAL *work, double rel_step, unsigned long *nq,
                                  unsigned long *np);
+
+/* Forward-difference Jacobian of the mechanical velocity field for the
+ * simplified Newton of a Nystrom step, in the layout of vigen_hessian_fd:
+ * hess ((2 dim)^2 doubles, rows (dH/dq, dH/dp), columns (q, p)) gets
+ * rows dim .. 2 dim - 1, columns 0 .. dim - 1 set to d(M^-1 f)/dq and every
+ * other entry 0, so that vigen_newton_matrix_block(nw, i, j, h^2 (A At)_ij, 0)
+ * builds I - h^2 (A At) (x) M^-1 J in the position rows.  inv_mass: dim
+ * entries.  work holds 3 dim reals.  dim + 1 force evaluations, added to
+ * *nf.  rel_step 0 = default. */
+void VIGEN_SFX(vigen_mechanical_jacobian_fd)(const VIGEN_SFX(vigen_mechanical) *sys, const VIGEN_REAL *inv_mass,
+                                             VIGEN_REAL t, const VIGEN_REAL *q, double *hess, VIGEN_REAL *work,
+                                             double rel_step, unsigned long *nf);
 
 /* Machine epsilon of the type and the default stall tolerance 2^20 eps. */
 double VIGEN_SFX(vigen_epsilon)(void);

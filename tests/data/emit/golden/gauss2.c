@@ -19,10 +19,19 @@
  * Stage equations (s = 2), with F_i = dH/dp and G_i = dH/dq at stage i:
  *   Q_i = q + h sum_j a_ij F_j,   P_i = p - h sum_j at_ij G_j,
  *   q1 = q + h sum_i b_i F_i,     p1 = p - h sum_i bt_i G_i.
+ * A mechanical problem (gauss2_alloc_mechanical: H = 1/2 p^T M^-1 p + V, the
+ * force f = -dV/dq given) is stepped in Nystrom form, with the force f_i at
+ * stage i and v = M^-1 p:
+ *   Q_i = q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j,
+ *   q1 = q + h (sum_i b_i) v + h^2 M^-1 sum_j (b^T At)_j f_j,
+ *   p1 = p + h sum_i bt_i f_i,
+ * the same equations with F_j = M^-1 P_j and G_j = -f_j substituted; forces
+ * are counted in dHdq_evals, dHdp is never called.
  * Define GAUSS2_DIRECT_DHDQ / GAUSS2_DIRECT_DHDP as the names of
- * functions with the signature of vigen_grad_fn before including this
- * file in your own translation unit to call them directly (no function
- * pointer); the gradients in sys are then ignored.
+ * functions with the signature of vigen_grad_fn (GAUSS2_DIRECT_FORCE:
+ * vigen_force_fn) before including this file in your own translation
+ * unit to call them directly (no function pointer); the functions in sys are
+ * then ignored.
  */
 #include <float.h>
 #include <math.h>
@@ -45,6 +54,12 @@
 #else
 #define gauss2_dHdp(w, t, q, p, out) (w)->sys.dHdp((t), (q), (p), (out), (w)->sys.ctx)
 #endif
+#ifdef GAUSS2_DIRECT_FORCE
+#define gauss2_force(w, t, q, out) GAUSS2_DIRECT_FORCE((t), (q), (out), (w)->mech.ctx)
+#else
+#define gauss2_force(w, t, q, out) (w)->mech.force((t), (q), (out), (w)->mech.ctx)
+#endif
+#define gauss2_n(w) ((w)->n)
 #if defined(__GNUC__)
 #define GAUSS2_INLINE static inline __attribute__((always_inline))
 #define GAUSS2_NOINLINE static __attribute__((noinline))
@@ -54,10 +69,12 @@
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
-#define GAUSS2_NARRAYS 24
+#define GAUSS2_NARRAYS 25
 
 struct gauss2_workspace {
     vigen_hamiltonian sys;
+    vigen_mechanical mech;     /* the problem of gauss2_alloc_mechanical */
+    double *im;                    /* its diagonal of M^-1 (ones for the identity) */
     vigen_solver_options opt;
     vigen_stats stats;
     size_t n;
@@ -75,7 +92,8 @@ struct gauss2_workspace {
     int history;                    /* Fo, Go and hprev are valid */
     double t_next, q_next0, p_next0;   /* what the last step returned */
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
-    int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain */
+    int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain;
+                                       3, 4, 5 the same for a mechanical problem */
 };
 
 static inline double gauss2_abs(double x) { return fabs(x); }
@@ -155,20 +173,22 @@ static inline int gauss2_moved(const gauss2_workspace *w, double t, const double
 typedef uint64_t gauss2_nf;
 static inline gauss2_nf gauss2_nf_add(gauss2_nf a, double x) { return a | gauss2_bits(x - x); }
 
-gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
+/* The workspace for dimension n, path chosen from the tableau, the options
+ * and whether H is separable; NULL for a dimension other than
+ * GAUSS2_DIM (when not 0), invalid options or no memory. */
+static gauss2_workspace *gauss2_alloc_dim(size_t n, int separable, int mech, const vigen_solver_options *opt)
 {
-    if (sys == NULL || sys->dim == 0 || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
-    const size_t n = sys->dim;
-    if (n > (size_t)-1 / sizeof(double) / GAUSS2_NARRAYS) return NULL;
+    if (n == 0 || n > (size_t)-1 / sizeof(double) / GAUSS2_NARRAYS) return NULL;
     gauss2_workspace *w = calloc(1, sizeof *w);
     if (w == NULL) return NULL;
-    w->sys = *sys;
     if (opt) w->opt = *opt;
     else vigen_solver_options_default(&w->opt);
     if (w->opt.max_iter <= 0) w->opt.max_iter = 50;
     if (w->opt.solver != VIGEN_SOLVER_FIXED_POINT && w->opt.solver != VIGEN_SOLVER_NEWTON) { free(w); return NULL; }
     w->tol = w->opt.tol > 0 ? w->opt.tol : vigen_default_tol();
+    (void)separable;
     w->path = 0;
+    if (mech) w->path += 3;
     w->n = n;
     w->mem = calloc(GAUSS2_NARRAYS * n, sizeof(double));
     if (w->mem == NULL) { free(w); return NULL; }
@@ -188,15 +208,39 @@ gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     w->qx = m; m += n;
     w->px = m; m += n;
     w->fdwork = m; m += 6 * n;
+    w->im = m; m += n;
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
         w->nw = vigen_newton_alloc(2, n);
-        if (w->nw == NULL) { free(w->mem); free(w); return NULL; }
+        if (w->nw == NULL) { gauss2_free(w); return NULL; }
     }
     w->t_next = 0;
     w->q_next0 = w->p_next0 = 0;
     gauss2_reset(w);
     return w;
 }
+
+gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
+{
+    if (sys == NULL || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
+    gauss2_workspace *w = gauss2_alloc_dim(sys->dim, sys->separable, 0, opt);
+    if (w) w->sys = *sys;
+    return w;
+}
+
+gauss2_workspace *gauss2_alloc_mechanical(const vigen_mechanical *sys, const vigen_solver_options *opt)
+{
+    if (sys == NULL || sys->force == NULL) return NULL;
+    gauss2_workspace *w = gauss2_alloc_dim(sys->dim, 1, 1, opt);
+    if (w == NULL) return NULL;
+    w->mech = *sys;
+    w->mech.inv_mass = w->im;
+    w->sys.dim = sys->dim;
+    w->sys.ctx = sys->ctx;
+    for (size_t k = 0; k < sys->dim; k++) w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+    return w;
+}
+
+size_t gauss2_dim(void) { return GAUSS2_DIM; }
 
 void gauss2_free(gauss2_workspace *w)
 {
@@ -230,7 +274,7 @@ static void gauss2_sweep(gauss2_workspace *w, double t0, double h)
  * starting Q, P come from the starting gradients in F, G. */
 static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
 {
-    const size_t n = w->n;
+    const size_t n = gauss2_n(w);
     double *const Q1 = w->Q[0], *const P1 = w->P[0];
     const double *const F1 = w->F[0];
     const double *const G1 = w->G[0];
@@ -311,7 +355,7 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
  * at the step's start (user-supplied or finite differences), GSL LU. */
 static int gauss2_newton(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
 {
-    const size_t n = w->n;
+    const size_t n = gauss2_n(w);
     double *const Q1 = w->Q[0], *const P1 = w->P[0];
     const double *const F1 = w->F[0];
     const double *const G1 = w->G[0];
@@ -382,10 +426,42 @@ static int gauss2_newton(gauss2_workspace *w, double t0, const double *q, const 
     return st;
 }
 
+/* The statistics of a stage solve that returned st; st again. */
+static inline int gauss2_solved(gauss2_workspace *w, int st)
+{
+    w->stats.iterations += w->stats.last_iterations;
+    if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
+    if (st != VIGEN_SUCCESS) w->stats.failed_steps++;
+    return st;
+}
+
+/* The end of an implicit step whose new state is in w->qx, w->px: taken
+ * over if it is finite (nf, see gauss2_nf_add), the stage gradients kept
+ * for the next step's start; otherwise VIGEN_ENONFINITE, nothing changed. */
+static int gauss2_accept(gauss2_workspace *w, double *t, double *q, double *p, double h, double t1, double ct,
+                         gauss2_nf nf)
+{
+    const size_t n = gauss2_n(w);
+    if (gauss2_nf_add(nf, t1) != 0) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, w->qx, n * sizeof(double));
+    memcpy(p, w->px, n * sizeof(double));
+    gauss2_commit(w, t, q, p, t1, ct, w->opt.kahan);
+    for (int i = 0; i < 2; i++) {
+        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
+        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
+    }
+    w->hprev = h;
+    w->history = 1;
+    return VIGEN_SUCCESS;
+}
+
 /* The implicit step: starting values, stage solve, compensated update. */
 GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, double *p, double h)
 {
-    const size_t n = w->n;
+    const size_t n = gauss2_n(w);
     const double t0 = *t;
     int st;
     double *const F1 = w->F[0], *const G1 = w->G[0];
@@ -417,13 +493,8 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
         memcpy(F2, F1, n * sizeof(double));
         memcpy(G2, G1, n * sizeof(double));
     }
-    st = w->nw ? gauss2_newton(w, t0, q, p, h) : gauss2_fixed_point(w, t0, q, p, h);
-    w->stats.iterations += w->stats.last_iterations;
-    if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
-    if (st != VIGEN_SUCCESS) {
-        w->stats.failed_steps++;
-        return st;
-    }
+    st = gauss2_solved(w, w->nw ? gauss2_newton(w, t0, q, p, h) : gauss2_fixed_point(w, t0, q, p, h));
+    if (st != VIGEN_SUCCESS) return st;
     /* the new state into w->qx, w->px; q, p change only if it is finite */
     double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
     gauss2_nf nf = 0;
@@ -444,26 +515,243 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
         }
         t1 = t0 + h;
     }
-    if (gauss2_nf_add(nf, t1) != 0) {
-        w->stats.failed_steps++;
-        return VIGEN_ENONFINITE;
-    }
-    memcpy(q, qn, n * sizeof(double));
-    memcpy(p, pn, n * sizeof(double));
-    gauss2_commit(w, t, q, p, t1, ct, w->opt.kahan);
-    for (int i = 0; i < 2; i++) {
-        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
-        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
-    }
-    w->hprev = h;
-    w->history = 1;
-    return VIGEN_SUCCESS;
+    return gauss2_accept(w, t, q, p, h, t1, ct, nf);
 }
 
-/* The chosen path: explicit (compensated or not) or implicit. */
+/* ---- mechanical problems: the implicit step in Nystrom form ------------- */
+
+/* Fixed-point iteration on the stage positions: the forces at every stage,
+ * then Q_i <- q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j (one
+ * force per stage and sweep), stopped by vigen_iter_judge on the relative
+ * increment of Q (scale: the largest starting stage position).  v = M^-1 p
+ * is left in w->P[0] for the update. */
+static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
+{
+    const size_t n = gauss2_n(w);
+    const double *const im = w->im;
+    double *const v = w->P[0];
+    const double h2 = h * h;
+    double *const Q1 = w->Q[0];
+    const double *const f1 = w->G[0];
+    double *const Q2 = w->Q[1];
+    const double *const f2 = w->G[1];
+    vigen_iter_monitor mon;
+    unsigned long sweeps = 0;
+    int st;
+    double sq = 0, d;
+    for (size_t k = 0; k < n; k++) {
+        const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+        (void)hv; (void)m;
+        v[k] = vk;
+        const double x1 = f1[k];
+        const double x2 = f2[k];
+        const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+        const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+        Q1[k] = y1;
+        d = gauss2_abs(y1); sq = d > sq ? d : sq;
+        Q2[k] = y2;
+        d = gauss2_abs(y2); sq = d > sq ? d : sq;
+    }
+    if (sq == 0) sq = 1;
+    vigen_iter_start(&mon);
+    for (;;) {
+        gauss2_inc dq = 0;
+        gauss2_force(w, t0 + 0x1.b0cb174df99c7p-3 * h, Q1, w->G[0]);
+        gauss2_force(w, t0 + 0x1.93cd3a2c8198ep-1 * h, Q2, w->G[1]);
+        sweeps++;
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            const double x1 = f1[k];
+            const double x2 = f2[k];
+            const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+            const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            dq = gauss2_inc_add(dq, y1 - Q1[k]);
+            dq = gauss2_inc_add(dq, y2 - Q2[k]);
+            Q1[k] = y1;
+            Q2[k] = y2;
+        }
+        st = vigen_iter_judge(&mon, gauss2_rel(gauss2_inc_value(dq), sq), w->tol, w->opt.max_iter);
+        if (st >= 0) break;
+    }
+    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.last_iterations = sweeps;
+    return st;
+}
+
+/* Simplified Newton on the stage positions:
+ * (I - h^2 (A At) (x) M^-1 J) dQ = Y0 + h^2 (A At) (x) M^-1 f(Q) - Q, with
+ * J the Jacobian of the force at the step's start by forward differences
+ * (vigen_mechanical_jacobian_fd; the LU is of the runtime's 2 s n system,
+ * the momentum rows being the identity). */
+static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
+{
+    const size_t n = gauss2_n(w);
+    const double *const im = w->im;
+    double *const v = w->P[0];
+    const double h2 = h * h;
+    double *const Q1 = w->Q[0];
+    const double *const f1 = w->G[0];
+    double *const Q2 = w->Q[1];
+    const double *const f2 = w->G[1];
+    double *hess = vigen_newton_hessian(w->nw), *rhs = vigen_newton_rhs(w->nw);
+    vigen_iter_monitor mon;
+    unsigned long sweeps = 0;
+    int st;
+    vigen_mechanical_jacobian_fd(&w->mech, im, t0, q, hess, w->fdwork, w->opt.fd_step, &w->stats.dHdq_evals);
+    w->stats.hessian_evals++;
+    vigen_newton_matrix_identity(w->nw);
+    vigen_newton_matrix_block(w->nw, 0, 0, (double)(h2 * 0x1.5555555555555p-5), 0.0);
+    vigen_newton_matrix_block(w->nw, 0, 1, (double)(h2 * (-0x1.3cd3a2c8198e2p-6)), 0.0);
+    vigen_newton_matrix_block(w->nw, 1, 0, (double)(h2 * 0x1.13cd3a2c8198ep-2), 0.0);
+    vigen_newton_matrix_block(w->nw, 1, 1, (double)(h2 * 0x1.5555555555555p-5), 0.0);
+    w->stats.lu_decompositions++;
+    st = vigen_newton_factor(w->nw);
+    if (st != VIGEN_SUCCESS) { w->stats.last_iterations = 0; return st; }
+    {
+        double sq = 0, d;
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+            (void)hv; (void)m;
+            v[k] = vk;
+            const double x1 = f1[k];
+            const double x2 = f2[k];
+            const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+            const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            Q1[k] = y1;
+            d = gauss2_abs(y1); sq = d > sq ? d : sq;
+            Q2[k] = y2;
+            d = gauss2_abs(y2); sq = d > sq ? d : sq;
+        }
+        (void)sq;
+    }
+    vigen_iter_start(&mon);
+    for (;;) {
+        gauss2_inc dq = 0;
+        double sq = 0, d;
+        gauss2_force(w, t0 + 0x1.b0cb174df99c7p-3 * h, Q1, w->G[0]);
+        gauss2_force(w, t0 + 0x1.93cd3a2c8198ep-1 * h, Q2, w->G[1]);
+        sweeps++;
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            const double x1 = f1[k];
+            const double x2 = f2[k];
+            const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+            const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            rhs[0 * n + k] = (double)(y1 - Q1[k]);
+            rhs[2 * n + k] = 0;
+            rhs[1 * n + k] = (double)(y2 - Q2[k]);
+            rhs[3 * n + k] = 0;
+        }
+        st = vigen_newton_solve(w->nw);
+        if (st != VIGEN_SUCCESS) break;
+        for (size_t k = 0; k < n; k++) {
+            d = (double)rhs[0 * n + k];
+            Q1[k] += d;
+            dq = gauss2_inc_add(dq, d);
+            sq = gauss2_max(sq, gauss2_abs(Q1[k]));
+            d = (double)rhs[1 * n + k];
+            Q2[k] += d;
+            dq = gauss2_inc_add(dq, d);
+            sq = gauss2_max(sq, gauss2_abs(Q2[k]));
+        }
+        st = vigen_iter_judge(&mon, gauss2_rel(gauss2_inc_value(dq), sq), w->tol, w->opt.max_iter);
+        if (st >= 0) break;
+    }
+    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.last_iterations = sweeps;
+    return st;
+}
+
+/* The implicit step of a mechanical problem: starting forces, stage solve,
+ * compensated update. */
+GAUSS2_NOINLINE int gauss2_mech_implicit(gauss2_workspace *w, double *t, double *q, double *p, double h)
+{
+    const size_t n = gauss2_n(w);
+    const double t0 = *t;
+    int st;
+    double *const f1 = w->G[0];
+    const double *const fo1 = w->Go[0];
+    double *const f2 = w->G[1];
+    const double *const fo2 = w->Go[1];
+    if (w->history && w->opt.extrapolate) {
+        /* Lagrange extrapolation of the previous step's stage forces, as
+         * for the gradients of gauss2_implicit. */
+        const double r = h / w->hprev;
+        const double x1 = 1 + 0x1.b0cb174df99c7p-3 * r;
+        const double x2 = 1 + 0x1.93cd3a2c8198ep-1 * r;
+        const double w1_1 = (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
+        const double w1_2 = (x1 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
+        const double w2_1 = (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
+        const double w2_2 = (x2 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
+        if (w->opt.start_force) {
+            /* with the force at (t0, q), the end of the previous step, as
+             * one more node (1, in units of the previous step): degree s */
+            double *const fe = w->F[0];
+            const double u1_1 = w1_1 * (x1 - 1) * (-0x1.4498517a7b356p+0);
+            const double u1_2 = w1_2 * (x1 - 1) * (-0x1.2ed9eba16132bp+2);
+            const double u1_e = (x1 - 0x1.b0cb174df99c7p-3) * (-0x1.4498517a7b356p+0) * (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.2ed9eba16132bp+2);
+            const double u2_1 = w2_1 * (x2 - 1) * (-0x1.4498517a7b356p+0);
+            const double u2_2 = w2_2 * (x2 - 1) * (-0x1.2ed9eba16132bp+2);
+            const double u2_e = (x2 - 0x1.b0cb174df99c7p-3) * (-0x1.4498517a7b356p+0) * (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.2ed9eba16132bp+2);
+            gauss2_force(w, t0, q, fe);
+            w->stats.dHdq_evals++;
+            for (size_t k = 0; k < n; k++) {
+                f1[k] = u1_1 * fo1[k] + u1_2 * fo2[k] + u1_e * fe[k];
+                f2[k] = u2_1 * fo1[k] + u2_2 * fo2[k] + u2_e * fe[k];
+            }
+        } else {
+            for (size_t k = 0; k < n; k++) {
+                f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
+                f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+            }
+        }
+    } else {
+        /* Start from the force at (t, q) at every stage. */
+        gauss2_force(w, t0, q, f1);
+        w->stats.dHdq_evals++;
+        memcpy(f2, f1, n * sizeof(double));
+    }
+    st = gauss2_solved(w, w->nw ? gauss2_mech_newton(w, t0, q, p, h) : gauss2_mech_fixed_point(w, t0, q, p, h));
+    if (st != VIGEN_SUCCESS) return st;
+    /* the new state into w->qx, w->px; q, p change only if it is finite */
+    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    const double *const im = w->im, *const v = w->P[0];
+    const double h2 = h * h;
+    gauss2_nf nf = 0;
+    if (w->opt.kahan) {
+        const double *const cq = w->cq, *const cp = w->cp;
+        double *const cqn = w->cqn, *const cpn = w->cpn;
+        for (size_t k = 0; k < n; k++) {
+            const double hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            qn[k] = vigen_twosum_next(q[k], hv + m * (0x1.93cd3a2c8198ep-2 * f1[k] + 0x1.b0cb174df99c7p-4 * f2[k]), cq[k], &cqn[k]);
+            pn[k] = vigen_twosum_next(p[k], h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]), cp[k], &cpn[k]);
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
+        }
+        t1 = vigen_twosum_update(t0, h, &ct);
+    } else {
+        for (size_t k = 0; k < n; k++) {
+            const double hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            qn[k] = q[k] + hv + m * (0x1.93cd3a2c8198ep-2 * f1[k] + 0x1.b0cb174df99c7p-4 * f2[k]);
+            pn[k] = p[k] + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
+        }
+        t1 = t0 + h;
+    }
+    return gauss2_accept(w, t, q, p, h, t1, ct, nf);
+}
+
+/* The chosen path: explicit (compensated or not) or implicit, for any H or
+ * for a mechanical problem. */
 static inline int gauss2_dispatch(gauss2_workspace *w, double *t, double *q, double *p, double h)
 {
-    return gauss2_implicit(w, t, q, p, h);
+    switch (w->path) {
+    case 3: return gauss2_mech_implicit(w, t, q, p, h);
+    default: return gauss2_implicit(w, t, q, p, h);
+    }
 }
 
 /* The unusual cases, out of line: t or h not finite, t + h overflowing, h

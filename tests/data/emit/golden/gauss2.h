@@ -7,7 +7,13 @@
  *
  * API (see <vigen/runtime.h> for types, status codes and semantics):
  *   gauss2_alloc(sys, opt)  workspace for the problem sys; opt NULL = defaults;
- *                           NULL on invalid arguments or out of memory
+ *                           NULL on invalid arguments, a dimension other than
+ *                           GAUSS2_DIM (when not 0), or out of memory
+ *   gauss2_alloc_mechanical(sys, opt)  the same for H = 1/2 p^T M^-1 p + V(t, q)
+ *                           given by its force f = -dV/dq: stepped in Nystrom
+ *                           form, forces counted in dHdq_evals
+ *   gauss2_dim()            GAUSS2_DIM: the only dimension the workspace takes,
+ *                           0 for any (emitted with --dim N: N)
  *   gauss2_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status,
  *                           t, q, p unchanged on failure (VIGEN_EINVAL for t,
  *                           h or t + h not finite; VIGEN_ENONFINITE for a NaN
@@ -30,10 +36,13 @@ extern "C" {
 #define GAUSS2_STAGES 2
 #define GAUSS2_ORDER 4
 #define GAUSS2_EXPLICIT_SEPARABLE 0
+#define GAUSS2_DIM 0
 
 typedef struct gauss2_workspace gauss2_workspace;
 
 gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt);
+gauss2_workspace *gauss2_alloc_mechanical(const vigen_mechanical *sys, const vigen_solver_options *opt);
+size_t gauss2_dim(void);
 int gauss2_step(gauss2_workspace *w, double *t, double *q, double *p, double h);
 void gauss2_reset(gauss2_workspace *w);
 const vigen_stats *gauss2_stats(const gauss2_workspace *w);

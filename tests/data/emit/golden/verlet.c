@@ -19,10 +19,19 @@
  * Stage equations (s = 2), with F_i = dH/dp and G_i = dH/dq at stage i:
  *   Q_i = q + h sum_j a_ij F_j,   P_i = p - h sum_j at_ij G_j,
  *   q1 = q + h sum_i b_i F_i,     p1 = p - h sum_i bt_i G_i.
+ * A mechanical problem (verlet_alloc_mechanical: H = 1/2 p^T M^-1 p + V, the
+ * force f = -dV/dq given) is stepped in Nystrom form, with the force f_i at
+ * stage i and v = M^-1 p:
+ *   Q_i = q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j,
+ *   q1 = q + h (sum_i b_i) v + h^2 M^-1 sum_j (b^T At)_j f_j,
+ *   p1 = p + h sum_i bt_i f_i,
+ * the same equations with F_j = M^-1 P_j and G_j = -f_j substituted; forces
+ * are counted in dHdq_evals, dHdp is never called.
  * Define VERLET_DIRECT_DHDQ / VERLET_DIRECT_DHDP as the names of
- * functions with the signature of vigen_grad_fn before including this
- * file in your own translation unit to call them directly (no function
- * pointer); the gradients in sys are then ignored.
+ * functions with the signature of vigen_grad_fn (VERLET_DIRECT_FORCE:
+ * vigen_force_fn) before including this file in your own translation
+ * unit to call them directly (no function pointer); the functions in sys are
+ * then ignored.
  */
 #include <float.h>
 #include <math.h>
@@ -45,6 +54,12 @@
 #else
 #define verlet_dHdp(w, t, q, p, out) (w)->sys.dHdp((t), (q), (p), (out), (w)->sys.ctx)
 #endif
+#ifdef VERLET_DIRECT_FORCE
+#define verlet_force(w, t, q, out) VERLET_DIRECT_FORCE((t), (q), (out), (w)->mech.ctx)
+#else
+#define verlet_force(w, t, q, out) (w)->mech.force((t), (q), (out), (w)->mech.ctx)
+#endif
+#define verlet_n(w) ((w)->n)
 #if defined(__GNUC__)
 #define VERLET_INLINE static inline __attribute__((always_inline))
 #define VERLET_NOINLINE static __attribute__((noinline))
@@ -54,10 +69,12 @@
 #endif
 
 /* Number of arrays of length dim in the workspace block. */
-#define VERLET_NARRAYS 28
+#define VERLET_NARRAYS 29
 
 struct verlet_workspace {
     vigen_hamiltonian sys;
+    vigen_mechanical mech;     /* the problem of verlet_alloc_mechanical */
+    double *im;                    /* its diagonal of M^-1 (ones for the identity) */
     vigen_solver_options opt;
     vigen_stats stats;
     size_t n;
@@ -77,7 +94,8 @@ struct verlet_workspace {
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
     double *x[4];              /* explicit path: stage values and gradients */
     int fsal;                       /* cached first-same-as-last gradients valid */
-    int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain */
+    int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain;
+                                       3, 4, 5 the same for a mechanical problem */
 };
 
 static inline double verlet_abs(double x) { return fabs(x); }
@@ -158,20 +176,21 @@ static inline int verlet_moved(const verlet_workspace *w, double t, const double
 typedef uint64_t verlet_nf;
 static inline verlet_nf verlet_nf_add(verlet_nf a, double x) { return a | verlet_bits(x - x); }
 
-verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
+/* The workspace for dimension n, path chosen from the tableau, the options
+ * and whether H is separable; NULL for a dimension other than
+ * VERLET_DIM (when not 0), invalid options or no memory. */
+static verlet_workspace *verlet_alloc_dim(size_t n, int separable, int mech, const vigen_solver_options *opt)
 {
-    if (sys == NULL || sys->dim == 0 || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
-    const size_t n = sys->dim;
-    if (n > (size_t)-1 / sizeof(double) / VERLET_NARRAYS) return NULL;
+    if (n == 0 || n > (size_t)-1 / sizeof(double) / VERLET_NARRAYS) return NULL;
     verlet_workspace *w = calloc(1, sizeof *w);
     if (w == NULL) return NULL;
-    w->sys = *sys;
     if (opt) w->opt = *opt;
     else vigen_solver_options_default(&w->opt);
     if (w->opt.max_iter <= 0) w->opt.max_iter = 50;
     if (w->opt.solver != VIGEN_SOLVER_FIXED_POINT && w->opt.solver != VIGEN_SOLVER_NEWTON) { free(w); return NULL; }
     w->tol = w->opt.tol > 0 ? w->opt.tol : vigen_default_tol();
-    w->path = !sys->separable ? 0 : w->opt.kahan ? 1 : 2;
+    w->path = !separable ? 0 : w->opt.kahan ? 1 : 2;
+    if (mech) w->path += 3;
     w->n = n;
     w->mem = calloc(VERLET_NARRAYS * n, sizeof(double));
     if (w->mem == NULL) { free(w); return NULL; }
@@ -191,16 +210,40 @@ verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     w->qx = m; m += n;
     w->px = m; m += n;
     w->fdwork = m; m += 6 * n;
+    w->im = m; m += n;
     for (int i = 0; i < 4; i++) { w->x[i] = m; m += n; }
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
         w->nw = vigen_newton_alloc(2, n);
-        if (w->nw == NULL) { free(w->mem); free(w); return NULL; }
+        if (w->nw == NULL) { verlet_free(w); return NULL; }
     }
     w->t_next = 0;
     w->q_next0 = w->p_next0 = 0;
     verlet_reset(w);
     return w;
 }
+
+verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt)
+{
+    if (sys == NULL || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
+    verlet_workspace *w = verlet_alloc_dim(sys->dim, sys->separable, 0, opt);
+    if (w) w->sys = *sys;
+    return w;
+}
+
+verlet_workspace *verlet_alloc_mechanical(const vigen_mechanical *sys, const vigen_solver_options *opt)
+{
+    if (sys == NULL || sys->force == NULL) return NULL;
+    verlet_workspace *w = verlet_alloc_dim(sys->dim, 1, 1, opt);
+    if (w == NULL) return NULL;
+    w->mech = *sys;
+    w->mech.inv_mass = w->im;
+    w->sys.dim = sys->dim;
+    w->sys.ctx = sys->ctx;
+    for (size_t k = 0; k < sys->dim; k++) w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+    return w;
+}
+
+size_t verlet_dim(void) { return VERLET_DIM; }
 
 void verlet_free(verlet_workspace *w)
 {
@@ -234,7 +277,7 @@ static void verlet_sweep(verlet_workspace *w, double t0, double h)
  * starting Q, P come from the starting gradients in F, G. */
 static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h)
 {
-    const size_t n = w->n;
+    const size_t n = verlet_n(w);
     double *const Q1 = w->Q[0], *const P1 = w->P[0];
     const double *const F1 = w->F[0];
     const double *const G1 = w->G[0];
@@ -313,7 +356,7 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
  * at the step's start (user-supplied or finite differences), GSL LU. */
 static int verlet_newton(verlet_workspace *w, double t0, const double *q, const double *p, double h)
 {
-    const size_t n = w->n;
+    const size_t n = verlet_n(w);
     double *const Q1 = w->Q[0], *const P1 = w->P[0];
     const double *const F1 = w->F[0];
     const double *const G1 = w->G[0];
@@ -382,10 +425,42 @@ static int verlet_newton(verlet_workspace *w, double t0, const double *q, const 
     return st;
 }
 
+/* The statistics of a stage solve that returned st; st again. */
+static inline int verlet_solved(verlet_workspace *w, int st)
+{
+    w->stats.iterations += w->stats.last_iterations;
+    if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
+    if (st != VIGEN_SUCCESS) w->stats.failed_steps++;
+    return st;
+}
+
+/* The end of an implicit step whose new state is in w->qx, w->px: taken
+ * over if it is finite (nf, see verlet_nf_add), the stage gradients kept
+ * for the next step's start; otherwise VIGEN_ENONFINITE, nothing changed. */
+static int verlet_accept(verlet_workspace *w, double *t, double *q, double *p, double h, double t1, double ct,
+                         verlet_nf nf)
+{
+    const size_t n = verlet_n(w);
+    if (verlet_nf_add(nf, t1) != 0) {
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    memcpy(q, w->qx, n * sizeof(double));
+    memcpy(p, w->px, n * sizeof(double));
+    verlet_commit(w, t, q, p, t1, ct, w->opt.kahan);
+    for (int i = 0; i < 2; i++) {
+        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
+        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
+    }
+    w->hprev = h;
+    w->history = 1;
+    return VIGEN_SUCCESS;
+}
+
 /* The implicit step: starting values, stage solve, compensated update. */
 VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    const size_t n = w->n;
+    const size_t n = verlet_n(w);
     const double t0 = *t;
     int st;
     double *const F1 = w->F[0], *const G1 = w->G[0];
@@ -417,13 +492,8 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
         memcpy(F2, F1, n * sizeof(double));
         memcpy(G2, G1, n * sizeof(double));
     }
-    st = w->nw ? verlet_newton(w, t0, q, p, h) : verlet_fixed_point(w, t0, q, p, h);
-    w->stats.iterations += w->stats.last_iterations;
-    if (w->stats.last_iterations > w->stats.max_iterations) w->stats.max_iterations = w->stats.last_iterations;
-    if (st != VIGEN_SUCCESS) {
-        w->stats.failed_steps++;
-        return st;
-    }
+    st = verlet_solved(w, w->nw ? verlet_newton(w, t0, q, p, h) : verlet_fixed_point(w, t0, q, p, h));
+    if (st != VIGEN_SUCCESS) return st;
     /* the new state into w->qx, w->px; q, p change only if it is finite */
     double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
     verlet_nf nf = 0;
@@ -444,29 +514,217 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
         }
         t1 = t0 + h;
     }
-    if (verlet_nf_add(nf, t1) != 0) {
-        w->stats.failed_steps++;
-        return VIGEN_ENONFINITE;
+    return verlet_accept(w, t, q, p, h, t1, ct, nf);
+}
+
+/* ---- mechanical problems: the implicit step in Nystrom form ------------- */
+
+/* Fixed-point iteration on the stage positions: the forces at every stage,
+ * then Q_i <- q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j (one
+ * force per stage and sweep), stopped by vigen_iter_judge on the relative
+ * increment of Q (scale: the largest starting stage position).  v = M^-1 p
+ * is left in w->P[0] for the update. */
+static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h)
+{
+    const size_t n = verlet_n(w);
+    const double *const im = w->im;
+    double *const v = w->P[0];
+    const double h2 = h * h;
+    double *const Q1 = w->Q[0];
+    const double *const f1 = w->G[0];
+    double *const Q2 = w->Q[1];
+    vigen_iter_monitor mon;
+    unsigned long sweeps = 0;
+    int st;
+    double sq = 0, d;
+    for (size_t k = 0; k < n; k++) {
+        const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+        (void)hv; (void)m;
+        v[k] = vk;
+        const double x1 = f1[k];
+        const double y1 = qk + 0;
+        const double y2 = qk + hv + m * (0x1p-1 * x1);
+        Q1[k] = y1;
+        d = verlet_abs(y1); sq = d > sq ? d : sq;
+        Q2[k] = y2;
+        d = verlet_abs(y2); sq = d > sq ? d : sq;
     }
-    memcpy(q, qn, n * sizeof(double));
-    memcpy(p, pn, n * sizeof(double));
-    verlet_commit(w, t, q, p, t1, ct, w->opt.kahan);
-    for (int i = 0; i < 2; i++) {
-        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
-        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
+    if (sq == 0) sq = 1;
+    vigen_iter_start(&mon);
+    for (;;) {
+        verlet_inc dq = 0;
+        verlet_force(w, t0, Q1, w->G[0]);
+        verlet_force(w, t0 + h, Q2, w->G[1]);
+        sweeps++;
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            const double x1 = f1[k];
+            const double y1 = qk + 0;
+            const double y2 = qk + hv + m * (0x1p-1 * x1);
+            dq = verlet_inc_add(dq, y1 - Q1[k]);
+            dq = verlet_inc_add(dq, y2 - Q2[k]);
+            Q1[k] = y1;
+            Q2[k] = y2;
+        }
+        st = vigen_iter_judge(&mon, verlet_rel(verlet_inc_value(dq), sq), w->tol, w->opt.max_iter);
+        if (st >= 0) break;
     }
-    w->hprev = h;
-    w->history = 1;
-    return VIGEN_SUCCESS;
+    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.last_iterations = sweeps;
+    return st;
+}
+
+/* Simplified Newton on the stage positions:
+ * (I - h^2 (A At) (x) M^-1 J) dQ = Y0 + h^2 (A At) (x) M^-1 f(Q) - Q, with
+ * J the Jacobian of the force at the step's start by forward differences
+ * (vigen_mechanical_jacobian_fd; the LU is of the runtime's 2 s n system,
+ * the momentum rows being the identity). */
+static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, const double *p, double h)
+{
+    const size_t n = verlet_n(w);
+    const double *const im = w->im;
+    double *const v = w->P[0];
+    const double h2 = h * h;
+    double *const Q1 = w->Q[0];
+    const double *const f1 = w->G[0];
+    double *const Q2 = w->Q[1];
+    double *hess = vigen_newton_hessian(w->nw), *rhs = vigen_newton_rhs(w->nw);
+    vigen_iter_monitor mon;
+    unsigned long sweeps = 0;
+    int st;
+    vigen_mechanical_jacobian_fd(&w->mech, im, t0, q, hess, w->fdwork, w->opt.fd_step, &w->stats.dHdq_evals);
+    w->stats.hessian_evals++;
+    vigen_newton_matrix_identity(w->nw);
+    vigen_newton_matrix_block(w->nw, 1, 0, (double)(h2 * 0x1p-1), 0.0);
+    w->stats.lu_decompositions++;
+    st = vigen_newton_factor(w->nw);
+    if (st != VIGEN_SUCCESS) { w->stats.last_iterations = 0; return st; }
+    {
+        double sq = 0, d;
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+            (void)hv; (void)m;
+            v[k] = vk;
+            const double x1 = f1[k];
+            const double y1 = qk + 0;
+            const double y2 = qk + hv + m * (0x1p-1 * x1);
+            Q1[k] = y1;
+            d = verlet_abs(y1); sq = d > sq ? d : sq;
+            Q2[k] = y2;
+            d = verlet_abs(y2); sq = d > sq ? d : sq;
+        }
+        (void)sq;
+    }
+    vigen_iter_start(&mon);
+    for (;;) {
+        verlet_inc dq = 0;
+        double sq = 0, d;
+        verlet_force(w, t0, Q1, w->G[0]);
+        verlet_force(w, t0 + h, Q2, w->G[1]);
+        sweeps++;
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            const double x1 = f1[k];
+            const double y1 = qk + 0;
+            const double y2 = qk + hv + m * (0x1p-1 * x1);
+            rhs[0 * n + k] = (double)(y1 - Q1[k]);
+            rhs[2 * n + k] = 0;
+            rhs[1 * n + k] = (double)(y2 - Q2[k]);
+            rhs[3 * n + k] = 0;
+        }
+        st = vigen_newton_solve(w->nw);
+        if (st != VIGEN_SUCCESS) break;
+        for (size_t k = 0; k < n; k++) {
+            d = (double)rhs[0 * n + k];
+            Q1[k] += d;
+            dq = verlet_inc_add(dq, d);
+            sq = verlet_max(sq, verlet_abs(Q1[k]));
+            d = (double)rhs[1 * n + k];
+            Q2[k] += d;
+            dq = verlet_inc_add(dq, d);
+            sq = verlet_max(sq, verlet_abs(Q2[k]));
+        }
+        st = vigen_iter_judge(&mon, verlet_rel(verlet_inc_value(dq), sq), w->tol, w->opt.max_iter);
+        if (st >= 0) break;
+    }
+    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.last_iterations = sweeps;
+    return st;
+}
+
+/* The implicit step of a mechanical problem: starting forces, stage solve,
+ * compensated update. */
+VERLET_NOINLINE int verlet_mech_implicit(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    const size_t n = verlet_n(w);
+    const double t0 = *t;
+    int st;
+    double *const f1 = w->G[0];
+    const double *const fo1 = w->Go[0];
+    double *const f2 = w->G[1];
+    const double *const fo2 = w->Go[1];
+    if (w->history && w->opt.extrapolate) {
+        /* Lagrange extrapolation of the previous step's stage forces, as
+         * for the gradients of verlet_implicit. */
+        const double r = h / w->hprev;
+        const double x1 = 1;
+        const double x2 = 1 + r;
+        const double w1_1 = (x1 - 0x1p+0) * (-0x1p+0);
+        const double w1_2 = (x1 - 0) * 0x1p+0;
+        const double w2_1 = (x2 - 0x1p+0) * (-0x1p+0);
+        const double w2_2 = (x2 - 0) * 0x1p+0;
+        for (size_t k = 0; k < n; k++) {
+            f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
+            f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+        }
+    } else {
+        /* Start from the force at (t, q) at every stage. */
+        verlet_force(w, t0, q, f1);
+        w->stats.dHdq_evals++;
+        memcpy(f2, f1, n * sizeof(double));
+    }
+    st = verlet_solved(w, w->nw ? verlet_mech_newton(w, t0, q, p, h) : verlet_mech_fixed_point(w, t0, q, p, h));
+    if (st != VIGEN_SUCCESS) return st;
+    /* the new state into w->qx, w->px; q, p change only if it is finite */
+    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    const double *const im = w->im, *const v = w->P[0];
+    const double h2 = h * h;
+    verlet_nf nf = 0;
+    if (w->opt.kahan) {
+        const double *const cq = w->cq, *const cp = w->cp;
+        double *const cqn = w->cqn, *const cpn = w->cpn;
+        for (size_t k = 0; k < n; k++) {
+            const double hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            qn[k] = vigen_twosum_next(q[k], hv + m * (0x1p-1 * f1[k]), cq[k], &cqn[k]);
+            pn[k] = vigen_twosum_next(p[k], h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]), cp[k], &cpn[k]);
+            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
+        }
+        t1 = vigen_twosum_update(t0, h, &ct);
+    } else {
+        for (size_t k = 0; k < n; k++) {
+            const double hv = h * v[k], m = h2 * im[k];
+            (void)hv; (void)m;
+            qn[k] = q[k] + hv + m * (0x1p-1 * f1[k]);
+            pn[k] = p[k] + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
+        }
+        t1 = t0 + h;
+    }
+    return verlet_accept(w, t, q, p, h, t1, ct, nf);
 }
 
 /* The explicit path (separable H): 1 dH/dp and 1 dH/dq
- * evaluations per step, first-same-as-last gradients reused.  Inlined twice,
- * with kahan = 1 and 0 (verlet_explicit_kahan and _plain), so that neither
- * copy tests the option. */
-VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict q, double *restrict p, double h, const int kahan)
+ * evaluations per step, first-same-as-last gradients reused; for a mechanical
+ * problem (mech) 1 force evaluations and M^-1 p inline.  Inlined four
+ * times, with kahan = 1 and 0 and mech = 1 and 0 (verlet_explicit_kahan,
+ * _plain, _mech_kahan, _mech_plain), so that no copy tests the options. */
+VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restrict q, double *restrict p, double h, const int kahan,
+                                   const int mech)
 {
-    const size_t n = w->n;
+    const size_t n = verlet_n(w);
     const double t0 = *t;
     double t1, ct = w->ct;
     verlet_nf nf = 0;   /* see verlet_nf_add */
@@ -487,45 +745,90 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     if (kahan) t1 = vigen_twosum_update(t0, h, &ct);
     else t1 = t0 + h;
     (void)qs; (void)ps; (void)cq; (void)cp; (void)cq0; (void)cp0;
-    if (w->fsal) {
-        w->stats.fsal_reuses++;
-    } else {
-        verlet_dHdq(w, t0, q, p, X0);
+    if (mech) {
+        const double *restrict const im = w->im;
+        (void)im;
+        if (w->fsal) {
+            w->stats.fsal_reuses++;
+        } else {
+            verlet_force(w, t0, q, X0);
+            w->stats.dHdq_evals++;
+        }
+        for (size_t k = 0; k < n; k++) X1[k] = p[k] + (0x1p-1 * h) * X0[k];
+        for (size_t k = 0; k < n; k++) X2[k] = im[k] * X1[k];
+        if (kahan) {
+            for (size_t k = 0; k < n; k++) {
+                const double x = q[k];
+                qs[k] = x;
+                q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+                nf = verlet_nf_add(nf, q[k]);
+            }
+        } else {
+            for (size_t k = 0; k < n; k++) {
+                const double x = q[k];
+                qs[k] = x;
+                q[k] = x + h * X2[k];
+                nf = verlet_nf_add(nf, q[k]);
+            }
+        }
+        verlet_force(w, t1, q, X3);
         w->stats.dHdq_evals++;
-    }
-    for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
-    verlet_dHdp(w, t0, q, X1, X2);
-    w->stats.dHdp_evals++;
-    if (kahan) {
-        for (size_t k = 0; k < n; k++) {
-            const double x = q[k];
-            qs[k] = x;
-            q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-            nf = verlet_nf_add(nf, q[k]);
+        if (kahan) {
+            for (size_t k = 0; k < n; k++) {
+                const double x = p[k];
+                ps[k] = x;
+                p[k] = vigen_twosum_next(x, (0x1p-1 * h) * (X0[k] + X3[k]), cp0[k], &cp[k]);
+                nf = verlet_nf_add(nf, p[k]);
+            }
+        } else {
+            for (size_t k = 0; k < n; k++) {
+                const double x = p[k];
+                ps[k] = x;
+                p[k] = x + (0x1p-1 * h) * (X0[k] + X3[k]);
+                nf = verlet_nf_add(nf, p[k]);
+            }
         }
     } else {
-        for (size_t k = 0; k < n; k++) {
-            const double x = q[k];
-            qs[k] = x;
-            q[k] = x + h * X2[k];
-            nf = verlet_nf_add(nf, q[k]);
+        if (w->fsal) {
+            w->stats.fsal_reuses++;
+        } else {
+            verlet_dHdq(w, t0, q, p, X0);
+            w->stats.dHdq_evals++;
         }
-    }
-    verlet_dHdq(w, t1, q, p, X3);
-    w->stats.dHdq_evals++;
-    if (kahan) {
-        for (size_t k = 0; k < n; k++) {
-            const double x = p[k];
-            ps[k] = x;
-            p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
-            nf = verlet_nf_add(nf, p[k]);
+        for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
+        verlet_dHdp(w, t0, q, X1, X2);
+        w->stats.dHdp_evals++;
+        if (kahan) {
+            for (size_t k = 0; k < n; k++) {
+                const double x = q[k];
+                qs[k] = x;
+                q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+                nf = verlet_nf_add(nf, q[k]);
+            }
+        } else {
+            for (size_t k = 0; k < n; k++) {
+                const double x = q[k];
+                qs[k] = x;
+                q[k] = x + h * X2[k];
+                nf = verlet_nf_add(nf, q[k]);
+            }
         }
-    } else {
-        for (size_t k = 0; k < n; k++) {
-            const double x = p[k];
-            ps[k] = x;
-            p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
-            nf = verlet_nf_add(nf, p[k]);
+        verlet_dHdq(w, t1, q, p, X3);
+        w->stats.dHdq_evals++;
+        if (kahan) {
+            for (size_t k = 0; k < n; k++) {
+                const double x = p[k];
+                ps[k] = x;
+                p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
+                nf = verlet_nf_add(nf, p[k]);
+            }
+        } else {
+            for (size_t k = 0; k < n; k++) {
+                const double x = p[k];
+                ps[k] = x;
+                p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
+                nf = verlet_nf_add(nf, p[k]);
+            }
         }
     }
     if (verlet_nf_add(nf, t1) != 0) {
@@ -541,22 +844,36 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     return VIGEN_SUCCESS;
 }
 
-/* The two copies, out of line: verlet_step jumps to one of them. */
+/* The four copies, out of line: verlet_step jumps to one of them. */
 VERLET_NOINLINE int verlet_explicit_kahan(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    return verlet_explicit(w, t, q, p, h, 1);
+    return verlet_explicit(w, t, q, p, h, 1, 0);
 }
 VERLET_NOINLINE int verlet_explicit_plain(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    return verlet_explicit(w, t, q, p, h, 0);
+    return verlet_explicit(w, t, q, p, h, 0, 0);
+}
+VERLET_NOINLINE int verlet_explicit_mech_kahan(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    return verlet_explicit(w, t, q, p, h, 1, 1);
+}
+VERLET_NOINLINE int verlet_explicit_mech_plain(verlet_workspace *w, double *t, double *q, double *p, double h)
+{
+    return verlet_explicit(w, t, q, p, h, 0, 1);
 }
 
-/* The chosen path: explicit (compensated or not) or implicit. */
+/* The chosen path: explicit (compensated or not) or implicit, for any H or
+ * for a mechanical problem. */
 static inline int verlet_dispatch(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
-    if (w->path == 1) return verlet_explicit_kahan(w, t, q, p, h);
-    if (w->path == 2) return verlet_explicit_plain(w, t, q, p, h);
-    return verlet_implicit(w, t, q, p, h);
+    switch (w->path) {
+    case 1: return verlet_explicit_kahan(w, t, q, p, h);
+    case 2: return verlet_explicit_plain(w, t, q, p, h);
+    case 4: return verlet_explicit_mech_kahan(w, t, q, p, h);
+    case 5: return verlet_explicit_mech_plain(w, t, q, p, h);
+    case 3: return verlet_mech_implicit(w, t, q, p, h);
+    default: return verlet_implicit(w, t, q, p, h);
+    }
 }
 
 /* The unusual cases, out of line: t or h not finite, t + h overflowing, h

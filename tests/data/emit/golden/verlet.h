@@ -7,7 +7,13 @@
  *
  * API (see <vigen/runtime.h> for types, status codes and semantics):
  *   verlet_alloc(sys, opt)  workspace for the problem sys; opt NULL = defaults;
- *                           NULL on invalid arguments or out of memory
+ *                           NULL on invalid arguments, a dimension other than
+ *                           VERLET_DIM (when not 0), or out of memory
+ *   verlet_alloc_mechanical(sys, opt)  the same for H = 1/2 p^T M^-1 p + V(t, q)
+ *                           given by its force f = -dV/dq: stepped in Nystrom
+ *                           form, forces counted in dHdq_evals
+ *   verlet_dim()            VERLET_DIM: the only dimension the workspace takes,
+ *                           0 for any (emitted with --dim N: N)
  *   verlet_step(w, &t, q, p, h)  one step of size h; 0 or a vigen status,
  *                           t, q, p unchanged on failure (VIGEN_EINVAL for t,
  *                           h or t + h not finite; VIGEN_ENONFINITE for a NaN
@@ -30,10 +36,13 @@ extern "C" {
 #define VERLET_STAGES 2
 #define VERLET_ORDER 2
 #define VERLET_EXPLICIT_SEPARABLE 1
+#define VERLET_DIM 0
 
 typedef struct verlet_workspace verlet_workspace;
 
 verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_options *opt);
+verlet_workspace *verlet_alloc_mechanical(const vigen_mechanical *sys, const vigen_solver_options *opt);
+size_t verlet_dim(void);
 int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h);
 void verlet_reset(verlet_workspace *w);
 const vigen_stats *verlet_stats(const verlet_workspace *w);
