@@ -4,7 +4,7 @@
 #
 #   vigen_add_stepper(TARGET <target> TABLEAU <file.lua> NAME <name>
 #                     [REAL double|long-double|float128]
-#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT])
+#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT] [DIM <n>])
 #   vigen_add_stepper(TARGET <target> SPEC <spec.lua> [DIGITS <n>] NAME <name> ...)
 #
 # With SPEC, a first rule runs
@@ -24,11 +24,13 @@
 # source directory; exactly one of them is given.  NAME must be a C
 # identifier (it prefixes every emitted symbol) and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
 # REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
-# decimal entries as written when they have too few digits for REAL).
+# decimal entries as written when they have too few digits for REAL).  DIM
+# passes --dim N (a static dimension: NAME_alloc and NAME_alloc_mechanical
+# refuse problems of another dimension).
 # Compile the program without -ffast-math (the emitted code refuses it).
 
 function(vigen_add_stepper)
-  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR" "")
+  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR;DIM" "")
   if(VAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "vigen_add_stepper: unknown arguments: ${VAS_UNPARSED_ARGUMENTS}")
   endif()
@@ -99,6 +101,12 @@ function(vigen_add_stepper)
   set(extra)
   if(VAS_ALLOW_INEXACT)
     list(APPEND extra --allow-inexact)
+  endif()
+  if(DEFINED VAS_DIM)
+    if(NOT VAS_DIM MATCHES "^[1-9][0-9]*$")
+      message(FATAL_ERROR "vigen_add_stepper: DIM must be a positive integer, not '${VAS_DIM}'")
+    endif()
+    list(APPEND extra --dim ${VAS_DIM})
   endif()
   set(deps "${tableau}" vigen::vigen)
   if(vigen_TEMPLATE_DIR)

@@ -154,6 +154,8 @@ check 'bad_call TARGET s SPEC a.lua DIGITS 0 NAME s && grep -q "DIGITS must be a
     "DIGITS 0 is refused"
 check 'bad_call TARGET s SPEC a.lua DIGITS 3x NAME s && grep -q "DIGITS must be an integer from 1 to 100000, not .3x." "$T/log"' \
     "DIGITS 3x is refused"
+check 'bad_call TARGET s TABLEAU a.lua NAME s DIM 0 && grep -q "DIM must be a positive integer, not .0." "$T/log"' \
+    "DIM 0 is refused"
 
 [ $fail -eq 0 ] && echo "ok: examples (oss dE $e10, Jupiter $P d; fput dE $e400; vortices $r200; charged dE $e2)"
 exit $fail

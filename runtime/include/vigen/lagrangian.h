@@ -16,8 +16,8 @@
  * by Newton's method (GSL LU) with the round-off-aware stopping rule of the
  * runtime; a solve that does not converge is an error, never a result.
  * Statistics use vigen_stats: dHdq_evals counts dL/dq calls, dHdp_evals dL/dv
- * calls, hessian_evals Jacobians (user second derivatives or finite
- * differences), lu_decompositions their factorisations, iterations Newton
+ * calls (and, for vigen_midpoint_vi_step, calls of g), hessian_evals
+ * Jacobians (user second derivatives or finite differences), lu_decompositions their factorisations, iterations Newton
  * iterations; steps and failed_steps as for the SPRK steppers (a two-step
  * call is one step); fsal_reuses stays 0.
  *
