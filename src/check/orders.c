@@ -76,6 +76,33 @@ static void orders_finish(vigen_check_orders *o, int P)
     o->level.too_short = o->level.undecided && o->undecided[bad] > 0 && o->undecided_short[bad] == o->undecided[bad];
 }
 
+/* sigma of a tree whose children are ids[0..k-1] (nonincreasing): the order
+ * of its symmetry group, prod over distinct children u of m_u! sigma(u)^m_u
+ * (HLW GNI sec. III.1.2); at most (n - 1)! for order n <= 12. */
+static ulong forest_sigma(const ulong *sigma, const slong *ids, int k)
+{
+    ulong g = 1;
+    for (int d = 0; d < k;) {
+        int m = 1;
+        while (d + m < k && ids[d + m] == ids[d]) m++;
+        for (int q = 1; q <= m; q++) g *= (ulong)q * sigma[ids[d]];
+        d += m;
+    }
+    return g;
+}
+
+/* A Nystrom tree (H = p^T M^-1 p / 2 + V(q)): alternating, and a black vertex
+ * (dH/dp, linear in p: its second and higher derivatives vanish) has at most
+ * one child, white; a white vertex (-dV/dq, a function of q only) has black
+ * children only.  The elementary differentials of the other trees vanish. */
+static int forest_nystrom(const vigen_treeset *ts, const unsigned char *nys, int colour, const slong *ids, int k)
+{
+    if (colour == VIGEN_TREE_BLACK && k > 1) return 0;
+    for (int d = 0; d < k; d++)
+        if (!nys[ids[d]] || ts->trees[ids[d]].colour == colour) return 0;
+    return 1;
+}
+
 /* Every order condition of order 1..P.  Phi(F) of a forest F is the
  * componentwise product over its trees u of w(u) = M_u Phi(u) (M = A for a
  * black u, At for a white one); the condition of (colour, F) is
@@ -114,6 +141,19 @@ int chk_orders(chk_round *rd, vigen_error *err)
             }
 
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_reset(&rep->orders[f]);
+    for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++)
+        for (int n = 0; n <= VIGEN_TREE_MAX_ORDER; n++) arb_zero(rep->error_constant[f].sumsq[n]);
+    /* per stored tree: sigma (its symmetry) and whether it is a Nystrom tree */
+    slong nst = ts.n > 0 ? ts.n : 1;
+    ulong *sigma = flint_malloc(sizeof(ulong) * (size_t)nst);
+    unsigned char *nys = flint_malloc((size_t)nst);
+    for (slong u = 0; u < ts.n; u++) {
+        const vigen_tree *tu = ts.trees + u;
+        sigma[u] = forest_sigma(sigma, vigen_treeset_children(&ts, u), tu->nchildren);
+        nys[u] = forest_nystrom(&ts, nys, tu->colour, vigen_treeset_children(&ts, u), tu->nchildren);
+    }
+    arb_t e;
+    arb_init(e);
     cx->section = VIGEN_CHECK_SECT_ORDER;
 
     for (int n = 1; n <= P; n++) {
@@ -153,9 +193,22 @@ int chk_orders(chk_round *rd, vigen_error *err)
             ulong gamma = vigen_forest_tree_gamma(&ts, ids, k);
             arb_one(inv);
             arb_div_ui(inv, inv, gamma, prec);
+            ulong sg = forest_sigma(sigma, ids, k);
             for (int c = 0; c < 2; c++) {
                 arb_sub(r, val[c], inv, prec);
                 int flags = vigen_forest_tree_flags(&ts, c, ids, k);
+                int ny = forest_nystrom(&ts, nys, c, ids, k);
+                /* the principal error coefficient (Phi - 1/gamma)/sigma, squared */
+                arb_div_ui(e, r, sg, prec);
+                arb_sqr(e, e, prec);
+                arb_add(rep->error_constant[VIGEN_CHECK_EC_GENERAL].sumsq[n],
+                        rep->error_constant[VIGEN_CHECK_EC_GENERAL].sumsq[n], e, prec);
+                if (flags & VIGEN_TREE_SEPARABLE)
+                    arb_add(rep->error_constant[VIGEN_CHECK_EC_SEPARABLE].sumsq[n],
+                            rep->error_constant[VIGEN_CHECK_EC_SEPARABLE].sumsq[n], e, prec);
+                if (ny)
+                    arb_add(rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n],
+                            rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n], e, prec);
                 /* a monochromatic tree involves one part only */
                 int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
                 chk_ctx_shape(cx, n, gamma, n, it.index, c);   /* b Phi has n factors; 1/gamma */
@@ -167,6 +220,7 @@ int chk_orders(chk_round *rd, vigen_error *err)
                 if (flags & VIGEN_TREE_MONO)
                     orders_record(&rep->orders[c == VIGEN_TREE_BLACK ? VIGEN_CHECK_A_ALONE : VIGEN_CHECK_AT_ALONE],
                                   n, st, data, &ts, c, ids, k, val[c], inv);
+                if (ny) orders_record(&rep->orders[VIGEN_CHECK_NYSTROM], n, st, data, &ts, c, ids, k, val[c], inv);
             }
             arb_clear(val[0]);
             arb_clear(val[1]);
@@ -181,6 +235,9 @@ int chk_orders(chk_round *rd, vigen_error *err)
     }
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_finish(&rep->orders[f], P);
 
+    arb_clear(e);
+    flint_free(sigma);
+    flint_free(nys);
     arb_clear(v);
     arb_clear(r);
     arb_clear(inv);

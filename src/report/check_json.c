@@ -56,7 +56,7 @@ static void json_bad_tree(FILE *out, const vigen_check_orders *o, slong prec)
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
 {
     static const char *const kinds[] = {"rowsum", "symplectic", "claim", "against"};
-    static const char *const family_keys[] = {"general", "separable", "A", "At"};
+    static const char *const family_keys[] = {"general", "separable", "A", "At", "nystrom"};
     const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
     fputs("{\"file\": ", out);
     if (rep->path) vigen_json_write_string(out, rep->path); else fputs("null", out);
@@ -158,9 +158,11 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
     if (rep->claim_order >= 0) {
         fprintf(out, "\"order\": {\"claimed\": %d, \"holds\": ", rep->claim_order);
         json_tri(out, rep->claim_order_status);
-        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s, \"within_data\": %s, \"data_too_short\": %s}",
+        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s, \"within_data\": %s, \"data_too_short\": %s, "
+                     "\"by_simplifying_assumptions\": %s}",
                 rep->claim_order_separable ? "true" : "false", rep->claim_order_beyond ? "true" : "false",
-                rep->claim_order_within_data ? "true" : "false", rep->claim_order_too_short ? "true" : "false");
+                rep->claim_order_within_data ? "true" : "false", rep->claim_order_too_short ? "true" : "false",
+                rep->claim_order_theorem ? "true" : "false");
         first = 0;
     }
     if (rep->claim_symplectic >= 0) {
