@@ -6,6 +6,7 @@
 #include "vigen/check.h"
 #include "check/balls.h"
 #include "report/json.h"
+#include "report/check_figures.h"
 
 static void json_ball(FILE *out, const arb_t x, slong prec)
 {
@@ -190,8 +191,9 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         vigen_json_write_string(out, p->message ? p->message : "");
         fputc('}', out);
     }
-    fputs(rep->nproblems ? "\n ],\n" : "],\n", out);
-    fputs(" \"notation\": ", out);
+    fputs(rep->nproblems ? "\n ]" : "]", out);
+    vigen_report_figures_json(out, rep);
+    fputs(",\n \"notation\": ", out);
     vigen_json_write_string(out, vigen_tree_notation_help());
     if (rep->against_checked)
         fprintf(out, ",\n \"against\": {\"differences\": %ld, \"undecided\": %ld}", (long)rep->against_differences,

@@ -6,6 +6,7 @@
 #include "vigen/check.h"
 #include "vigen/printable.h"
 #include "check/balls.h"
+#include "report/check_figures.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",
@@ -285,6 +286,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "  (*: holds %s, radius <= %s)\n", within_words, r);
         free(r);
     }
+
+    vigen_report_figures_text(out, rep);
 
     if (rep->claim_order >= 0 || rep->claim_symplectic >= 0) {
         fputs("claims       ", out);
