@@ -24,40 +24,13 @@
 #include <time.h>
 #include "vigen/check.h"
 #include "testlib.h"
+#include "test_check_load.h"
 
 static double now(void)
 {
     struct timespec ts;
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-/* Checks the file at rel (from the source tree) with the order claim replaced
- * by claim (-1: none) and orders up to P enumerated. */
-static int check_file(vigen_check_report *rep, const char *rel, int claim, int P)
-{
-    char path[1024];
-    snprintf(path, sizeof(path), "%s/%s", VIGEN_SOURCE_DIR, rel);
-    vigen_error err;
-    vigen_error_init(&err);
-    vigen_tableau t;
-    int rc = vigen_tableau_load(&t, path, NULL, &err);
-    if (rc != VIGEN_OK) {
-        fprintf(stderr, "%s: %s\n", path, err.message ? err.message : "?");
-        vigen_error_clear(&err);
-        return rc;
-    }
-    t.claim_order = claim;
-    vigen_check_options opt;
-    vigen_check_options_init(&opt);
-    opt.max_order = P;
-    opt.path = rel;
-    vigen_check_report_init(rep);
-    rc = vigen_check_tableau(rep, &t, NULL, &opt, &err);
-    if (rc != VIGEN_OK) fprintf(stderr, "%s: %s\n", rel, err.message ? err.message : "?");
-    vigen_error_clear(&err);
-    vigen_tableau_clear(&t);
-    return rc;
 }
 
 static const char *claim_message(const vigen_check_report *rep)
@@ -78,7 +51,7 @@ static void test_gauss(void)
         snprintf(rel, sizeof(rel), "tableaux/generated/gauss_legendre_s%d.lua", s);
         vigen_check_report rep;
         double t0 = now();
-        CHECK(check_file(&rep, rel, 2 * s, 8) == VIGEN_OK);
+        CHECK(check_file_claim(&rep, rel, 2 * s, 8) == VIGEN_OK);
         if (s == 6) printf("gauss s = 6, claim order = 12: %.3f s\n", now() - t0);
         CHECK_MSG(rep.claim_order_status == VIGEN_CHECK_YES && rep.exit_code == 0, "s = %d: %s", s, claim_message(&rep));
         CHECK(rep.claim_order_within_data);
@@ -88,13 +61,13 @@ static void test_gauss(void)
         CHECK(rep.theorem.bushy_fail[0] == 2 * s + 1 && rep.theorem.bushy_fail[1] == 2 * s + 1);
         vigen_check_report_clear(&rep);
 
-        CHECK(check_file(&rep, rel, 2 * s + 1, 8) == VIGEN_OK);
+        CHECK(check_file_claim(&rep, rel, 2 * s + 1, 8) == VIGEN_OK);
         CHECK_MSG(rep.claim_order_status == VIGEN_CHECK_NO && rep.exit_code == 1, "s = %d", s);
         vigen_check_report_clear(&rep);
 
         /* a lower claim is false too: the order is at least 2s */
         if (s <= 4) {   /* (higher: orders up to 2s enumerated, slow) */
-            CHECK(check_file(&rep, rel, 2 * s - 1, 8) == VIGEN_OK);
+            CHECK(check_file_claim(&rep, rel, 2 * s - 1, 8) == VIGEN_OK);
             /* certain only when the order-2s conditions hold exactly; on
              * rounded data they hold within the data, which cannot refute */
             CHECK(rep.claim_order_status != VIGEN_CHECK_YES && rep.exit_code == 1);
@@ -106,11 +79,11 @@ static void test_gauss(void)
         char rel[128];
         snprintf(rel, sizeof(rel), "tableaux/published/gauss_%d.lua", s);
         vigen_check_report rep;
-        CHECK(check_file(&rep, rel, 2 * s, 8) == VIGEN_OK);
+        CHECK(check_file_claim(&rep, rel, 2 * s, 8) == VIGEN_OK);
         CHECK(rep.claim_order_status == VIGEN_CHECK_YES && !rep.claim_order_within_data);
         CHECK(rep.theorem.applies && rep.theorem.order == 2 * s && !rep.theorem.within_data);
         vigen_check_report_clear(&rep);
-        CHECK(check_file(&rep, rel, 2 * s - 1, 8) == VIGEN_OK);
+        CHECK(check_file_claim(&rep, rel, 2 * s - 1, 8) == VIGEN_OK);
         CHECK(rep.claim_order_status == VIGEN_CHECK_NO);
         vigen_check_report_clear(&rep);
     }
@@ -124,7 +97,7 @@ static void test_lobatto(void)
         char rel[128];
         snprintf(rel, sizeof(rel), "tableaux/published/lobatto_iiia_iiib_%d.lua", s);
         vigen_check_report rep;
-        CHECK(check_file(&rep, rel, 2 * s - 2, 8) == VIGEN_OK);
+        CHECK(check_file_claim(&rep, rel, 2 * s - 2, 8) == VIGEN_OK);
         CHECK_MSG(rep.claim_order_status == VIGEN_CHECK_YES && rep.exit_code == 0, "s = %d: %s", s,
                   claim_message(&rep));
         if (s == 2) {
@@ -137,7 +110,7 @@ static void test_lobatto(void)
         }
         CHECK(rep.theorem.bushy_fail[0] == 2 * s - 1);
         vigen_check_report_clear(&rep);
-        CHECK(check_file(&rep, rel, 2 * s - 1, 8) == VIGEN_OK);
+        CHECK(check_file_claim(&rep, rel, 2 * s - 1, 8) == VIGEN_OK);
         CHECK(rep.claim_order_status == VIGEN_CHECK_NO && rep.exit_code == 1);
         vigen_check_report_clear(&rep);
     }
@@ -148,13 +121,13 @@ static void test_lobatto(void)
 static void test_rk4(void)
 {
     vigen_check_report rep;
-    CHECK(check_file(&rep, "tests/data/check/rk4.lua", 4, 8) == VIGEN_OK);
+    CHECK(check_file_claim(&rep, "tests/data/check/rk4.lua", 4, 8) == VIGEN_OK);
     CHECK(rep.claim_order_status == VIGEN_CHECK_YES && !rep.claim_order_within_data);
     CHECK(rep.theorem.applies && rep.theorem.B == 4 && rep.theorem.eta == 1 && rep.theorem.zeta == 1);
     CHECK(rep.theorem.order == 3);   /* eta + zeta + 1 */
     CHECK(rep.theorem.bushy_fail[0] == 5);
     vigen_check_report_clear(&rep);
-    CHECK(check_file(&rep, "tests/data/check/rk4.lua", 5, 8) == VIGEN_OK);
+    CHECK(check_file_claim(&rep, "tests/data/check/rk4.lua", 5, 8) == VIGEN_OK);
     CHECK(rep.claim_order_status == VIGEN_CHECK_NO);
     vigen_check_report_clear(&rep);
 }
