@@ -71,9 +71,15 @@
  *
  * A claim order = p means the order is p: it holds when every condition up to
  * order p holds and some condition of order p + 1 fails (for general H, or for
- * separable H), so orders up to p + 1 are evaluated (p + 1 <= 12); when p + 1
- * exceeds VIGEN_TREE_MAX_ORDER and no condition up to max_order fails, the
- * claim is undecided.
+ * separable H), so orders up to p + 1 are evaluated (p + 1 <= 12).  What the
+ * enumerated trees leave open is decided, where they can, by the simplifying
+ * assumptions (Butcher's theorem for both parts, see vigen_check_theorem) and
+ * by the bushy trees (B(q) on the row sums); otherwise the claim is undecided
+ * and its message names the conditions that would decide it.
+ *
+ * Figures (docs/analysis.md): the principal error constants of general,
+ * separable and Nystrom H, the linear stability interval on the harmonic
+ * oscillator (certified root isolation), the cost of a step.
  */
 #ifndef VIGEN_CHECK_H
 #define VIGEN_CHECK_H
