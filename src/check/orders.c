@@ -156,7 +156,16 @@ int chk_orders(chk_round *rd, vigen_error *err)
     arb_init(e);
     cx->section = VIGEN_CHECK_SECT_ORDER;
 
+    static const int ec_family[VIGEN_CHECK_EC_FAMILIES] = {VIGEN_CHECK_GENERAL, VIGEN_CHECK_SEPARABLE,
+                                                           VIGEN_CHECK_NYSTROM};
     for (int n = 1; n <= P; n++) {
+        /* the error constant of a family is needed at order p + 1 only: not
+         * above an order where the family already fails or is undecided */
+        int need_ec = 0;
+        for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
+            const vigen_check_orders *o = &rep->orders[ec_family[f]];
+            need_ec |= o->fail_order == 0 && o->undecided_order == 0;
+        }
         vigen_forest_iter it;
         vigen_forest_iter_init(&it, &ts, n - 1);
         while (vigen_forest_iter_next(&it)) {
@@ -199,16 +208,18 @@ int chk_orders(chk_round *rd, vigen_error *err)
                 int flags = vigen_forest_tree_flags(&ts, c, ids, k);
                 int ny = forest_nystrom(&ts, nys, c, ids, k);
                 /* the principal error coefficient (Phi - 1/gamma)/sigma, squared */
-                arb_div_ui(e, r, sg, prec);
-                arb_sqr(e, e, prec);
-                arb_add(rep->error_constant[VIGEN_CHECK_EC_GENERAL].sumsq[n],
-                        rep->error_constant[VIGEN_CHECK_EC_GENERAL].sumsq[n], e, prec);
-                if (flags & VIGEN_TREE_SEPARABLE)
-                    arb_add(rep->error_constant[VIGEN_CHECK_EC_SEPARABLE].sumsq[n],
-                            rep->error_constant[VIGEN_CHECK_EC_SEPARABLE].sumsq[n], e, prec);
-                if (ny)
-                    arb_add(rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n],
-                            rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n], e, prec);
+                if (need_ec) {
+                    arb_div_ui(e, r, sg, prec);
+                    arb_sqr(e, e, prec);
+                    arb_add(rep->error_constant[VIGEN_CHECK_EC_GENERAL].sumsq[n],
+                            rep->error_constant[VIGEN_CHECK_EC_GENERAL].sumsq[n], e, prec);
+                    if (flags & VIGEN_TREE_SEPARABLE)
+                        arb_add(rep->error_constant[VIGEN_CHECK_EC_SEPARABLE].sumsq[n],
+                                rep->error_constant[VIGEN_CHECK_EC_SEPARABLE].sumsq[n], e, prec);
+                    if (ny)
+                        arb_add(rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n],
+                                rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n], e, prec);
+                }
                 /* a monochromatic tree involves one part only */
                 int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
                 chk_ctx_shape(cx, n, gamma, n, it.index, c);   /* b Phi has n factors; 1/gamma */

@@ -9,16 +9,6 @@
 static const char *const ec_title[VIGEN_CHECK_EC_FAMILIES] = {"general H", "separable H", "Nystrom H"};
 static const char *const ec_key[VIGEN_CHECK_EC_FAMILIES] = {"general", "separable", "nystrom"};
 
-int vigen_report_design_family(const vigen_check_report *rep)
-{
-    const vigen_check_level *g = &rep->orders[VIGEN_CHECK_GENERAL].level,
-                            *sp = &rep->orders[VIGEN_CHECK_SEPARABLE].level;
-    /* a splitting method (explicit for separable H only) is designed for
-     * separable H; so is a method whose order is higher there */
-    if (rep->cost.explicit_separable && !rep->cost.explicit_general) return VIGEN_CHECK_EC_SEPARABLE;
-    return sp->value > g->value && !g->capped ? VIGEN_CHECK_EC_SEPARABLE : VIGEN_CHECK_EC_GENERAL;
-}
-
 /* the certain digits of x (at most 6) */
 static void put_figure(FILE *out, const arb_t x)
 {
@@ -27,8 +17,44 @@ static void put_figure(FILE *out, const arb_t x)
     free(s);
 }
 
+/* The family with the highest decided order when it is above the general
+ * order (-1 otherwise): a method designed for separable or Nystrom H. */
+static int higher_family(const vigen_check_report *rep)
+{
+    static const int fam[3] = {VIGEN_CHECK_GENERAL, VIGEN_CHECK_SEPARABLE, VIGEN_CHECK_NYSTROM};
+    const vigen_check_level *g = &rep->orders[VIGEN_CHECK_GENERAL].level;
+    if (g->capped) return -1;
+    int best = -1, value = g->value;
+    for (int f = 1; f < 3; f++) {
+        const vigen_check_level *L = &rep->orders[fam[f]].level;
+        if (L->value > value) {
+            best = f;
+            value = L->value;
+        }
+    }
+    return best;
+}
+
+int vigen_report_design_family(const vigen_check_report *rep)
+{
+    int hf = higher_family(rep);
+    if (hf >= 0) return hf;   /* VIGEN_CHECK_EC_SEPARABLE or VIGEN_CHECK_EC_NYSTROM */
+    /* a splitting method (explicit for separable H only) is made for separable H */
+    if (rep->cost.explicit_separable && !rep->cost.explicit_general) return VIGEN_CHECK_EC_SEPARABLE;
+    return VIGEN_CHECK_EC_GENERAL;
+}
+
 void vigen_report_figures_text(FILE *out, const vigen_check_report *rep)
 {
+    int hf = higher_family(rep);
+    if (hf >= 0)
+        fprintf(out, "design order  %d%s for %s (general H: %d, separable H: %d, Nystrom H: %d): the method is made "
+                     "for %s\n",
+                rep->orders[hf == 1 ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_NYSTROM].level.value,
+                rep->orders[hf == 1 ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_NYSTROM].level.capped ? " or more" : "",
+                ec_title[hf], rep->orders[VIGEN_CHECK_GENERAL].level.value,
+                rep->orders[VIGEN_CHECK_SEPARABLE].level.value, rep->orders[VIGEN_CHECK_NYSTROM].level.value,
+                hf == 1 ? "H = T(p) + V(q)" : "H = p^T M^-1 p / 2 + V(q)");
     fputs("error constants (2-norm of (Phi(t) - 1/gamma(t))/sigma(t) over the trees of order p + 1)\n", out);
     for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
         const vigen_check_error_constant *e = &rep->error_constant[f];
@@ -51,9 +77,10 @@ void vigen_report_figures_text(FILE *out, const vigen_check_report *rep)
     if (st->reason) fprintf(out, " (%s)", st->reason);
     fputc('\n', out);
     const vigen_check_cost *c = &rep->cost;
-    fprintf(out, "cost          %ld stages; for H = T(p) + V(q): %ld force and %ld velocity evaluations per step%s, %s; "
+    fprintf(out, "cost          %ld stage%s; for H = T(p) + V(q): %ld force and %ld velocity evaluations per step%s, %s; "
                  "for general H: %s\n",
-            (long)c->stages, (long)c->force, (long)c->velocity, c->fsal ? " (first force = last of the previous step)" : "",
+            (long)c->stages, c->stages == 1 ? "" : "s", (long)c->force, (long)c->velocity,
+            c->fsal ? " (first force = last of the previous step)" : "",
             c->explicit_separable ? "explicit" : "implicit", c->explicit_general ? "explicit" : "implicit");
 }
 
@@ -71,6 +98,12 @@ static void json_number(FILE *out, const arb_t x)
 void vigen_report_figures_json(FILE *out, const vigen_check_report *rep)
 {
     const vigen_check_error_constant *d = &rep->error_constant[vigen_report_design_family(rep)];
+    int hf = higher_family(rep);
+    if (hf >= 0)
+        fprintf(out, ",\n \"design_order\": {\"order\": %d, \"family\": \"%s\"}",
+                rep->orders[hf == 1 ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_NYSTROM].level.value, ec_key[hf]);
+    else fprintf(out, ",\n \"design_order\": {\"order\": %d, \"family\": \"general\"}",
+                 rep->orders[VIGEN_CHECK_GENERAL].level.value);
     fputs(",\n \"error_constant\": ", out);
     if (d->available) json_number(out, d->value);
     else fputs("null", out);

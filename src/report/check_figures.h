@@ -7,8 +7,9 @@
 #include "vigen/check.h"
 
 /* The family whose order is the method's design order (VIGEN_CHECK_EC_*):
- * separable H for a method explicit for separable H only (a splitting
- * method) or whose separable order is above the general one, else general. */
+ * the separable or Nystrom family whose order is the highest when it is above
+ * the general order; else separable H for a method explicit for separable H
+ * only (a splitting method); else general H. */
 int vigen_report_design_family(const vigen_check_report *rep);
 
 void vigen_report_figures_text(FILE *out, const vigen_check_report *rep);

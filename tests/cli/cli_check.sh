@@ -303,7 +303,8 @@ done
 # Gauss: unbounded, null (and the direct computation finds no instability)
 [ "$(python3 "$data/stability_direct.py" "$pub/gauss_2.lua" 20)" = unbounded ] || fail "gauss_2: direct computation"
 run 0 "$pub/gauss_2.lua" --json
-json "d['stability_interval'] is None and d['stability']['status'] == 'unbounded'"
+json "d['stability_interval'] is None and d['stability']['status'] == 'unbounded' and
+      d['design_order'] == {'order': 4, 'family': 'general'}"
 
 # JSON keys: velocity Verlet, error constant 5/24 for separable H (the design
 # order of a splitting method; worked by hand in docs/analysis.md), one

@@ -247,8 +247,47 @@ static void test_cost(void)
     vigen_check_report_clear(&rep);
 }
 
+/* The Nystrom trees counted independently: a white root has a multiset of
+ * black-rooted children, a black root one white-rooted child, so with W(n)
+ * and B(n) the white- and black-rooted Nystrom trees of order n, B(n) =
+ * W(n - 1) and W(n) counts multisets of black trees of total order n - 1.
+ * W = 1, 1, 2, 3, 6, 10, 20, 36 is the number of RKN conditions of each order
+ * (Hairer, Norsett, Wanner I, sec. II.14). */
+static void test_nystrom_trees(void)
+{
+    enum { NMAX = 8 };
+    slong W[NMAX + 1] = {0}, Bt[NMAX + 1] = {0};
+    W[1] = Bt[1] = 1;
+    for (int n = 2; n <= NMAX; n++) {
+        Bt[n] = W[n - 1];
+        /* multisets of black trees of total n - 1: knapsack over sizes k with
+         * Bt[k] kinds each (multisets of m trees among Bt[k] kinds) */
+        slong ways[NMAX + 1] = {1};
+        for (int k = 1; k <= n - 1; k++) {
+            slong next[NMAX + 1] = {0};
+            for (int t = 0; t <= n - 1; t++)
+                for (int m = 0; m * k <= t; m++) {
+                    /* C(Bt[k] + m - 1, m) */
+                    slong c = 1;
+                    for (int i = 0; i < m; i++) c = c * (Bt[k] + i) / (i + 1);
+                    next[t] += ways[t - m * k] * c;
+                }
+            for (int t = 0; t <= NMAX; t++) ways[t] = next[t];
+        }
+        W[n] = ways[n - 1];
+    }
+    CHECK(W[5] == 6 && W[6] == 10 && W[7] == 20 && W[8] == 36);
+    vigen_check_report rep;
+    CHECK(check_file(&rep, "tableaux/generated/gauss_legendre_s4.lua") == VIGEN_OK);
+    for (int n = 1; n <= NMAX; n++)
+        CHECK_MSG(rep.orders[VIGEN_CHECK_NYSTROM].count[n] == W[n] + Bt[n], "order %d: %ld, want %ld", n,
+                  (long)rep.orders[VIGEN_CHECK_NYSTROM].count[n], (long)(W[n] + Bt[n]));
+    vigen_check_report_clear(&rep);
+}
+
 int main(void)
 {
+    test_nystrom_trees();
     test_error_constants();
     test_stability();
     test_cost();
