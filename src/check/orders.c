@@ -2,6 +2,7 @@
  * P (general H, separable H, each part alone), walked over the forests of
  * trees.h with memoised vectors.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "check/check_internal.h"
@@ -127,6 +128,27 @@ int chk_orders(chk_round *rd, vigen_error *err)
     arb_ptr ones = _arb_vec_init(s);
     arb_ptr y = _arb_vec_init(4 * s);
     arb_ptr phi = _arb_vec_init(s);
+    /* the same recursion on |entries| (midpoints, doubles): the size of the
+     * terms of each condition, its scale, as sum |terms| + |constant| like
+     * every other condition of the checker */
+    double *Wa = flint_calloc((size_t)((nstore > 0 ? nstore : 1) * s), sizeof(double));
+    double *proda = flint_calloc((size_t)(P * s), sizeof(double));
+    double *ya = flint_calloc((size_t)(4 * s), sizeof(double));
+    double *phia = flint_calloc((size_t)s, sizeof(double));
+    double *Ma[2], *bha[2];
+    for (int c = 0; c < 2; c++) {
+        Ma[c] = flint_malloc(sizeof(double) * (size_t)(s * s));
+        bha[c] = flint_malloc(sizeof(double) * (size_t)s);
+        for (slong i = 0; i < s; i++) {
+            bha[c][i] = fabs(arf_get_d(arb_midref(bh[c] + i), ARF_RND_UP));
+            for (slong j = 0; j < s; j++)
+                Ma[c][i * s + j] = fabs(arf_get_d(arb_midref(arb_mat_entry(M[c], i, j)), ARF_RND_UP));
+        }
+    }
+    for (int c = 0; c < 2; c++)
+        for (int col = 0; col < 2; col++)
+            for (slong j = 0; j < s; j++)
+                for (slong i = 0; i < s; i++) ya[(2 * c + col) * s + j] += bha[c][i] * Ma[col][i * s + j];
     arb_t v, r, inv;
     arb_init(v);
     arb_init(r);
@@ -172,6 +194,7 @@ int chk_orders(chk_round *rd, vigen_error *err)
             int k = it.k;
             const slong *ids = it.ids;
             arb_t val[2];
+            double vabs[2] = {0, 0};
             arb_init(val[0]);
             arb_init(val[1]);
             if (k == 1 && ts.trees[ids[0]].order > P - 2) {
@@ -183,20 +206,33 @@ int chk_orders(chk_round *rd, vigen_error *err)
                     for (slong i = 0; i < s; i++) arb_mul(phi + i, phi + i, W + ch[q] * s + i, prec);
                 for (int c = 0; c < 2; c++)
                     arb_dot(val[c], NULL, 0, y + (2 * c + tu->colour) * s, 1, phi, 1, s, prec);
+                for (slong i = 0; i < s; i++) {
+                    phia[i] = 1;
+                    for (int q = 0; q < tu->nchildren; q++) phia[i] *= Wa[ch[q] * s + i];
+                    for (int c = 0; c < 2; c++) vabs[c] += ya[(2 * c + tu->colour) * s + i] * phia[i];
+                }
             } else {
                 for (int d = it.changed; d < k; d++) {
                     arb_srcptr wd = W + ids[d] * s;
                     if (d == 0) _arb_vec_set(prod, wd, s);
                     else
                         for (slong i = 0; i < s; i++) arb_mul(prod + d * s + i, prod + (d - 1) * s + i, wd + i, prec);
+                    for (slong i = 0; i < s; i++)
+                        proda[d * s + i] = (d ? proda[(d - 1) * s + i] : 1) * Wa[ids[d] * s + i];
                 }
                 arb_srcptr ph = k ? prod + (k - 1) * s : ones;
                 for (int c = 0; c < 2; c++) arb_dot(val[c], NULL, 0, bh[c], 1, ph, 1, s, prec);
+                for (slong i = 0; i < s; i++)
+                    for (int c = 0; c < 2; c++) vabs[c] += bha[c][i] * (k ? proda[(k - 1) * s + i] : 1);
                 if (n <= P - 2)
                     for (int c = 0; c < 2; c++) {
                         slong id = ts.start[n] + 2 * it.index + c;
-                        for (slong i = 0; i < s; i++)
+                        for (slong i = 0; i < s; i++) {
                             arb_dot(W + id * s + i, NULL, 0, arb_mat_entry(M[c], i, 0), 1, ph, 1, s, prec);
+                            Wa[id * s + i] = 0;
+                            for (slong j = 0; j < s; j++)
+                                Wa[id * s + i] += Ma[c][i * s + j] * (k ? proda[(k - 1) * s + j] : 1);
+                        }
                     }
             }
             ulong gamma = vigen_forest_tree_gamma(&ts, ids, k);
@@ -223,7 +259,12 @@ int chk_orders(chk_round *rd, vigen_error *err)
                 /* a monochromatic tree involves one part only */
                 int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
                 chk_ctx_shape(cx, n, gamma, n, it.index, c);   /* b Phi has n factors; 1/gamma */
-                int st = chk_decide2(cx, r, exact, val[c], inv);
+                /* the scale: sum of |terms| + 1/gamma, rounded up generously */
+                mag_t sc;
+                mag_init(sc);
+                mag_set_d(sc, (vabs[c] + 1.0 / (double)gamma) * (1 + 1e-9));
+                int st = chk_decide(cx, r, exact, sc);
+                mag_clear(sc);
                 int data = st == HOLDS ? cx->last_within : cx->last_short;
                 orders_record(&rep->orders[VIGEN_CHECK_GENERAL], n, st, data, &ts, c, ids, k, val[c], inv);
                 if (flags & VIGEN_TREE_SEPARABLE)
@@ -247,6 +288,14 @@ int chk_orders(chk_round *rd, vigen_error *err)
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) orders_finish(&rep->orders[f], P);
 
     arb_clear(e);
+    flint_free(Wa);
+    flint_free(proda);
+    flint_free(ya);
+    flint_free(phia);
+    for (int c = 0; c < 2; c++) {
+        flint_free(Ma[c]);
+        flint_free(bha[c]);
+    }
     flint_free(sigma);
     flint_free(nys);
     arb_clear(v);

@@ -69,10 +69,15 @@ static void bushy(ctx_t *cx, vigen_check_theorem *th, int Q)
             for (int leaf = 0; leaf < 2; leaf++) {
                 arb_dot(v, NULL, 0, bh[root], 1, pw + leaf * s, 1, s, prec);
                 arb_sub(r, v, q, prec);
+                /* the size of the terms: sum |bhat_i| |(M 1)_i|^(q-1) + 1/q */
                 mag_zero(m);
                 for (slong i = 0; i < s; i++) {
+                    mag_t u;
+                    mag_init(u);
                     chk_mid_mag(t, bh[root] + i);
-                    mag_add(m, m, t);
+                    chk_mid_mag(u, pw + leaf * s + i);
+                    mag_addmul(m, t, u);
+                    mag_clear(u);
                 }
                 arf_get_mag(t, arb_midref(q));
                 mag_add(m, m, t);

@@ -2,6 +2,9 @@
  * assumptions (Butcher's theorem, colour-blind for b = bt, c = ct) and refuted
  * by the bushy trees (src/check/theorem.c, claims.c).
  *
+ * Also: the order-1 tree and the row sum sum b = 1 are one condition with
+ * one scale (the rule of check.h).
+ *
  * Sources of the expected values (never this code's own output):
  *  - Hairer, Wanner II, sec. IV.5 (Tables 5.1, 5.7-5.9): the s-stage Gauss
  *    method has order exactly 2s and satisfies B(2s), C(s), D(s); Lobatto
@@ -132,8 +135,23 @@ static void test_rk4(void)
     vigen_check_report_clear(&rep);
 }
 
+/* One size of the terms for every verdict within the precision of the data:
+ * sum b = 1 as a row sum and as the order-1 tree (tests/data/check/
+ * short_among_long.lua: radius 0.00505, terms 3 + 2 + 1 = 6, 2^-10 * 6 =
+ * 0.00586, so it holds within the data, by the rule of check.h) */
+static void test_one_scale(void)
+{
+    vigen_check_report rep;
+    CHECK(check_file_claim(&rep, "tests/data/check/short_among_long.lua", -1, 2) == VIGEN_OK);
+    CHECK(rep.consistent == VIGEN_CHECK_YES && rep.consistent_within_data);
+    const vigen_check_orders *g = &rep.orders[VIGEN_CHECK_GENERAL];
+    CHECK(g->count[1] == 2 && g->hold[1] == 2 && g->hold_data[1] == 2 && g->undecided[1] == 0);
+    vigen_check_report_clear(&rep);
+}
+
 int main(void)
 {
+    test_one_scale();
     test_gauss();
     test_lobatto();
     test_rk4();
