@@ -219,6 +219,7 @@ typedef struct {
  * leaves of the other colour (an alternating tree) also for separable H. */
 typedef struct {
     int applies;                 /* row sums, b = bt and c = ct hold: the theorem applies */
+    const char *why_not;         /* otherwise which of them does not hold (static string) */
     int order;                   /* then the order for general H is >= order (0: nothing) */
     int B, eta, zeta;            /* the smallest levels over the parts */
     int within_data;             /* some assumption used holds only within the precision of the data */

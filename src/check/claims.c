@@ -130,7 +130,7 @@ int chk_claims(chk_round *rd, vigen_error *err)
                     "assumptions give order %d only (B(%d), C(%d), D(%d)%s); the bushy tree of order %d holds, and "
                     "the other conditions of order %d are beyond the %d that can be enumerated",
                     claim, rep->max_order, th->applies ? th->order : 0, th->B, th->eta, th->zeta,
-                    th->applies ? "" : "; b = bt, c = ct or the row sums do not hold, so the theorem does not apply",
+                    th->applies ? "" : "; Butcher's theorem does not apply",
                     claim + 1, claim + 1, VIGEN_TREE_MAX_ORDER);
             else if (rep->claim_order_beyond)
                 p->message = vigen_strdup_printf(

@@ -118,8 +118,14 @@ int chk_theorem(chk_round *rd, vigen_error *err)
     th->zeta = imin(rep->D[0].value, rep->D[1].value);
     /* b = bt and c = ct (aliases when the tableau does not give them) */
     int data = 0, eq = HOLDS;
+    th->why_not = NULL;
     if (cx->has_bt) eq = decide_equal(cx, cx->b, cx->bt, x->b, x->bt, 90, &data);
-    if (eq == HOLDS && cx->has_At) eq = decide_equal(cx, cx->c, cx->ct, x->c, x->ct, 91, &data);
+    if (eq != HOLDS) th->why_not = eq == FAILS ? "b != bt" : "b = bt is undecided";
+    if (eq == HOLDS && cx->has_At) {
+        eq = decide_equal(cx, cx->c, cx->ct, x->c, x->ct, 91, &data);
+        if (eq != HOLDS) th->why_not = eq == FAILS ? "c != ct" : "c = ct is undecided";
+    }
+    if (eq == HOLDS && rep->consistent != VIGEN_CHECK_YES) th->why_not = "the row sums do not all hold";
     if (eq == HOLDS && rep->consistent == VIGEN_CHECK_YES) {
         th->applies = 1;
         int p = th->B;

@@ -154,6 +154,14 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         json_level(out, &rep->stage_order[part]);
         fputc('}', out);
     }
+    const vigen_check_theorem *th = &rep->theorem;
+    fprintf(out, "},\n \"butcher_theorem\": {\"applies\": %s, \"order\": %d, \"B\": %d, \"C\": %d, \"D\": %d, "
+                 "\"within_data\": %s, \"why_not\": ",
+            th->applies ? "true" : "false", th->order, th->B, th->eta, th->zeta, th->within_data ? "true" : "false");
+    if (th->why_not) vigen_json_write_string(out, th->why_not);
+    else fputs("null", out);
+    fprintf(out, ", \"bushy_tree_fails\": {\"general\": %d, \"separable\": %d, \"checked_to\": %d}",
+            th->bushy_fail[0], th->bushy_fail[1], th->bushy_to);
     fputs("},\n \"claims\": {", out);
     int first = 1;
     if (rep->claim_order >= 0) {

@@ -274,7 +274,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     if (th->applies)
         fprintf(out, "  order >= %d%s by Butcher's theorem (B(%d), C(%d), D(%d) of both parts, b = bt, c = ct)",
                 th->order, th->within_data ? "*" : "", th->B, th->eta, th->zeta);
-    else fputs("  Butcher's theorem does not apply (it needs the row sums, b = bt and c = ct)", out);
+    else fprintf(out, "  Butcher's theorem does not apply (%s; it needs the row sums, b = bt and c = ct)",
+                 th->why_not ? th->why_not : "?");
     starred |= th->applies && th->within_data;
     if (th->bushy_fail[0])
         fprintf(out, "; the bushy tree of order %d fails: order <= %d", th->bushy_fail[0], th->bushy_fail[0] - 1);

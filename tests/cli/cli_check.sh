@@ -326,7 +326,8 @@ grep_out "^cost          6 stages; for H = T(p) + V(q): 3 force"
 # B(12), C(6), D(6); order = 13 is false (the bushy tree of order 13 fails)
 sed 's/^  s = 6,$/  s = 6,\n  order = 12,/' "$src/tableaux/generated/gauss_legendre_s6.lua" >"$work/g6_12.lua"
 run 0 "$work/g6_12.lua" --json
-json "d['claims']['order']['holds'] is True and d['claims']['order']['by_simplifying_assumptions'] is True"
+json "d['claims']['order']['holds'] is True and d['claims']['order']['by_simplifying_assumptions'] is True and
+      d['butcher_theorem']['order'] == 12 and d['butcher_theorem']['bushy_tree_fails']['general'] == 13"
 sed 's/^  s = 6,$/  s = 6,\n  order = 13,/' "$src/tableaux/generated/gauss_legendre_s6.lua" >"$work/g6_13.lua"
 run 1 "$work/g6_13.lua"
 grep_out "claim order = 13 is false: the bushy tree of order 13 fails"

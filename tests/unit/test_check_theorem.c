@@ -106,7 +106,7 @@ static void test_lobatto(void)
         if (s == 2) {
             /* IIIB of 2 stages satisfies C(0) only: its row sums (1/2, 1/2) are
              * not the nodes (0, 1), so ct != c and the theorem does not apply */
-            CHECK(!rep.theorem.applies);
+            CHECK(!rep.theorem.applies && rep.theorem.why_not && strcmp(rep.theorem.why_not, "c != ct") == 0);
         } else {
             CHECK(rep.theorem.applies && rep.theorem.eta == s - 2 && rep.theorem.zeta == s - 2);
             CHECK(rep.theorem.B == 2 * s - 2 && rep.theorem.order == 2 * s - 3);
