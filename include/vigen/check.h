@@ -71,9 +71,15 @@
  *
  * A claim order = p means the order is p: it holds when every condition up to
  * order p holds and some condition of order p + 1 fails (for general H, or for
- * separable H), so orders up to p + 1 are evaluated (p + 1 <= 12); when p + 1
- * exceeds VIGEN_TREE_MAX_ORDER and no condition up to max_order fails, the
- * claim is undecided.
+ * separable H), so orders up to p + 1 are evaluated (p + 1 <= 12).  What the
+ * enumerated trees leave open is decided, where they can, by the simplifying
+ * assumptions (Butcher's theorem for both parts, see vigen_check_theorem) and
+ * by the bushy trees (B(q) on the row sums); otherwise the claim is undecided
+ * and its message names the conditions that would decide it.
+ *
+ * Figures (docs/analysis.md): the principal error constants of general,
+ * separable and Nystrom H, the linear stability interval on the harmonic
+ * oscillator (certified root isolation), the cost of a step.
  */
 #ifndef VIGEN_CHECK_H
 #define VIGEN_CHECK_H
@@ -132,7 +138,9 @@ enum {
     VIGEN_CHECK_SEPARABLE = 1,   /* alternating trees: H = T(p) + V(q) */
     VIGEN_CHECK_A_ALONE = 2,     /* black trees: (c, A, b) as an RK method */
     VIGEN_CHECK_AT_ALONE = 3,    /* white trees: (ct, At, bt) as an RK method */
-    VIGEN_CHECK_FAMILIES = 4
+    VIGEN_CHECK_NYSTROM = 4,     /* alternating trees whose black vertices have at most one child:
+                                    H = p^T M^-1 p / 2 + V(q), where dH/dp is linear in p */
+    VIGEN_CHECK_FAMILIES = 5
 };
 
 typedef struct {
@@ -195,6 +203,71 @@ typedef struct {
     char *message;               /* one line */
 } vigen_check_problem;
 
+/* The order by the simplifying assumptions (theorem.c).  Butcher's theorem
+ * (Butcher 1964; Hairer, Norsett, Wanner I, Thm II.7.4): B(p), C(eta), D(zeta)
+ * with p <= eta + zeta + 1 and p <= 2 eta + 2 give order p.  Its proof
+ * replaces sums over the children of a vertex by C and removes roots by D;
+ * for a PRK method with c = ct (both the row sums) and b = bt every such step
+ * gives the same result whatever the colours, so the statement holds for the
+ * PRK method with eta, zeta and p the smallest over the two parts (the
+ * colour-blind form; Hairer, Lubich, Wanner, GNI sec. III.2.2 uses the same
+ * reduction for Lobatto IIIA-IIIB).  Necessary conditions: the bushy tree of
+ * order q (a root and q - 1 leaves) has the condition
+ * sum_i bhat_i (M 1)_i^(q-1) = 1/q with bhat the root's weights and M the
+ * leaves' matrix: B(q) of (M 1, bhat).  Its failure with leaves of the
+ * root's colour bounds the order for general H (and of that part alone), with
+ * leaves of the other colour (an alternating tree) also for separable H. */
+typedef struct {
+    int applies;                 /* row sums, b = bt and c = ct hold: the theorem applies */
+    const char *why_not;         /* otherwise which of them does not hold (static string) */
+    int order;                   /* then the order for general H is >= order (0: nothing) */
+    int B, eta, zeta;            /* the smallest levels over the parts */
+    int within_data;             /* some assumption used holds only within the precision of the data */
+    int bushy_to;                /* bushy trees decided up to this order */
+    int bushy_fail[2];           /* [0] general H, [1] separable H: the lowest order q whose bushy
+                                    tree fails (so the order is < q); 0 when none up to bushy_to */
+} vigen_check_theorem;
+
+/* The principal error coefficients (figures.c): for a family of order p, the
+ * bicoloured trees t of order p + 1 of the family give
+ * e(t) = (Phi(t) - 1/gamma(t)) / sigma(t), the coefficient of h^(p+1) F(t)
+ * in the local error y1 - y(t0 + h) (P-series, HLW GNI sec. III.1-2);
+ * the error constant is sqrt(sum e(t)^2). */
+enum {
+    VIGEN_CHECK_EC_GENERAL = 0,
+    VIGEN_CHECK_EC_SEPARABLE = 1,
+    VIGEN_CHECK_EC_NYSTROM = 2,
+    VIGEN_CHECK_EC_FAMILIES = 3
+};
+
+typedef struct {
+    int available;               /* computed: the order p is decided and p + 1 <= the orders evaluated */
+    int order;                   /* p */
+    slong ntrees;                /* trees of order p + 1 in the family */
+    arb_t value;                 /* the 2-norm */
+    arb_t sumsq[VIGEN_TREE_MAX_ORDER + 1];   /* sum of e(t)^2 over the family's trees of each order */
+} vigen_check_error_constant;
+
+/* The linear stability interval on q'' = -omega^2 q (stability.c). */
+enum { VIGEN_CHECK_STAB_NONE = 0, VIGEN_CHECK_STAB_BOUNDED = 1, VIGEN_CHECK_STAB_UNBOUNDED = 2,
+       VIGEN_CHECK_STAB_UNDECIDED = 3 };
+
+typedef struct {
+    int status;                  /* VIGEN_CHECK_STAB_* */
+    arb_t x;                     /* bounded: the end x* of the interval (h omega < x*), certified */
+    const char *reason;          /* why (static string) */
+} vigen_check_stability;
+
+/* The cost of a step (cost.c). */
+typedef struct {
+    slong stages;
+    slong force;                 /* evaluations of -dV/dq per step, separable H */
+    slong velocity;              /* evaluations of dT/dp per step, separable H */
+    int explicit_separable;      /* the stages can be computed in sequence for H = T(p) + V(q) */
+    int explicit_general;        /* ... for every H (A and At strictly lower triangular) */
+    int fsal;                    /* the first force is the last one of the previous step */
+} vigen_check_cost;
+
 typedef struct {
     char *path, *name;
     slong s, prec;               /* precision of the final round, bits */
@@ -230,12 +303,18 @@ typedef struct {
     vigen_check_level B[2], C[2], D[2], stage_order[2];
     int simplifying_cap;
 
+    vigen_check_theorem theorem;
+    vigen_check_error_constant error_constant[VIGEN_CHECK_EC_FAMILIES];
+    vigen_check_stability stability;
+    vigen_check_cost cost;
+
     int claim_order;             /* -1 when the file states none */
     int claim_order_status;      /* tri-state */
     int claim_order_separable;   /* the claim matches the separable order only */
     int claim_order_beyond;      /* undecided because order claim + 1 exceeds VIGEN_TREE_MAX_ORDER */
     int claim_order_within_data; /* holds, resting on conditions that hold within the precision of the data */
     int claim_order_too_short;   /* undecided because the data are too short */
+    int claim_order_theorem;     /* decided by the simplifying assumptions and the bushy trees */
     int claim_symplectic;        /* -1, 0, 1 */
     int claim_symplectic_status;
     int claim_symplectic_separable;  /* the claim holds for separable H only */

@@ -1,6 +1,7 @@
 /* claims.c — the check of the claims a file states: order = p (the order is
  * exactly p) and symplectic = true or false.
  */
+#include <limits.h>
 #include <stdlib.h>
 #include "check/check_internal.h"
 
@@ -20,6 +21,31 @@ static int order_refutes(const vigen_check_orders *o, int claim)
 {
     if (o->level.value < claim) return 1;
     return claim + 1 > VIGEN_TREE_MAX_ORDER || o->hold_data[claim + 1] == 0;
+}
+
+/* What the simplifying assumptions and the bushy trees (theorem.c) say about
+ * "the order for family f (general 0, separable 1) is exactly p", with the
+ * levels of the enumerated trees: YES, NO or UNDECIDED; *within: a YES rests
+ * on holds within the precision of the data. */
+static int theorem_says(const vigen_check_report *rep, int f, int p, int *within)
+{
+    const vigen_check_theorem *th = &rep->theorem;
+    const vigen_check_level *L = &rep->orders[f ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_GENERAL].level;
+    int lo = L->value, lo_within = L->within_data;
+    if (th->applies && th->order > lo) {
+        lo = th->order;
+        lo_within = th->within_data;
+    }
+    int hi = INT_MAX;
+    if (!L->capped && !L->undecided) hi = L->value;
+    if (th->bushy_fail[f] && th->bushy_fail[f] - 1 < hi) hi = th->bushy_fail[f] - 1;
+    *within = 0;
+    if (hi < p || (lo > p && !lo_within)) return VIGEN_CHECK_NO;
+    if (lo >= p && hi <= p) {
+        *within = lo_within;
+        return VIGEN_CHECK_YES;
+    }
+    return VIGEN_CHECK_UNDECIDED;
 }
 
 int chk_claims(chk_round *rd, vigen_error *err)
@@ -64,6 +90,23 @@ int chk_claims(chk_round *rd, vigen_error *err)
             st = VIGEN_CHECK_UNDECIDED;
             data_above = 1;
         } else st = VIGEN_CHECK_NO;
+        /* what the enumerated trees leave open, the simplifying assumptions
+         * and the bushy trees may decide (orders above those enumerated) */
+        rep->claim_order_theorem = 0;
+        if (st == VIGEN_CHECK_UNDECIDED) {
+            int wg, ws;
+            int tg = theorem_says(rep, 0, claim, &wg), ts = theorem_says(rep, 1, claim, &ws);
+            if (tg == VIGEN_CHECK_YES || ts == VIGEN_CHECK_YES) {
+                st = VIGEN_CHECK_YES;
+                rep->claim_order_separable = tg != VIGEN_CHECK_YES;
+                rep->claim_order_within_data = tg == VIGEN_CHECK_YES ? wg : ws;
+            } else if (tg == VIGEN_CHECK_NO && ts == VIGEN_CHECK_NO) st = VIGEN_CHECK_NO;
+            if (st != VIGEN_CHECK_UNDECIDED) {
+                rep->claim_order_theorem = 1;
+                rep->claim_order_beyond = rep->claim_order_too_short = 0;
+                data_above = 0;
+            }
+        }
         rep->claim_order_status = st;
         if (st != VIGEN_CHECK_YES) {
             vigen_check_problem *p = chk_problem_new(rep, VIGEN_PROBLEM_CLAIM);
@@ -71,7 +114,25 @@ int chk_claims(chk_round *rd, vigen_error *err)
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup_printf("%d", g->value);
             p->expected_json = vigen_strdup_printf("%d", claim);
-            if (rep->claim_order_beyond)
+            const vigen_check_theorem *th = &rep->theorem;
+            if (rep->claim_order_theorem && th->bushy_fail[0] && th->bushy_fail[0] <= claim)
+                p->message = vigen_strdup_printf(
+                    "claim order = %d is false: the bushy tree of order %d fails (the quadrature condition "
+                    "B(%d) on the row sums), so the order is at most %d", claim, th->bushy_fail[0], th->bushy_fail[0],
+                    th->bushy_fail[0] - 1);
+            else if (rep->claim_order_theorem)
+                p->message = vigen_strdup_printf(
+                    "claim order = %d is false: B(%d), C(%d), D(%d) for both parts with b = bt and c = ct give "
+                    "order %d or more (Butcher's theorem)", claim, th->B, th->eta, th->zeta, th->order);
+            else if (rep->claim_order_beyond && th->bushy_to > claim && !th->bushy_fail[0])
+                p->message = vigen_strdup_printf(
+                    "claim order = %d: undecided: every condition up to order %d holds and the simplifying "
+                    "assumptions give order %d only (B(%d), C(%d), D(%d)%s); the bushy tree of order %d holds, and "
+                    "the other conditions of order %d are beyond the %d that can be enumerated",
+                    claim, rep->max_order, th->applies ? th->order : 0, th->B, th->eta, th->zeta,
+                    th->applies ? "" : "; Butcher's theorem does not apply",
+                    claim + 1, claim + 1, VIGEN_TREE_MAX_ORDER);
+            else if (rep->claim_order_beyond)
                 p->message = vigen_strdup_printf(
                     "claim order = %d: undecided: every condition up to order %d holds, and confirming that the "
                     "order is exactly %d needs the conditions of order %d (at most %d supported%s)",

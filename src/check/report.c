@@ -52,6 +52,11 @@ void vigen_check_report_init(vigen_check_report *rep)
         arb_init(rep->orders[f].undecided_expected);
     }
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_init(rep->holds[k].radius);
+    for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
+        arb_init(rep->error_constant[f].value);
+        for (int n = 0; n <= VIGEN_TREE_MAX_ORDER; n++) arb_init(rep->error_constant[f].sumsq[n]);
+    }
+    arb_init(rep->stability.x);
     rep->claim_order = -1;
     rep->claim_symplectic = -1;
 }
@@ -84,6 +89,11 @@ void vigen_check_report_clear(vigen_check_report *rep)
         arb_clear(rep->orders[f].undecided_expected);
     }
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) mag_clear(rep->holds[k].radius);
+    for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
+        arb_clear(rep->error_constant[f].value);
+        for (int n = 0; n <= VIGEN_TREE_MAX_ORDER; n++) arb_clear(rep->error_constant[f].sumsq[n]);
+    }
+    arb_clear(rep->stability.x);
     free(rep->path);
     free(rep->name);
     flint_free(rep->rational_denominator);

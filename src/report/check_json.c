@@ -6,6 +6,7 @@
 #include "vigen/check.h"
 #include "check/balls.h"
 #include "report/json.h"
+#include "report/check_figures.h"
 
 static void json_ball(FILE *out, const arb_t x, slong prec)
 {
@@ -56,7 +57,7 @@ static void json_bad_tree(FILE *out, const vigen_check_orders *o, slong prec)
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
 {
     static const char *const kinds[] = {"rowsum", "symplectic", "claim", "against"};
-    static const char *const family_keys[] = {"general", "separable", "A", "At"};
+    static const char *const family_keys[] = {"general", "separable", "A", "At", "nystrom"};
     const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
     fputs("{\"file\": ", out);
     if (rep->path) vigen_json_write_string(out, rep->path); else fputs("null", out);
@@ -153,14 +154,24 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         json_level(out, &rep->stage_order[part]);
         fputc('}', out);
     }
+    const vigen_check_theorem *th = &rep->theorem;
+    fprintf(out, "},\n \"butcher_theorem\": {\"applies\": %s, \"order\": %d, \"B\": %d, \"C\": %d, \"D\": %d, "
+                 "\"within_data\": %s, \"why_not\": ",
+            th->applies ? "true" : "false", th->order, th->B, th->eta, th->zeta, th->within_data ? "true" : "false");
+    if (th->why_not) vigen_json_write_string(out, th->why_not);
+    else fputs("null", out);
+    fprintf(out, ", \"bushy_tree_fails\": {\"general\": %d, \"separable\": %d, \"checked_to\": %d}",
+            th->bushy_fail[0], th->bushy_fail[1], th->bushy_to);
     fputs("},\n \"claims\": {", out);
     int first = 1;
     if (rep->claim_order >= 0) {
         fprintf(out, "\"order\": {\"claimed\": %d, \"holds\": ", rep->claim_order);
         json_tri(out, rep->claim_order_status);
-        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s, \"within_data\": %s, \"data_too_short\": %s}",
+        fprintf(out, ", \"separable_only\": %s, \"beyond_max_order\": %s, \"within_data\": %s, \"data_too_short\": %s, "
+                     "\"by_simplifying_assumptions\": %s}",
                 rep->claim_order_separable ? "true" : "false", rep->claim_order_beyond ? "true" : "false",
-                rep->claim_order_within_data ? "true" : "false", rep->claim_order_too_short ? "true" : "false");
+                rep->claim_order_within_data ? "true" : "false", rep->claim_order_too_short ? "true" : "false",
+                rep->claim_order_theorem ? "true" : "false");
         first = 0;
     }
     if (rep->claim_symplectic >= 0) {
@@ -188,8 +199,9 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         vigen_json_write_string(out, p->message ? p->message : "");
         fputc('}', out);
     }
-    fputs(rep->nproblems ? "\n ],\n" : "],\n", out);
-    fputs(" \"notation\": ", out);
+    fputs(rep->nproblems ? "\n ]" : "]", out);
+    vigen_report_figures_json(out, rep);
+    fputs(",\n \"notation\": ", out);
     vigen_json_write_string(out, vigen_tree_notation_help());
     if (rep->against_checked)
         fprintf(out, ",\n \"against\": {\"differences\": %ld, \"undecided\": %ld}", (long)rep->against_differences,

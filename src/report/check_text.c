@@ -6,10 +6,11 @@
 #include "vigen/check.h"
 #include "vigen/printable.h"
 #include "check/balls.h"
+#include "report/check_figures.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",
-    "(ct, At, bt) alone as an RK method"};
+    "(ct, At, bt) alone as an RK method", "order for Nystrom H = p^2/2 + V(q)"};
 
 static const char *const within_words = "within the precision of the data";
 
@@ -211,7 +212,7 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                      "but are wider than 2^-%d of their terms)\n",
                 (long)rep->holds[VIGEN_CHECK_SECT_ORDER].too_short, VIGEN_CHECK_DATA_BITS);
 
-    fputs("  order  conditions   hold   fail  undecided |  separable     A alone    At alone\n", out);
+    fputs("  order  conditions   hold   fail  undecided |  separable     A alone    At alone     Nystrom\n", out);
     for (int n = 1; n <= g->evaluated_to; n++) {
         fprintf(out, "  %5d  %10ld %6ld %6ld %10ld |", n, (long)g->count[n], (long)g->hold[n], (long)g->fail[n],
                 (long)g->undecided[n]);
@@ -269,11 +270,25 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fputc('\n', out);
     }
     if (!rep->has_At) fputs("  (ct, At, bt):  same (At = A)\n", out);
+    const vigen_check_theorem *th = &rep->theorem;
+    if (th->applies)
+        fprintf(out, "  order >= %d%s by Butcher's theorem (B(%d), C(%d), D(%d) of both parts, b = bt, c = ct)",
+                th->order, th->within_data ? "*" : "", th->B, th->eta, th->zeta);
+    else fprintf(out, "  Butcher's theorem does not apply (%s; it needs the row sums, b = bt and c = ct)",
+                 th->why_not ? th->why_not : "?");
+    starred |= th->applies && th->within_data;
+    if (th->bushy_fail[0])
+        fprintf(out, "; the bushy tree of order %d fails: order <= %d", th->bushy_fail[0], th->bushy_fail[0] - 1);
+    if (th->bushy_fail[1] && th->bushy_fail[1] != th->bushy_fail[0])
+        fprintf(out, " (<= %d for separable H)", th->bushy_fail[1] - 1);
+    fputc('\n', out);
     if (starred) {
         char *r = vigen_mag_str(rep->holds[VIGEN_CHECK_SECT_SIMPLIFYING].radius);
         fprintf(out, "  (*: holds %s, radius <= %s)\n", within_words, r);
         free(r);
     }
+
+    vigen_report_figures_text(out, rep);
 
     if (rep->claim_order >= 0 || rep->claim_symplectic >= 0) {
         fputs("claims       ", out);

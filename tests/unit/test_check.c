@@ -1270,19 +1270,20 @@ static void test_claims(void)
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
 
-    /* Gauss-4 has order 8.  A claim of order 16 cannot be confirmed (order 17
-     * is beyond the 12 supported) while nothing up to --max-order fails: it is
-     * undecided, with the reason; with --max-order 10 the order 8 is found and
-     * the claim is false */
+    /* Gauss-4 has order 8.  A claim of order 16 is refuted although orders
+     * up to --max-order 8 hold: the bushy tree of order 9 fails (a 4-point
+     * quadrature is exact to degree 7 at most); with --max-order 10 the order
+     * 8 is found by the trees and the claim is false */
     gauss_balls(&t, 4, 192);
     t.claim_order = 16;
     CHECK(check(&rep, &t, NULL, 8) == VIGEN_OK);
     CHECK(rep.max_order == 8);
-    CHECK(rep.claim_order_status == VIGEN_CHECK_UNDECIDED && rep.claim_order_beyond && rep.exit_code == 1);
+    CHECK(rep.claim_order_status == VIGEN_CHECK_NO && !rep.claim_order_beyond && rep.exit_code == 1);
+    CHECK(rep.theorem.bushy_fail[0] == 9 && rep.theorem.bushy_fail[1] == 9);
     const vigen_check_problem *p = NULL;
     for (slong k = 0; k < rep.nproblems; k++)
         if (rep.problems[k].kind == VIGEN_PROBLEM_CLAIM) p = rep.problems + k;
-    CHECK(p != NULL && p->undecided && strstr(p->message, "order 17") != NULL);
+    CHECK(p != NULL && !p->undecided && strstr(p->message, "bushy tree of order 9") != NULL);
     vigen_check_report_clear(&rep);
     CHECK(check(&rep, &t, NULL, 10) == VIGEN_OK);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 8, 0, 0);
