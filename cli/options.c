@@ -145,6 +145,26 @@ static int unknown_option(int command, const char *word)
 
 static int is_option_word(const char *word) { return word[0] == '-' && word[1] != '\0'; }
 
+/* "METHOD..." (an operand kind) and "K=V..." (a metavar) may be repeated. */
+static int repeats(const char *kind)
+{
+    size_t n = strlen(kind);
+    return n > 3 && strstr(kind, "...") != NULL;
+}
+
+/* A repeatable operand or option collects its words, one per line, in a
+ * string that lives as long as the process (the parsed arguments hold
+ * pointers into argv otherwise); a word with a newline cannot be one of
+ * them. */
+static int collect(const char **slot, const char *word, int command, const char *what)
+{
+    if (strchr(word, '\n'))
+        return vigen_cli_usage_error(command, "%s cannot contain a newline", what);
+    char *joined = *slot ? vigen_strdup_printf("%s\n%s", *slot, word) : vigen_strdup(word);
+    *slot = joined;
+    return -1;
+}
+
 int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, int *stop)
 {
     const char *operand_kind = command == VIGEN_CMD_global ? "" : vigen_cli_commands[command].operand;
@@ -155,6 +175,11 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
             if (command == VIGEN_CMD_global) { *stop = i; return -1; }
             if (operand_kind[0] == '\0')
                 return vigen_cli_usage_error(command, "takes no operand, not '%s'", word);
+            if (repeats(operand_kind)) {
+                int rc = collect(&args->operand, word, command, operand_kind);
+                if (rc >= 0) return rc;
+                continue;
+            }
             if (args->operand != NULL)
                 return vigen_cli_usage_error(command, "one %s at a time, not '%s' and '%s'",
                                              operand_kind[0] == '[' ? "COMMAND" : operand_kind, args->operand, word);
@@ -169,6 +194,9 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
         if (o->metavar == NULL) {
             if (eq) return vigen_cli_usage_error(command, "%s takes no value, not '%s'", vigen_cli_option_name(k), eq + 1);
             args->value[k] = "";
+        } else if (repeats(o->metavar) && (eq || i + 1 < argc)) {
+            int rc = collect(&args->value[k], eq ? eq + 1 : argv[++i], command, o->metavar);
+            if (rc >= 0) return rc;
         } else if (eq) args->value[k] = eq + 1;
         else if (i + 1 < argc) args->value[k] = argv[++i];
         else return vigen_cli_usage_error(command, "%s needs a value: %s %s", word, word, o->metavar);
