@@ -112,9 +112,10 @@ int vigen_try_plot(const char *dir, const vigen_try_options *opt, const vigen_tr
                    vigen_error *err);
 
 /* Work-precision: each method at steps_per_period 2^k * base for k < levels
- * (base: opt->steps_per_period, default 16; levels 6 when 0), error (global
- * error against the reference, or the maximum energy error when the problem
- * has none) against cost (gradient evaluations and seconds). */
+ * (base: opt->steps_per_period, default 64; levels 6 when 0) up to
+ * opt->time (default 10 periods), error (global error against the
+ * reference, or the maximum energy error when the problem has none) against
+ * cost (gradient evaluations and seconds). */
 typedef struct {
     char *label;
     size_t npoints;
@@ -127,13 +128,13 @@ int vigen_try_work_precision(size_t n, const char *const *methods, const vigen_t
                              vigen_try_wp_curve **curves, vigen_error *err);
 void vigen_try_wp_free(vigen_try_wp_curve *c, size_t n);
 void vigen_try_wp_print(FILE *out, const vigen_try_wp_curve *c, size_t n);
-/* work_precision.csv, work_precision_evals.{svg,png},
- * work_precision_seconds.{svg,png}: one curve per method, log-log. */
+/* work_precision_evals.{csv,svg,png} and work_precision_seconds.{csv,svg,png}
+ * (the same data beside each figure): one curve per method, log-log. */
 int vigen_try_wp_plot(const char *dir, const vigen_try_options *opt, const vigen_try_wp_curve *c, size_t n,
                       vigen_error *err);
 
 /* Empirical order under step halving: errors at h_k = h_0 / 2^k, k < levels
- * (h_0: opt->h, else period / opt->steps_per_period, default 8 steps per
+ * (h_0: opt->h, else period / opt->steps_per_period, default 64 steps per
  * period), against the reference solution when the problem has one,
  * otherwise against the solution at h / 2^levels of the same method; the
  * order between successive levels is log2(e_k / e_(k+1)).  certified is the

@@ -99,9 +99,12 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
     if (slash) *slash = '\0';
     char *incwork = vigen_strdup_printf("-I%s", stepdir);
     char *libs = vigen_strdup(VIGEN_TRY_LINK_LIBS);
-    char *argv[64];
+    /* CC may carry flags ("gcc -m64"), as make and CMake take it */
+    char *ccw = vigen_strdup(cc);
+    char *argv[96];
     int n = 0;
-    argv[n++] = (char *)cc;
+    for (char *tok = strtok(ccw, " \t"); tok && n < 32; tok = strtok(NULL, " \t")) argv[n++] = tok;
+    if (n == 0) argv[n++] = (char *)"cc";
     argv[n++] = "-std=c11";
     argv[n++] = "-O2";
     argv[n++] = incwork;
@@ -110,7 +113,7 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
     argv[n++] = (char *)stepper;
     argv[n++] = p->problems_lib;
     argv[n++] = p->runtime_lib;
-    for (char *tok = strtok(libs, " "); tok && n < 60; tok = strtok(NULL, " ")) argv[n++] = tok;
+    for (char *tok = strtok(libs, " "); tok && n < 90; tok = strtok(NULL, " ")) argv[n++] = tok;
     argv[n++] = "-o";
     argv[n++] = b->exe;
     argv[n] = NULL;
@@ -123,9 +126,9 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
                              "%s: cannot run the C compiler '%s' (install one, or set CC to a C compiler, e.g. CC=gcc)",
                              b->label, cc);
     else if (status != 0) {
-        char *head = try_log_head(log, 3);
-        rc = vigen_error_set(err, VIGEN_E_TEMPLATE, "%s: the C compiler '%s' failed (status %d)%s\n  %s", b->label,
-                             cc, status, head ? ":" : "", head ? head : "(no output)");
+        char *head = try_log_first_error(log);
+        rc = vigen_error_set(err, VIGEN_E_TEMPLATE, "%s: the C compiler '%s' failed (status %d): %s", b->label, cc,
+                             status, head ? head : "(no output)");
         free(head);
     }
     free(log);
@@ -133,6 +136,7 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
     free(incwork);
     free(stepdir);
     free(libs);
+    free(ccw);
     return rc;
 }
 

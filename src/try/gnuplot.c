@@ -86,9 +86,9 @@ static int run_gnuplot(const char *script_path, const char *stem, vigen_error *e
                              "cannot run gnuplot '%s' for the plots (install gnuplot-nox, e.g. ./setup.sh does, or "
                              "set GNUPLOT)", gp);
     else if (status != 0) {
-        char *head = try_log_head(log, 3);
-        rc = vigen_error_set(err, VIGEN_E_TEMPLATE, "gnuplot failed on %s (status %d)%s\n  %s", stem, status,
-                             head ? ":" : "", head ? head : "(no output)");
+        char *head = try_log_first_error(log);
+        rc = vigen_error_set(err, VIGEN_E_TEMPLATE, "gnuplot failed on %s (status %d): %s", stem, status,
+                             head ? head : "(no output)");
         free(head);
     }
     free(log);

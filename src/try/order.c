@@ -12,7 +12,7 @@
 #include "try/try_internal.h"
 
 /* Coarsest steps per period when neither --h nor --steps-per-period is given. */
-#define TRY_ORDER_BASE 8
+#define TRY_ORDER_BASE 64
 /* Errors below this (relative to the size of the state) are round-off: the
  * order between them says nothing about the method. */
 #define TRY_ORDER_FLOOR 1e-11

@@ -46,6 +46,26 @@ int try_process_run(char *const *argv, const char *log_path, int *not_found)
     return code;
 }
 
+char *try_log_first_error(const char *path)
+{
+    FILE *f = fopen(path, "r");
+    if (f == NULL) return NULL;
+    char line[1024], first[1024] = "";
+    char *found = NULL;
+    while (fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (first[0] == '\0' && line[0] != '\0') memcpy(first, line, sizeof first);
+        if (strstr(line, "error")) {
+            found = vigen_strdup(line);
+            break;
+        }
+    }
+    fclose(f);
+    if (found == NULL && first[0]) found = vigen_strdup(first);
+    if (found && strlen(found) > 300) found[300] = '\0';
+    return found;
+}
+
 char *try_log_head(const char *path, int max_lines)
 {
     FILE *f = fopen(path, "r");
@@ -58,7 +78,7 @@ char *try_log_head(const char *path, int max_lines)
         size_t len = strcspn(line, "\n");
         line[len < 200 ? len : 200] = '\0';
         if (line[0] == '\0') continue;
-        vigen_strbuf_printf(&sb, "%s%s", n ? "\n  " : "", line);
+        vigen_strbuf_printf(&sb, "%s%s", n ? " | " : "", line);
         n++;
     }
     fclose(f);

@@ -33,8 +33,10 @@ void try_workdir_set_child(long pid);
  * *not_found is set then). */
 int try_process_run(char *const *argv, const char *log_path, int *not_found);
 /* The first lines of a log file (at most max_lines, each cut to 200
- * characters) as one heap string, or NULL. */
+ * characters) as one line joined by " | " (messages are one line), or NULL;
+ * the first line that mentions an error (else the first line). */
 char *try_log_head(const char *path, int max_lines);
+char *try_log_first_error(const char *path);
 
 /* ---- locate.c: where the runtime, the problems and tableaux are --------- */
 /* Fills the include directory and the library paths the driver is compiled

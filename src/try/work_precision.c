@@ -7,8 +7,11 @@
 #include "vigen/progress.h"
 #include "try/try_internal.h"
 
-/* Coarsest steps per period when none is given. */
-#define TRY_WP_BASE 16
+/* Coarsest steps per period when none is given, and the final time in
+ * periods when --time is not given: long enough for the global error to
+ * grow, short enough that the finest level is a few seconds at most. */
+#define TRY_WP_BASE 64
+#define TRY_WP_PERIODS 10
 
 void vigen_try_wp_free(vigen_try_wp_curve *c, size_t n)
 {
@@ -23,8 +26,8 @@ void vigen_try_wp_free(vigen_try_wp_curve *c, size_t n)
     free(c);
 }
 
-static int run_levels(vigen_try_wp_curve *c, const try_build *b, const vigen_try_options *opt, int levels,
-                      vigen_error *err)
+static int run_levels(vigen_try_wp_curve *c, const try_build *b, const vigen_try_options *opt, double period,
+                      int levels, vigen_error *err)
 {
     long base = opt->steps_per_period > 0 ? opt->steps_per_period : TRY_WP_BASE;
     int rc = VIGEN_OK;
@@ -32,6 +35,7 @@ static int run_levels(vigen_try_wp_curve *c, const try_build *b, const vigen_try
         try_plan plan;
         vigen_try_options o = *opt;
         o.h = 0;
+        if (o.time <= 0) o.time = TRY_WP_PERIODS * period;
         if ((rc = try_plan_make(&plan, &o, base << l, err)) != VIGEN_OK) break;
         vigen_progress_set("%s: %lu steps (level %d of %d)", b->label, plan.steps, l + 1, levels);
         vigen_try_result r;
@@ -82,7 +86,7 @@ int vigen_try_work_precision(size_t n, const char *const *methods, const vigen_t
         rc = try_build_method(&b, k, methods[k], &paths, try_cc(opt), 0, err);
         if (rc == VIGEN_OK) {
             c[k].label = vigen_strdup(b.label);
-            rc = run_levels(&c[k], &b, opt, levels, err);
+            rc = run_levels(&c[k], &b, opt, plan.period, levels, err);
         }
         try_build_clear(&b);
     }

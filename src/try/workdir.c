@@ -29,6 +29,7 @@ static volatile sig_atomic_t child_pid;
 static const int handled[] = { SIGINT, SIGTERM, SIGHUP, SIGALRM };
 enum { NHANDLED = sizeof handled / sizeof handled[0] };
 static struct sigaction previous[NHANDLED];
+static int installed[NHANDLED];
 
 /* dir_path + "/" + name into buf, without snprintf (not async-signal-safe). */
 static void join(char *buf, size_t cap, const char *name)
@@ -69,7 +70,6 @@ static void on_signal(int sig)
             previous[k].sa_handler(sig);
             return;
         }
-        if (previous[k].sa_handler == SIG_IGN) return;
     }
     signal(sig, SIG_DFL);
     raise(sig);
@@ -92,7 +92,12 @@ int try_workdir_create(vigen_error *err)
     sa.sa_handler = on_signal;
     sigemptyset(&sa.sa_mask);
     for (int k = 0; k < NHANDLED; k++) sigaddset(&sa.sa_mask, handled[k]);
-    for (int k = 0; k < NHANDLED; k++) sigaction(handled[k], &sa, &previous[k]);
+    /* a signal the process ignores (SIGINT of a background job) stays ignored */
+    for (int k = 0; k < NHANDLED; k++) {
+        sigaction(handled[k], NULL, &previous[k]);
+        installed[k] = previous[k].sa_handler != SIG_IGN;
+        if (installed[k]) sigaction(handled[k], &sa, NULL);
+    }
     active = 1;
     return VIGEN_OK;
 }
@@ -120,7 +125,8 @@ void try_workdir_remove(void)
     remove_all();
     active = 0;
     nfiles = 0;
-    for (int k = 0; k < NHANDLED; k++) sigaction(handled[k], &previous[k], NULL);
+    for (int k = 0; k < NHANDLED; k++)
+        if (installed[k]) sigaction(handled[k], &previous[k], NULL);
     sigprocmask(SIG_SETMASK, &old, NULL);
 }
 

@@ -1,0 +1,97 @@
+#!/bin/bash
+# cli_try.sh VIGEN SRC — `vigen try` on every problem of the collection: a
+# symplectic method (Gauss s = 2) keeps the energy error bounded while the
+# classical RK4 (not symplectic, tests/data/try/rk4.lua) lets it grow, read
+# from the CSV beside the energy plot (the plot's own data); the summary's
+# largest energy error is that of the CSV; the figures are well-formed SVG
+# with one curve per method and PNG of the stated size; problem and
+# parameter listing; and the temporary directory is gone afterwards.
+set -u
+VIGEN=$1
+SRC=$2
+T=$(mktemp -d /tmp/vigen-cli-try-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+export TMPDIR="$T/tmp"
+mkdir -p "$TMPDIR"
+fail=0
+check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
+RK4="$SRC/tests/data/try/rk4.lua"
+
+# The plot data and the figures of one run, checked against each other and
+# against the energy behaviour expected of each method.
+cat > "$T/check_run.py" <<'PY'
+import csv, json, struct, sys, xml.etree.ElementTree as ET
+d, summary = sys.argv[1], json.load(open(sys.argv[2]))
+errors = []
+rows = list(csv.reader(open(d + "/energy.csv")))
+head, data = rows[0], [r for r in rows[1:] if r]
+methods = {m["name"]: m for m in summary["methods"]}
+if head[1:] != ["gauss_2", "rk4"]:
+    errors.append("energy.csv header %r" % head)
+n = len(data)
+if n < 50:
+    errors.append("only %d energy samples" % n)
+curves = 0
+for j, name in enumerate(head[1:], start=1):
+    e = [abs(float(r[j])) for r in data if r[j] != ""]
+    if max(e) > 0:
+        curves += 1
+    # the summary is computed from the same samples
+    if abs(max(e) - methods[name]["energy_error_max"]) > 1e-12 * max(e):
+        errors.append("%s: summary max %g, CSV max %g" % (name, methods[name]["energy_error_max"], max(e)))
+    k = max(1, len(e) // 5)
+    first, last = max(e[1:k + 1]), max(e[-k:])
+    if name == "gauss_2":
+        # bounded: the last fifth at most twice the first (or at round-off)
+        if not (last <= 2 * first or max(e) < 1e-11):
+            errors.append("gauss_2: energy error grows: first fifth %g, last fifth %g" % (first, last))
+    else:
+        # RK4 drifts (linearly: 5 times at the end what it is at a fifth)
+        if not last >= 3 * first:
+            errors.append("rk4: energy error does not grow: first fifth %g, last fifth %g" % (first, last))
+for stem, want in (("energy", curves), ("orbit", 2)):
+    try:
+        root = ET.parse(d + "/" + stem + ".svg").getroot()
+    except ET.ParseError as ex:
+        errors.append("%s.svg is not well-formed: %s" % (stem, ex))
+        continue
+    ids = [g.get("id") for g in root.iter() if (g.get("id") or "").startswith("gnuplot_plot_")]
+    if len(ids) != want:
+        errors.append("%s.svg has %d curves, not %d" % (stem, len(ids), want))
+    png = open(d + "/" + stem + ".png", "rb").read()
+    if png[:8] != b"\x89PNG\r\n\x1a\n" or png[12:16] != b"IHDR":
+        errors.append("%s.png is not a PNG" % stem)
+    elif struct.unpack(">II", png[16:24]) != (800, 560) or len(png) < 2000:
+        errors.append("%s.png: size %r, %d bytes" % (stem, struct.unpack(">II", png[16:24]), len(png)))
+    orows = list(csv.reader(open(d + "/orbit.csv")))
+    if len(orows) < 10 or len(orows[0]) != 4:
+        errors.append("orbit.csv: %d rows, header %r" % (len(orows), orows[0]))
+print("\n".join(errors))
+sys.exit(1 if errors else 0)
+PY
+
+"$VIGEN" try --list-problems > "$T/problems.txt"
+check '[ $? -eq 0 ] && grep -q "^kepler " "$T/problems.txt" && grep -q "^  --param e=" "$T/problems.txt"' "--list-problems lists kepler and its eccentricity"
+"$VIGEN" try --list-methods > "$T/methods.txt"
+check '[ $? -eq 0 ] && [ "$(wc -l < "$T/methods.txt")" -eq "$(ls "$SRC"/tableaux/published/*.lua | wc -l)" ] && grep -qx gauss_2 "$T/methods.txt"' "--list-methods lists tableaux/published"
+
+for p in $(grep -v '^ ' "$T/problems.txt" | cut -d' ' -f1); do
+  "$VIGEN" try gauss_2 "$RK4" --problem "$p" --json --plot "$T/plot-$p" > "$T/$p.json" 2> "$T/$p.err"
+  rc=$?
+  check '[ $rc -eq 0 ]' "$p: exit status $rc ($(head -c 300 "$T/$p.err"))"
+  [ $rc -eq 0 ] || continue
+  if ! python3 "$T/check_run.py" "$T/plot-$p" "$T/$p.json" > "$T/$p.check"; then
+    echo "FAIL: $p: $(cat "$T/$p.check")"
+    fail=1
+  fi
+  check 'grep -q "wrote $T/plot-$p/energy" "$T/$p.err"' "$p: says where the plots are"
+done
+
+# the text summary: one row per method with the measures named in its head
+"$VIGEN" try gauss_2 stormer_verlet_velocity --problem harmonic-oscillator --time 20 > "$T/sum.txt"
+check '[ $? -eq 0 ] && grep -q "max|dE|" "$T/sum.txt" && grep -q "^gauss_2 " "$T/sum.txt" && grep -q "^stormer_verlet_velocity " "$T/sum.txt"' "text summary"
+# Stormer-Verlet: one new gradient each of dH/dq and dH/dp per step (first same as last)
+check 'awk "/^stormer_verlet_velocity /{exit !(\$(NF-1) == 2.00)}" "$T/sum.txt"' "Stormer-Verlet: 2 gradient calls per step"
+
+check '[ -z "$(ls -A "$TMPDIR")" ]' "nothing left in TMPDIR"
+exit $fail
