@@ -1,0 +1,54 @@
+/* mechanics.c — what the problems of unit mass share, H = |p|^2/2 + V(q):
+ * v = dH/dp = p (the Legendre map and its inverse are the identity), and
+ * their Lagrangian L = |v|^2/2 - V(q) = |v|^2 - H(q, v), dL/dq = -dH/dq,
+ * with the constant blocks of second derivatives d2L/dv2 = I, d2L/dqdv = 0. */
+#include <string.h>
+#include "problems_internal.h"
+
+static size_t dim_of(void *ctx) { return ((const vigen_problem *)ctx)->dim; }
+
+void pbi_copy_v(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t; (void)q;
+    memcpy(out, v, dim_of(ctx) * sizeof *out);
+}
+
+void pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t; (void)q; (void)v;
+    size_t n = dim_of(ctx);
+    memset(out, 0, n * n * sizeof *out);
+    for (size_t i = 0; i < n; i++) out[i * n + i] = 1;
+}
+
+void pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t; (void)q; (void)v;
+    size_t n = dim_of(ctx);
+    memset(out, 0, n * n * sizeof *out);
+}
+
+static double unit_mass_L(double t, const double *q, const double *v, void *ctx)
+{
+    const vigen_problem *pb = ctx;
+    vigen_neumaier s = { 0, 0 };
+    for (size_t i = 0; i < pb->dim; i++) vigen_neumaier_add(&s, v[i] * v[i]);
+    vigen_neumaier_add(&s, -pb->ham.H(t, q, v, ctx));
+    return vigen_neumaier_result(&s);
+}
+
+static void unit_mass_dLdq(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    const vigen_problem *pb = ctx;
+    pb->ham.dHdq(t, q, v, out, ctx);
+    for (size_t i = 0; i < pb->dim; i++) out[i] = -out[i];
+}
+
+void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
+                   vigen_lhess_fn d2Ldq2)
+{
+    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = pbi_copy_v, .H = H, .separable = 1 };
+    pb->lag = (vigen_lagrangian){ .dim = pb->dim, .dLdq = unit_mass_dLdq, .dLdv = pbi_copy_v, .L = unit_mass_L,
+                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = pbi_zero_block };
+    pb->legendre_inverse = pbi_copy_v;
+}

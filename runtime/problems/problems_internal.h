@@ -1,0 +1,61 @@
+/* problems_internal.h — what the registry (problems.c) and the problem files
+ * (problem_<id>.c) share: the problem object they fill together and the
+ * setup function of each row of problems.def.
+ *
+ * problems.c parses the parameters, allocates the object and calls the row's
+ * setup, which sets the dimension, the Hamiltonian (ctx = the problem), the
+ * initial value and the rest below; everything not set stays zero/NULL
+ * (no Lagrangian, no invariants, no reference). */
+#ifndef VIGEN_PROBLEMS_INTERNAL_H
+#define VIGEN_PROBLEMS_INTERNAL_H
+
+#include <vigen/problems.h>
+
+typedef double (*pbi_invariant_fn)(const vigen_problem *pb, size_t k, double t, const double *q,
+                                   const double *p);
+typedef int (*pbi_reference_fn)(const vigen_problem *pb, double t, double *q, double *p);
+
+struct vigen_problem {
+    const vigen_problem_info *info;
+    double param[8];              /* values, in the order of info->params */
+    size_t dim;
+    vigen_hamiltonian ham;        /* ctx = this problem */
+    vigen_lagrangian lag;         /* dim 0: none; ctx = this problem */
+    vigen_lgrad_fn legendre_inverse;
+    double t0, *q0, *p0;          /* dim each, allocated by problems.c */
+    double period, default_time;
+    size_t ninvariants;
+    const char *const *invariant_names;
+    pbi_invariant_fn invariant;
+    pbi_reference_fn reference;
+    void *data;                   /* the problem's own, freed with free() */
+};
+
+/* Allocates q0 and p0 (dim entries each, zeroed) after setting pb->dim;
+ * VIGEN_ENOMEM when memory runs out. */
+int pbi_set_dim(vigen_problem *pb, size_t dim);
+
+/* Unit mass (mechanics.c): out = v (dim entries), for dL/dv, dH/dp and the
+ * inverse Legendre map; the identity and the zero dim x dim blocks, for
+ * d2L/dv2 and d2L/dqdv.  ctx is the problem. */
+void pbi_copy_v(double t, const double *q, const double *v, double *out, void *ctx);
+void pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx);
+void pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx);
+
+/* Sets the Hamiltonian H = |p|^2/2 + V(q) (given H and dH/dq; dim set
+ * before), its Lagrangian |v|^2/2 - V(q) with d2L/dq2 = -d2V/dq2 as given,
+ * and the identity as inverse Legendre map. */
+void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
+                   vigen_lhess_fn d2Ldq2);
+
+static inline double pbi_sq(double x) { return x * x; }
+
+#define PBI_PI 3.14159265358979323846
+
+#define PARAM(...)
+#define PROBLEM(id, name, description, ...) int pbi_##id##_setup(vigen_problem *pb);
+#include "problems.def"
+#undef PROBLEM
+#undef PARAM
+
+#endif
