@@ -136,7 +136,7 @@ int vigen_try_wp_plot(const char *dir, const vigen_try_options *opt, const vigen
 /* Empirical order under step halving: errors at h_k = h_0 / 2^k, k < levels
  * (h_0: opt->h, else period / opt->steps_per_period, default 64 steps per
  * period), against the reference solution when the problem has one,
- * otherwise against the solution at h / 2^levels of the same method; the
+ * otherwise against the same method at a step 4 times finer than the finest; the
  * order between successive levels is log2(e_k / e_(k+1)).  certified is the
  * order `vigen check` certifies for the tableau (vigen/check.h; 0 when it
  * certifies none), certified_separable the order for separable H. */

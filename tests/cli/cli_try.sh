@@ -42,9 +42,13 @@ for j, name in enumerate(head[1:], start=1):
     k = max(1, len(e) // 5)
     first, last = max(e[1:k + 1]), max(e[-k:])
     if name == "gauss_2":
-        # bounded: the last fifth at most twice the first (or at round-off)
-        if not (last <= 2 * first or max(e) < 1e-11):
-            errors.append("gauss_2: energy error grows: first fifth %g, last fifth %g" % (first, last))
+        # bounded: the error of the second half at most 1.5 times that of
+        # the first (it oscillates; it may rise while the motion moves into
+        # other parts of phase space, as the FPUT chain's modes exchange
+        # energy, and then stays), or at round-off
+        h1, h2 = max(e[1:len(e) // 2]), max(e[len(e) // 2:])
+        if not (h2 <= 1.5 * h1 or max(e) < 1e-11):
+            errors.append("gauss_2: energy error grows: first half %g, second half %g" % (h1, h2))
     else:
         # RK4 drifts (linearly: 5 times at the end what it is at a fifth)
         if not last >= 3 * first:
