@@ -62,7 +62,8 @@ typedef struct {
     int failed;              /* 1: a step failed; message says where and why */
     char *message;           /* NULL unless failed */
     double h;                /* step used */
-    unsigned long steps;     /* steps done */
+    unsigned long planned;   /* steps asked for */
+    unsigned long steps;     /* steps done (fewer when a step failed) */
     double t_end;            /* time reached */
     double energy_max;       /* max |relative energy error| */
     double energy_drift;     /* least-squares slope of the relative energy error, per unit time */

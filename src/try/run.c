@@ -145,6 +145,7 @@ int try_run_driver(vigen_try_result *r, const try_build *b, const vigen_try_opti
     memset(r, 0, sizeof *r);
     r->label = vigen_strdup(b->label);
     r->h = h;
+    r->planned = steps;
     char hs[40], ns[32], es[32];
     snprintf(hs, sizeof hs, "%.17g", h);
     snprintf(ns, sizeof ns, "%lu", steps);

@@ -20,7 +20,7 @@ void vigen_try_print_summary(FILE *out, const vigen_try_options *opt, const vige
 {
     if (n == 0) return;
     fprintf(out, "%s%s%s: h = %.6g, %lu steps to t = %.6g\n", opt->problem, opt->params && *opt->params ? " " : "",
-            opt->params ? opt->params : "", r[0].h, r[0].steps, r[0].t_end);
+            opt->params ? opt->params : "", r[0].h, r[0].planned, r[0].h * (double)r[0].planned);
     size_t w = 6;
     for (size_t k = 0; k < n; k++) w = strlen(r[k].label) > w ? strlen(r[k].label) : w;
     fprintf(out, "%-*s %9s %9s", (int)w, "method", "max|dE|", "drift/t");
@@ -28,11 +28,12 @@ void vigen_try_print_summary(FILE *out, const vigen_try_options *opt, const vige
     fprintf(out, " %9s %9s %9s\n", "error", "grad/step", "ns/step");
     for (size_t k = 0; k < n; k++) {
         fprintf(out, "%-*s", (int)w, r[k].label);
-        num(out, r[k].energy_max, 9);
+        num(out, r[k].steps ? r[k].energy_max : NAN, 9);
         num(out, r[k].energy_drift, 9);
         for (size_t i = 0; i < r[k].ninv; i++) num(out, r[k].inv_max[i], inv_width(r[k].inv_names[i]));
         num(out, r[k].global_error, 9);
-        fprintf(out, " %9.2f %9.1f\n", r[k].grad_per_step, r[k].ns_per_step);
+        if (r[k].steps == 0) fprintf(out, " %9s %9s\n", "-", "-");
+        else fprintf(out, " %9.2f %9.1f\n", r[k].grad_per_step, r[k].ns_per_step);
         if (r[k].failed) fprintf(out, "  %s\n", r[k].message);
     }
     fputs("max|dE|: largest relative energy error; drift/t: its least-squares slope per unit time;\n", out);

@@ -97,5 +97,14 @@ check '[ $? -eq 0 ] && grep -q "max|dE|" "$T/sum.txt" && grep -q "^gauss_2 " "$T
 # Stormer-Verlet: one new gradient each of dH/dq and dH/dp per step (first same as last)
 check 'awk "/^stormer_verlet_velocity /{exit !(\$(NF-1) == 2.00)}" "$T/sum.txt"' "Stormer-Verlet: 2 gradient calls per step"
 
+# the progress line: on a terminal (script(1) gives one) for a run of more
+# than a second, erased at the end; never in a pipe or file
+if command -v script > /dev/null; then
+  script -qec "'$VIGEN' try gauss_2 --problem harmonic-oscillator --h 0.001 --time 5000" "$T/tty.log" > /dev/null 2>&1
+  check 'grep -q "vigen try: gauss_2: .*([0-9]* s)" "$T/tty.log" && grep -q $'"'"'\r\e\[K'"'"' "$T/tty.log"' "progress line on a terminal"
+fi
+"$VIGEN" try gauss_2 --problem harmonic-oscillator --h 0.001 --time 5000 > /dev/null 2> "$T/pipe.err"
+check '[ ! -s "$T/pipe.err" ]' "no progress line when standard error is a file"
+
 check '[ -z "$(ls -A "$TMPDIR")" ]' "nothing left in TMPDIR"
 exit $fail
