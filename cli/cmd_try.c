@@ -32,7 +32,8 @@ static int work_precision(const vigen_cli_args *args, size_t n, const char **met
     vigen_try_wp_curve *c = NULL;
     if (vigen_try_work_precision(n, methods, opt, (int)levels, &c, &err) != VIGEN_OK)
         return vigen_cli_fail(args->command, &err);
-    vigen_try_wp_print(stdout, c, n);
+    if (args->value[VIGEN_OPT_try_json]) vigen_try_wp_print_json(stdout, opt, c, n);
+    else vigen_try_wp_print(stdout, c, n);
     int status = 0;
     const char *dir = args->value[VIGEN_OPT_try_plot];
     if (dir && vigen_try_wp_plot(dir, opt, c, n, &err) != VIGEN_OK) status = vigen_cli_fail(args->command, &err);

@@ -129,6 +129,9 @@ int vigen_try_work_precision(size_t n, const char *const *methods, const vigen_t
                              vigen_try_wp_curve **curves, vigen_error *err);
 void vigen_try_wp_free(vigen_try_wp_curve *c, size_t n);
 void vigen_try_wp_print(FILE *out, const vigen_try_wp_curve *c, size_t n);
+/* {"problem", "params", "error_is_energy", "methods": [{"name", "points":
+ * [{"h", "evals", "seconds", "error"}], "failed"}]} */
+void vigen_try_wp_print_json(FILE *out, const vigen_try_options *opt, const vigen_try_wp_curve *c, size_t n);
 /* work_precision_evals.{csv,svg,png} and work_precision_seconds.{csv,svg,png}
  * (the same data beside each figure): one curve per method, log-log. */
 int vigen_try_wp_plot(const char *dir, const vigen_try_options *opt, const vigen_try_wp_curve *c, size_t n,

@@ -41,7 +41,7 @@ void vigen_try_print_summary(FILE *out, const vigen_try_options *opt, const vige
           "and dH/dp calls per step\n", out);
 }
 
-static void jnum(FILE *out, double v)
+void try_json_number(FILE *out, double v)
 {
     if (isfinite(v)) fprintf(out, "%.17g", v);
     else fputs("null", out);
@@ -58,26 +58,26 @@ void vigen_try_print_json(FILE *out, const vigen_try_options *opt, const vigen_t
         fputs(k ? ", {\"name\": " : "{\"name\": ", out);
         vigen_json_write_string(out, r[k].label);
         fputs(", \"h\": ", out);
-        jnum(out, r[k].h);
+        try_json_number(out, r[k].h);
         fprintf(out, ", \"steps\": %lu, \"t_end\": ", r[k].steps);
-        jnum(out, r[k].t_end);
+        try_json_number(out, r[k].t_end);
         fputs(", \"energy_error_max\": ", out);
-        jnum(out, r[k].energy_max);
+        try_json_number(out, r[k].energy_max);
         fputs(", \"energy_drift\": ", out);
-        jnum(out, r[k].energy_drift);
+        try_json_number(out, r[k].energy_drift);
         fputs(", \"invariants\": {", out);
         for (size_t i = 0; i < r[k].ninv; i++) {
             if (i) fputs(", ", out);
             vigen_json_write_string(out, r[k].inv_names[i]);
             fputs(": ", out);
-            jnum(out, r[k].inv_max[i]);
+            try_json_number(out, r[k].inv_max[i]);
         }
         fputs("}, \"global_error\": ", out);
-        jnum(out, r[k].global_error);
+        try_json_number(out, r[k].global_error);
         fputs(", \"grad_evals_per_step\": ", out);
-        jnum(out, r[k].grad_per_step);
+        try_json_number(out, r[k].grad_per_step);
         fputs(", \"ns_per_step\": ", out);
-        jnum(out, r[k].ns_per_step);
+        try_json_number(out, r[k].ns_per_step);
         fputs(", \"failed\": ", out);
         if (r[k].failed) vigen_json_write_string(out, r[k].message);
         else fputs("null", out);

@@ -5,6 +5,7 @@
 #define VIGEN_TRY_INTERNAL_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include "vigen/error.h"
 #include "vigen/try.h"
 
@@ -104,6 +105,10 @@ int try_plot_dir(const char *dir, vigen_error *err);
 /* ---- try.c -------------------------------------------------------------- */
 /* The C compiler: opt->cc, else $CC, else "cc". */
 const char *try_cc(const vigen_try_options *opt);
+
+/* ---- summary.c ---------------------------------------------------------- */
+/* A JSON number, or null when v is not finite. */
+void try_json_number(FILE *out, double v);
 
 /* ---- stats.c ------------------------------------------------------------ */
 /* Least-squares slope of y against x (compensated sums); NaN for n < 2. */

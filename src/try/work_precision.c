@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/progress.h"
+#include "report/json.h"
 #include "try/try_internal.h"
 
 /* Coarsest steps per period when none is given, and the final time in
@@ -113,6 +114,36 @@ void vigen_try_wp_print(FILE *out, const vigen_try_wp_curve *c, size_t n)
         if (c[k].message) fprintf(out, "  %s\n", c[k].message);
     }
     if (energy) fputs("the problem has no reference solution: the error is the largest relative energy error\n", out);
+}
+
+void vigen_try_wp_print_json(FILE *out, const vigen_try_options *opt, const vigen_try_wp_curve *c, size_t n)
+{
+    fputs("{\"problem\": ", out);
+    vigen_json_write_string(out, opt->problem);
+    fputs(", \"params\": ", out);
+    vigen_json_write_string(out, opt->params ? opt->params : "");
+    fprintf(out, ", \"error_is_energy\": %s, \"methods\": [", n > 0 && c[0].error_is_energy ? "true" : "false");
+    for (size_t k = 0; k < n; k++) {
+        fputs(k ? ", {\"name\": " : "{\"name\": ", out);
+        vigen_json_write_string(out, c[k].label);
+        fputs(", \"points\": [", out);
+        for (size_t i = 0; i < c[k].npoints; i++) {
+            fputs(i ? ", {\"h\": " : "{\"h\": ", out);
+            try_json_number(out, c[k].h[i]);
+            fputs(", \"evals\": ", out);
+            try_json_number(out, c[k].evals[i]);
+            fputs(", \"seconds\": ", out);
+            try_json_number(out, c[k].seconds[i]);
+            fputs(", \"error\": ", out);
+            try_json_number(out, c[k].error[i]);
+            fputs("}", out);
+        }
+        fputs("], \"failed\": ", out);
+        if (c[k].message) vigen_json_write_string(out, c[k].message);
+        else fputs("null", out);
+        fputs("}", out);
+    }
+    fputs("]}\n", out);
 }
 
 static int wp_figure(const char *dir, const char *stem, const char *xcol, const char *xlabel,

@@ -97,6 +97,29 @@ check '[ $? -eq 0 ] && grep -q "max|dE|" "$T/sum.txt" && grep -q "^gauss_2 " "$T
 # Stormer-Verlet: one new gradient each of dH/dq and dH/dp per step (first same as last)
 check 'awk "/^stormer_verlet_velocity /{exit !(\$(NF-1) == 2.00)}" "$T/sum.txt"' "Stormer-Verlet: 2 gradient calls per step"
 
+# work-precision: the error falls by 2^p per halving of the step (p = 4 for
+# Gauss s = 2, 2 for Stormer-Verlet: their orders) while the gradient
+# evaluations double (Verlet: exactly, one of each gradient per step); two
+# curves in each figure
+"$VIGEN" try gauss_2 stormer_verlet_velocity --problem harmonic-oscillator --work-precision --levels 3 --json --plot "$T/wp" > "$T/wp.json" 2> "$T/wp.err"
+rc=$?
+check '[ $rc -eq 0 ]' "work-precision: exit $rc ($(cat "$T/wp.err"))"
+check 'python3 -c "
+import json, sys
+o = json.load(open(sys.argv[1]))
+ok = not o[\"error_is_energy\"]
+for m, p in zip(o[\"methods\"], (4, 2)):
+    pts = m[\"points\"]
+    ok = ok and len(pts) == 3
+    for a, b in zip(pts, pts[1:]):
+        ok = ok and abs(a[\"error\"] / b[\"error\"] / 2**p - 1) < 0.15 and b[\"evals\"] > 1.5 * a[\"evals\"]
+    if m[\"name\"] == \"stormer_verlet_velocity\":
+        ok = ok and all(abs(b[\"evals\"] / a[\"evals\"] - 2) < 1e-3 for a, b in zip(pts, pts[1:]))
+sys.exit(0 if ok else 1)" "$T/wp.json"' "work-precision: errors fall as h^p, costs double ($(cat "$T/wp.json"))"
+for f in work_precision_evals work_precision_seconds; do
+  check 'python3 -c "import xml.etree.ElementTree as E,sys; r=E.parse(sys.argv[1]).getroot(); sys.exit(0 if len([g for g in r.iter() if (g.get(\"id\") or \"\").startswith(\"gnuplot_plot_\")]) == 2 else 1)" "$T/wp/$f.svg" && [ "$(head -c 4 "$T/wp/$f.png" | tail -c 3)" = PNG ] && [ "$(wc -l < "$T/wp/$f.csv")" -eq 7 ]' "$f: SVG with 2 curves, PNG, CSV of 6 points"
+done
+
 # the progress line: on a terminal (script(1) gives one) for a run of more
 # than a second, erased at the end; never in a pipe or file
 if command -v script > /dev/null; then
