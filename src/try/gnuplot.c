@@ -31,10 +31,8 @@ char *try_gnuplot_quote(const char *s)
 
 int try_plot_dir(const char *dir, vigen_error *err)
 {
-    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-        return vigen_error_set(err, VIGEN_E_WRITE, "cannot create the plot directory %s: %s", dir, strerror(errno));
     struct stat st;
-    if (stat(dir, &st) != 0 || !S_ISDIR(st.st_mode))
+    if (stat(dir, &st) == 0 && !S_ISDIR(st.st_mode))
         return vigen_error_set(err, VIGEN_E_WRITE, "%s is not a directory (give --plot a directory)", dir);
     return VIGEN_OK;
 }
@@ -95,7 +93,31 @@ static int run_gnuplot(const char *script_path, const char *stem, vigen_error *e
     return rc;
 }
 
-int try_plot_files(const char *dir, const char *stem, const char *csv, const char *script, vigen_error *err)
+void try_figures_clear(try_figures *f)
+{
+    for (size_t i = 0; i < f->n; i++) {
+        free(f->path[i]);
+        free(f->data[i]);
+    }
+    memset(f, 0, sizeof *f);
+}
+
+/* Takes path and data (heap) into f. */
+static void add_file(try_figures *f, char *path, char *data, size_t len, int binary)
+{
+    if (f->n >= TRY_MAX_FIGURE_FILES) {
+        free(path);
+        free(data);
+        return;
+    }
+    f->path[f->n] = path;
+    f->data[f->n] = data;
+    f->len[f->n] = len;
+    f->binary[f->n++] = binary;
+}
+
+int try_plot_files(try_figures *figs, const char *dir, const char *stem, const char *csv, const char *script,
+                   vigen_error *err)
 {
     char *names[4];
     const char *ext[4] = { "csv", "gp", "svg", "png" };
@@ -130,15 +152,10 @@ int try_plot_files(const char *dir, const char *stem, const char *csv, const cha
         vigen_error_prefix(err, "gnuplot wrote no figure: ");
     }
     if (rc == VIGEN_OK) {
-        char *csv_path = vigen_strdup_printf("%s/%s", dir, names[0]);
-        char *svg_path = vigen_strdup_printf("%s/%s", dir, names[2]);
-        char *png_path = vigen_strdup_printf("%s/%s", dir, names[3]);
-        const char *paths[2] = { csv_path, svg_path }, *texts[2] = { csv, svg_text };
-        rc = vigen_write_files_atomic(2, paths, texts, err);
-        if (rc == VIGEN_OK) rc = write_binary_atomic(png_path, png_data, png_len, err);
-        free(csv_path);
-        free(svg_path);
-        free(png_path);
+        add_file(figs, vigen_strdup_printf("%s/%s", dir, names[0]), vigen_strdup(csv), strlen(csv), 0);
+        add_file(figs, vigen_strdup_printf("%s/%s", dir, names[2]), svg_text, svg_len, 0);
+        add_file(figs, vigen_strdup_printf("%s/%s", dir, names[3]), png_data, png_len, 1);
+        svg_text = png_data = NULL;
     }
     free(svg_text);
     free(png_data);
@@ -151,5 +168,23 @@ int try_plot_files(const char *dir, const char *stem, const char *csv, const cha
         free(work[i]);
         free(names[i]);
     }
+    return rc;
+}
+
+int try_figures_commit(try_figures *f, const char *dir, vigen_error *err)
+{
+    if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+        return vigen_error_set(err, VIGEN_E_WRITE, "cannot create the plot directory %s: %s", dir, strerror(errno));
+    const char *paths[TRY_MAX_FIGURE_FILES], *texts[TRY_MAX_FIGURE_FILES];
+    size_t nt = 0;
+    for (size_t i = 0; i < f->n; i++)
+        if (!f->binary[i]) {
+            paths[nt] = f->path[i];
+            texts[nt++] = f->data[i];
+        }
+    /* the data and the SVG figures as one unit, then each PNG */
+    int rc = vigen_write_files_atomic(nt, paths, texts, err);
+    for (size_t i = 0; i < f->n && rc == VIGEN_OK; i++)
+        if (f->binary[i]) rc = write_binary_atomic(f->path[i], f->data[i], f->len[i], err);
     return rc;
 }

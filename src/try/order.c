@@ -191,9 +191,13 @@ int vigen_try_order_plot(const char *dir, const vigen_try_options *opt, const vi
                         p, p);
     free(label);
     free(prob);
-    rc = try_plot_files(dir, "order", csv.data, gp.data, err);
+    try_figures figs;
+    memset(&figs, 0, sizeof figs);
+    rc = try_plot_files(&figs, dir, "order", csv.data, gp.data, err);
     vigen_strbuf_clear(&csv);
     vigen_strbuf_clear(&gp);
     try_workdir_remove();
+    if (rc == VIGEN_OK) rc = try_figures_commit(&figs, dir, err);
+    try_figures_clear(&figs);
     return rc;
 }

@@ -70,9 +70,11 @@ static char *title(const vigen_try_options *opt, const char *what)
     return q;
 }
 
-static int plot_energy(const char *dir, const vigen_try_options *opt, const vigen_try_result *r, size_t n,
+static int plot_energy(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
+                       size_t n,
                        vigen_error *err);
-static int plot_orbit(const char *dir, const vigen_try_options *opt, const vigen_try_result *r, size_t n,
+static int plot_orbit(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
+                      size_t n,
                       vigen_error *err);
 
 int vigen_try_plot(const char *dir, const vigen_try_options *opt, const vigen_try_result *r, size_t n,
@@ -81,14 +83,19 @@ int vigen_try_plot(const char *dir, const vigen_try_options *opt, const vigen_tr
     int rc = try_plot_dir(dir, err);
     if (rc == VIGEN_OK) rc = try_workdir_create(err);
     if (rc != VIGEN_OK) return rc;
-    rc = plot_energy(dir, opt, r, n, err);
-    if (rc == VIGEN_OK) rc = plot_orbit(dir, opt, r, n, err);
+    try_figures figs;
+    memset(&figs, 0, sizeof figs);
+    rc = plot_energy(&figs, dir, opt, r, n, err);
+    if (rc == VIGEN_OK) rc = plot_orbit(&figs, dir, opt, r, n, err);
     try_workdir_remove();
+    if (rc == VIGEN_OK) rc = try_figures_commit(&figs, dir, err);
+    try_figures_clear(&figs);
     return rc;
 }
 
 /* Methods whose error is ever non-zero (a log scale shows no zero). */
-static int plot_energy(const char *dir, const vigen_try_options *opt, const vigen_try_result *r, size_t n,
+static int plot_energy(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
+                       size_t n,
                        vigen_error *err)
 {
     vigen_strbuf gp;
@@ -110,13 +117,14 @@ static int plot_energy(const char *dir, const vigen_try_options *opt, const vige
     if (curves == 0) vigen_strbuf_append(&gp, "unset logscale y\nset format y\nplot datafile using 1:2 with lines title \"all zero\"");
     vigen_strbuf_append(&gp, "\n");
     char *csv = energy_csv(r, n);
-    int rc = try_plot_files(dir, "energy", csv, gp.data, err);
+    int rc = try_plot_files(figs, dir, "energy", csv, gp.data, err);
     free(csv);
     vigen_strbuf_clear(&gp);
     return rc;
 }
 
-static int plot_orbit(const char *dir, const vigen_try_options *opt, const vigen_try_result *r, size_t n,
+static int plot_orbit(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
+                      size_t n,
                       vigen_error *err)
 {
     vigen_strbuf gp;
@@ -136,7 +144,7 @@ static int plot_orbit(const char *dir, const vigen_try_options *opt, const vigen
     }
     vigen_strbuf_append(&gp, "\n");
     char *csv = orbit_csv(r, n, xname, yname);
-    int rc = try_plot_files(dir, "orbit", csv, gp.data, err);
+    int rc = try_plot_files(figs, dir, "orbit", csv, gp.data, err);
     free(csv);
     vigen_strbuf_clear(&gp);
     return rc;

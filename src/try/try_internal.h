@@ -92,14 +92,27 @@ typedef struct {
 int try_plan_make(try_plan *plan, const vigen_try_options *opt, long spp, vigen_error *err);
 
 /* ---- gnuplot.c ---------------------------------------------------------- */
-/* Writes csv to dir/stem.csv and runs script (gnuplot commands that read the
- * data from the file named by the variable `datafile` and draw one figure;
- * the terminal and output are set here) twice, for dir/stem.svg and
- * dir/stem.png; the four files are written atomically as a unit. */
-int try_plot_files(const char *dir, const char *stem, const char *csv, const char *script, vigen_error *err);
+/* The files of the figures of one command, collected until all are drawn. */
+#define TRY_MAX_FIGURE_FILES 12
+typedef struct {
+    size_t n;
+    char *path[TRY_MAX_FIGURE_FILES], *data[TRY_MAX_FIGURE_FILES];
+    size_t len[TRY_MAX_FIGURE_FILES];
+    int binary[TRY_MAX_FIGURE_FILES];
+} try_figures;
+/* Runs script (gnuplot commands that read the data from the file named by
+ * the variable `datafile` and draw one figure; the terminal and output are
+ * set here) on csv, for an SVG and a PNG, and adds dir/stem.csv,
+ * dir/stem.svg and dir/stem.png to figs. */
+int try_plot_files(try_figures *figs, const char *dir, const char *stem, const char *csv, const char *script,
+                   vigen_error *err);
+/* Creates dir (one level) if missing and writes the collected files: the
+ * texts as one atomic unit, then each PNG atomically. */
+int try_figures_commit(try_figures *figs, const char *dir, vigen_error *err);
+void try_figures_clear(try_figures *figs);
 /* A title/label text safe inside a gnuplot double-quoted string. */
 char *try_gnuplot_quote(const char *s);
-/* Creates dir (one level) unless it exists. */
+/* VIGEN_E_WRITE when dir exists and is not a directory. */
 int try_plot_dir(const char *dir, vigen_error *err);
 
 /* ---- try.c -------------------------------------------------------------- */

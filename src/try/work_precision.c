@@ -146,7 +146,7 @@ void vigen_try_wp_print_json(FILE *out, const vigen_try_options *opt, const vige
     fputs("]}\n", out);
 }
 
-static int wp_figure(const char *dir, const char *stem, const char *xcol, const char *xlabel,
+static int wp_figure(try_figures *figs, const char *dir, const char *stem, const char *xcol, const char *xlabel,
                      const vigen_try_options *opt, const vigen_try_wp_curve *c, size_t n, const char *csv,
                      vigen_error *err)
 {
@@ -174,7 +174,7 @@ static int wp_figure(const char *dir, const char *stem, const char *xcol, const 
     }
     if (curves == 0) vigen_strbuf_append(&gp, "plot 1/0 notitle");
     vigen_strbuf_append(&gp, "\n");
-    int rc = try_plot_files(dir, stem, csv, gp.data, err);
+    int rc = try_plot_files(figs, dir, stem, csv, gp.data, err);
     vigen_strbuf_clear(&gp);
     return rc;
 }
@@ -195,10 +195,14 @@ int vigen_try_wp_plot(const char *dir, const vigen_try_options *opt, const vigen
                                 c[k].seconds[i], c[k].error[i]);
         free(label);
     }
-    rc = wp_figure(dir, "work_precision_evals", "evals", "gradient evaluations", opt, c, n, csv.data, err);
+    try_figures figs;
+    memset(&figs, 0, sizeof figs);
+    rc = wp_figure(&figs, dir, "work_precision_evals", "evals", "gradient evaluations", opt, c, n, csv.data, err);
     if (rc == VIGEN_OK)
-        rc = wp_figure(dir, "work_precision_seconds", "seconds", "seconds", opt, c, n, csv.data, err);
+        rc = wp_figure(&figs, dir, "work_precision_seconds", "seconds", "seconds", opt, c, n, csv.data, err);
     vigen_strbuf_clear(&csv);
     try_workdir_remove();
+    if (rc == VIGEN_OK) rc = try_figures_commit(&figs, dir, err);
+    try_figures_clear(&figs);
     return rc;
 }

@@ -53,6 +53,24 @@ rc=$?
 check '[ $rc -eq 3 ] && grep -q "stormer_verlet_velocity: the C compiler .* failed" "$T/err" && grep -q "broken.h" "$T/err" && [ ! -s "$T/out" ]' "compile error: exit 3, names the method, shows the compiler's first lines ($(cat "$T/err"))"
 check 'empty_tmp' "nothing left in TMPDIR after a compile error"
 
+# gnuplot missing, or failing on its second figure: no figure, no data, no
+# directory is written (the figures are written when all are drawn)
+GNUPLOT=/nonexistent "$VIGEN" try stormer_verlet_velocity --problem kepler --time 10 --plot "$T/p3" > /dev/null 2> "$T/err"
+rc=$?
+check '[ $rc -eq 3 ] && grep -q "cannot run gnuplot ./nonexistent." "$T/err" && grep -q "gnuplot-nox" "$T/err" && [ ! -e "$T/p3" ]' "no gnuplot: exit 3, nothing written ($(cat "$T/err"))"
+cat > "$T/gnuplot-once" <<SH
+#!/bin/sh
+# draws the first figure, fails on the next
+if [ -e "$T/drawn" ]; then echo "gnuplot: error: made to fail" >&2; exit 1; fi
+touch "$T/drawn"
+exec gnuplot "\$@"
+SH
+chmod +x "$T/gnuplot-once"
+GNUPLOT="$T/gnuplot-once" "$VIGEN" try stormer_verlet_velocity --problem kepler --time 10 --plot "$T/p4" > /dev/null 2> "$T/err"
+rc=$?
+check '[ $rc -eq 3 ] && grep -q "gnuplot failed on orbit (status 1): gnuplot: error: made to fail" "$T/err" && [ ! -e "$T/p4" ]' "gnuplot failing on the second figure: exit 3, nothing written ($(cat "$T/err"))"
+check 'empty_tmp' "nothing left in TMPDIR after gnuplot failures"
+
 # an explicit method far beyond its stability bound: the state overflows
 "$VIGEN" try stormer_verlet_velocity --problem harmonic-oscillator --param omega=1000 --h 1 --time 100000 > "$T/out" 2> "$T/err"
 rc=$?
