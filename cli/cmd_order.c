@@ -20,6 +20,7 @@ int vigen_cmd_order(const vigen_cli_args *args)
                               args->value[VIGEN_OPT_order_time], &err) != VIGEN_OK) {
         rc = vigen_cli_usage_error(args->command, "%s", err.message);
         vigen_error_clear(&err);
+        free((char *)opt.params);
         return rc;
     }
     opt.progress = 1;

@@ -79,6 +79,7 @@ int vigen_cmd_try(const vigen_cli_args *args)
         free(text);
         int rc = vigen_cli_usage_error(args->command, "%s", err.message);
         vigen_error_clear(&err);
+        free((char *)opt.params);
         return rc;
     }
     opt.progress = 1;

@@ -173,13 +173,17 @@ static int repeats(const char *kind)
 
 /* A repeatable operand or option collects its words, one per line, in a
  * string that lives as long as the process (the parsed arguments hold
- * pointers into argv otherwise); a word with a newline cannot be one of
- * them. */
-static int collect(const char **slot, const char *word, int command, const char *what)
+ * pointers into argv otherwise), kept here; a word with a newline cannot be
+ * one of them. */
+static char *collected[VIGEN_OPT_COUNT + 1]; /* per option, and the operand last */
+
+static int collect(const char **slot, int index, const char *word, int command, const char *what)
 {
     if (strchr(word, '\n'))
         return vigen_cli_usage_error(command, "%s cannot contain a newline", what);
     char *joined = *slot ? vigen_strdup_printf("%s\n%s", *slot, word) : vigen_strdup(word);
+    free(collected[index]);
+    collected[index] = joined;
     *slot = joined;
     return -1;
 }
@@ -195,7 +199,7 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
             if (operand_kind[0] == '\0')
                 return vigen_cli_usage_error(command, "takes no operand, not '%s'", word);
             if (repeats(operand_kind)) {
-                int rc = collect(&args->operand, word, command, operand_kind);
+                int rc = collect(&args->operand, VIGEN_OPT_COUNT, word, command, operand_kind);
                 if (rc >= 0) return rc;
                 continue;
             }
@@ -219,7 +223,7 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
             if (eq) return vigen_cli_usage_error(command, "%s takes no value, not '%s'", vigen_cli_option_name(k), eq + 1);
             args->value[k] = "";
         } else if (repeats(o->metavar) && (eq || i + 1 < argc)) {
-            int rc = collect(&args->value[k], eq ? eq + 1 : argv[++i], command, o->metavar);
+            int rc = collect(&args->value[k], k, eq ? eq + 1 : argv[++i], command, o->metavar);
             if (rc >= 0) return rc;
         } else if (eq) args->value[k] = eq + 1;
         else if (i + 1 < argc) args->value[k] = argv[++i];
