@@ -1,9 +1,16 @@
-# VigenStepper.cmake — vigen_add_stepper: compile a tableau into a stepper
-# library at build time.  Included by vigenConfig.cmake (find_package(vigen)).
+# VigenStepper.cmake — vigen_add_stepper: compile a tableau (or a spec,
+# generated into a tableau first) into a stepper library at build time.
+# Included by vigenConfig.cmake (find_package(vigen)).
 #
 #   vigen_add_stepper(TARGET <target> TABLEAU <file.lua> NAME <name>
 #                     [REAL double|long-double|float128]
 #                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT])
+#   vigen_add_stepper(TARGET <target> SPEC <spec.lua> [DIGITS <n>] NAME <name> ...)
+#
+# With SPEC, a first rule runs
+#   vigen generate <spec.lua> --digits <n> -o <dir>/<name>.tableau.lua -q
+# (DIGITS defaults to 40, enough for every REAL; re-run when the spec or the
+# vigen executable changes) and the tableau it writes is emitted as below.
 #
 # adds a build rule that runs
 #   vigen emit <file.lua> --name <name> --real <REAL> -o <dir> -q
@@ -13,23 +20,35 @@
 # <target> compiled from <name>.c, with <dir> on its public include path and
 # linked to vigen::runtime.  A program then does
 #   target_link_libraries(app PRIVATE <target>)
-# and `#include "<name>.h"`.  TABLEAU is relative to the current source
-# directory.  NAME must be a C identifier (it prefixes every emitted symbol)
-# and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
+# and `#include "<name>.h"`.  TABLEAU and SPEC are relative to the current
+# source directory; exactly one of them is given.  NAME must be a C
+# identifier (it prefixes every emitted symbol) and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
 # REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
 # decimal entries as written when they have too few digits for REAL).
 # Compile the program without -ffast-math (the emitted code refuses it).
 
 function(vigen_add_stepper)
-  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT" "TARGET;TABLEAU;NAME;REAL;OUTPUT_DIR" "")
+  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR" "")
   if(VAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "vigen_add_stepper: unknown arguments: ${VAS_UNPARSED_ARGUMENTS}")
   endif()
-  foreach(req TARGET TABLEAU NAME)
+  foreach(req TARGET NAME)
     if(NOT VAS_${req})
       message(FATAL_ERROR "vigen_add_stepper: ${req} is required")
     endif()
   endforeach()
+  if((VAS_TABLEAU AND VAS_SPEC) OR (NOT VAS_TABLEAU AND NOT VAS_SPEC))
+    message(FATAL_ERROR "vigen_add_stepper: give either TABLEAU <file> or SPEC <file> (exactly one)")
+  endif()
+  if(DEFINED VAS_DIGITS AND NOT VAS_SPEC)
+    message(FATAL_ERROR "vigen_add_stepper: DIGITS goes with SPEC (a TABLEAU file has its digits already)")
+  endif()
+  if(NOT DEFINED VAS_DIGITS)
+    set(VAS_DIGITS 40)
+  endif()
+  if(NOT VAS_DIGITS MATCHES "^[1-9][0-9]*$" OR VAS_DIGITS GREATER 100000)
+    message(FATAL_ERROR "vigen_add_stepper: DIGITS must be an integer from 1 to 100000, not '${VAS_DIGITS}'")
+  endif()
   if(NOT TARGET vigen::vigen OR NOT TARGET vigen::runtime)
     message(FATAL_ERROR "vigen_add_stepper: targets vigen::vigen and vigen::runtime not found; "
                         "use find_package(vigen REQUIRED) first")
@@ -56,11 +75,25 @@ function(vigen_add_stepper)
     message(FATAL_ERROR "vigen_add_stepper: REAL must be double, long-double or float128, not '${VAS_REAL}'")
   endif()
 
-  get_filename_component(tableau "${VAS_TABLEAU}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
   if(VAS_OUTPUT_DIR)
     get_filename_component(outdir "${VAS_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
   else()
     set(outdir "${CMAKE_CURRENT_BINARY_DIR}/vigen/${VAS_TARGET}")
+  endif()
+  if(VAS_SPEC)
+    # the spec's tableau, generated into the build tree before it is emitted
+    get_filename_component(spec "${VAS_SPEC}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    get_filename_component(spec_base "${spec}" NAME)
+    set(tableau "${outdir}/${VAS_NAME}.tableau.lua")
+    add_custom_command(
+      OUTPUT "${tableau}"
+      COMMAND "${CMAKE_COMMAND}" -E make_directory "${outdir}"
+      COMMAND "$<TARGET_FILE:vigen::vigen>" generate "${spec}" --digits "${VAS_DIGITS}" -o "${tableau}" -q
+      DEPENDS "${spec}" vigen::vigen
+      COMMENT "vigen generate ${spec_base} --digits ${VAS_DIGITS}"
+      VERBATIM)
+  else()
+    get_filename_component(tableau "${VAS_TABLEAU}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
   endif()
 
   set(extra)

@@ -127,6 +127,27 @@ static void d2Ldq2(double t, const double *q, const double *v, double *out, void
     out[4] = yy;
 }
 
+/* The Hessian of H with w = p - A(q), x = (q, p):
+ *   d2H/dq_i dq_k = sum_j dA_j/dq_i dA_j/dq_k - d2L/dq_i dq_k (q, w),
+ *   d2H/dq_i dp_j = d2H/dp_j dq_i = -dA_j/dq_i,   d2H/dp2 = I. */
+static void hessian(double t, const double *q, const double *p, double *out, void *ctx)
+{
+    double A[3], dA[3][3], w[3], Lqq[9];
+    vector_potential(q, A, dA);
+    for (int j = 0; j < 3; j++) w[j] = p[j] - A[j];
+    d2Ldq2(t, q, w, Lqq, ctx);
+    for (int k = 0; k < 36; k++) out[k] = 0;
+    for (int i = 0; i < 3; i++) {
+        for (int k = 0; k < 3; k++) {
+            double s = dA[i][0] * dA[k][0] + dA[i][1] * dA[k][1] + dA[i][2] * dA[k][2];
+            out[i * 6 + k] = s - Lqq[3 * i + k];
+            out[i * 6 + 3 + k] = -dA[i][k];
+            out[(3 + k) * 6 + i] = -dA[i][k];
+        }
+        out[(3 + i) * 6 + 3 + i] = 1;
+    }
+}
+
 static const char *const names[] = { "canonical-angular-momentum" };
 
 static double invariant(const vigen_problem *pb, size_t k, double t, const double *q, const double *p)
@@ -139,7 +160,7 @@ int pbi_charged_particle_setup(vigen_problem *pb)
 {
     static const double x0[3] = { 0, 1, 0.1 }, v0[3] = { 0.09, 0.05, 0.2 };
     if (pbi_set_dim(pb, 3) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = velocity, .H = energy, .separable = 0 };
+    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = velocity, .H = energy, .separable = 0, .hessian = hessian };
     pb->lag = (vigen_lagrangian){ .dim = 3, .dLdq = dLdq, .dLdv = dLdv, .L = lagrangian,
                                   .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = d2Ldqdv };
     pb->legendre_inverse = velocity;

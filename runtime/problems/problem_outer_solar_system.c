@@ -142,6 +142,15 @@ static void d2Ldq2(double t, const double *q, const double *v, double *out, void
         }
 }
 
+/* [[d2V/dq2, 0], [0, diag(1/m)]] */
+static void hessian(double t, const double *q, const double *p, double *out, void *ctx)
+{
+    (void)p;
+    enum { N = 3 * NBODY };
+    pbi_separable_hessian(ctx, t, q, out);
+    for (int k = 0; k < N; k++) out[(N + k) * 2 * N + N + k] = 1 / mass[k / 3];
+}
+
 static const char *const names[] = { "momentum-x", "momentum-y", "momentum-z",
                                      "angular-momentum-x", "angular-momentum-y", "angular-momentum-z" };
 
@@ -166,7 +175,7 @@ static double invariant(const vigen_problem *pb, size_t k, double t, const doubl
 int pbi_outer_solar_system_setup(vigen_problem *pb)
 {
     if (pbi_set_dim(pb, 3 * NBODY) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = dHdp, .H = energy, .separable = 1 };
+    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = dHdp, .H = energy, .separable = 1, .hessian = hessian };
     pb->lag = (vigen_lagrangian){ .dim = 3 * NBODY, .dLdq = dLdq, .dLdv = dLdv, .L = lagrangian,
                                   .d2Ldq2 = d2Ldq2, .d2Ldv2 = d2Ldv2, .d2Ldqdv = pbi_zero_block };
     pb->legendre_inverse = dHdp;

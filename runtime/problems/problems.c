@@ -18,8 +18,10 @@ typedef struct {
  * without parameters still has a valid array), their ranges, and the table
  * of vigen_problem_info. */
 #define PARAM(name, def, lo, hi, integer, description) { name, def, description },
-#define PROBLEM(id, name, description, ...) \
-    static const vigen_problem_param params_##id[] = { __VA_ARGS__ { NULL, 0, NULL } };
+#define PROBLEM(id, name, description, ...)                                            \
+    static const vigen_problem_param params_##id[] = { __VA_ARGS__ { NULL, 0, NULL } }; \
+    _Static_assert(sizeof params_##id / sizeof params_##id[0] <= PBI_MAX_PARAMS + 1,    \
+                   "too many parameters for vigen_problem.param");
 #include "problems.def"
 #undef PROBLEM
 #undef PARAM
@@ -97,7 +99,7 @@ static int parse_params(const problem_row *row, const char *text, double *values
                         size_t why_size)
 {
     const vigen_problem_info *info = &row->info;
-    int seen[8] = { 0 };
+    int seen[PBI_MAX_PARAMS] = { 0 };
     for (size_t k = 0; k < info->nparams; k++) values[k] = info->params[k].default_value;
     if (text == NULL) return VIGEN_SUCCESS;
     char names[200];

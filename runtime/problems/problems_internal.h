@@ -15,9 +15,11 @@ typedef double (*pbi_invariant_fn)(const vigen_problem *pb, size_t k, double t, 
                                    const double *p);
 typedef int (*pbi_reference_fn)(const vigen_problem *pb, double t, double *q, double *p);
 
+enum { PBI_MAX_PARAMS = 8 };
+
 struct vigen_problem {
     const vigen_problem_info *info;
-    double param[8];              /* values, in the order of info->params */
+    double param[PBI_MAX_PARAMS]; /* values, in the order of info->params */
     size_t dim;
     vigen_hamiltonian ham;        /* ctx = this problem */
     vigen_lagrangian lag;         /* dim 0: none; ctx = this problem */
@@ -43,12 +45,15 @@ void pbi_unit_block(double t, const double *q, const double *v, double *out, voi
 void pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx);
 
 /* Sets the Hamiltonian H = |p|^2/2 + V(q) (given H and dH/dq; dim set
- * before), its Lagrangian |v|^2/2 - V(q) with d2L/dq2 = -d2V/dq2 as given,
- * and the identity as inverse Legendre map. */
+ * before) with its Hessian, its Lagrangian |v|^2/2 - V(q) with
+ * d2L/dq2 = -d2V/dq2 as given, and the identity as inverse Legendre map. */
 void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
                    vigen_lhess_fn d2Ldq2);
 
-static inline double pbi_sq(double x) { return x * x; }
+/* The Hessian of a separable H = T(p) + V(q) (vigen_hess_fn layout, 2 dim
+ * square) with d2V/dq2 = -pb->lag.d2Ldq2 and every other block zero; the
+ * caller fills d2T/dp2. */
+void pbi_separable_hessian(const vigen_problem *pb, double t, const double *q, double *out);
 
 #define PBI_PI 3.14159265358979323846
 

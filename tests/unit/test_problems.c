@@ -88,7 +88,9 @@ static int grad_matches(const vigen_problem *pb, scalar_fn f, double *x, double 
         double fm = f(pb, q, p);
         x[i] = xi;
         double fd = (fp - fm) / (2 * h);
-        double tol = 1e-6 * gmax + 1e-12 * (fval + 1e-300) / h;
+        /* each entry on its own scale (a small mass's gradient beside a large
+         * one's), plus the round-off of f over the step */
+        double tol = 1e-6 * fabs(g[i]) + 1e-10 * gmax + 1e-14 * fval / h;
         if (!(fabs(fd - g[i]) <= tol)) {
             fprintf(stderr, "%s: %s[%zu] = %.17g, central difference %.17g\n",
                     vigen_problem_info_of(pb)->name, what, i, g[i], fd);
@@ -121,6 +123,35 @@ static void test_gradients(const vigen_problem *pb)
     }
 }
 
+/* The Hessian of H, where given: (2 dim)^2, rows (dH/dq, dH/dp), columns
+ * (q, p), against central differences of the gradients. */
+static void test_hessian(const vigen_problem *pb)
+{
+    const vigen_hamiltonian *H = vigen_problem_hamiltonian(pb);
+    size_t n = vigen_problem_dim(pb), m = 2 * n;
+    if (H->hessian == NULL || n > 64) return;
+    static double q[MAXDIM], p[MAXDIM], J[128 * 128], gp[128], gm[128];
+    random_point(pb, 0.05, q, p);
+    H->hessian(0, q, p, J, H->ctx);
+    double jmax = maxabs(J, m * m), sq = maxabs(q, n), sp = maxabs(p, n);
+    for (size_t c = 0; c < m; c++) {
+        double *x = c < n ? &q[c] : &p[c - n], xc = *x, h = 1e-5 * (fabs(xc) + 0.1 * (c < n ? sq : sp));
+        *x = xc + h;
+        H->dHdq(0, q, p, gp, H->ctx);
+        H->dHdp(0, q, p, gp + n, H->ctx);
+        *x = xc - h;
+        H->dHdq(0, q, p, gm, H->ctx);
+        H->dHdp(0, q, p, gm + n, H->ctx);
+        *x = xc;
+        for (size_t r = 0; r < m; r++) {
+            /* each row on its own scale (masses from 1 to 1e-8 in one matrix) */
+            double fd = (gp[r] - gm[r]) / (2 * h), rmax = maxabs(J + r * m, m);
+            CHECK_MSG(fabs(fd - J[r * m + c]) <= 1e-6 * rmax + 1e-12 * jmax, "%s: hessian[%zu][%zu] = %.17g, central difference %.17g",
+                      vigen_problem_info_of(pb)->name, r, c, J[r * m + c], fd);
+        }
+    }
+}
+
 /* ---- the Lagrangian version ---- */
 static vigen_lgrad_fn current_g;
 static double eval_L(const vigen_problem *pb, const double *q, const double *v)
@@ -148,9 +179,9 @@ static int block_matches(const vigen_problem *pb, vigen_lgrad_fn grad, vigen_lhe
         grad(0, q, v, gm, L->ctx);
         x[j] = xj;
         for (size_t i = 0; i < n; i++) {
-            /* the block's row i, column j: d (grad)_i / d x_j */
-            double fd = (gp[i] - gm[i]) / (2 * h), got = J[i * n + j];
-            if (!(fabs(fd - got) <= 1e-6 * (jmax + 1e-300) + 1e-9 * maxabs(gp, n) / h * 1e-3)) {
+            /* the block's row i, column j: d (grad)_i / d x_j, on the row's scale */
+            double fd = (gp[i] - gm[i]) / (2 * h), got = J[i * n + j], rmax = maxabs(J + i * n, n);
+            if (!(fabs(fd - got) <= 1e-6 * rmax + 1e-12 * jmax + 1e-300)) {
                 fprintf(stderr, "%s: %s[%zu][%zu] = %.17g, central difference %.17g\n",
                         vigen_problem_info_of(pb)->name, what, i, j, got, fd);
                 ok = 0;
@@ -329,6 +360,7 @@ static void test_problem(const char *name, const char *params)
         for (size_t k = 0; k < info->nparams; k++)
             CHECK(vigen_problem_param_value(pb, info->params[k].name) == info->params[k].default_value);
     test_gradients(pb);
+    test_hessian(pb);
     test_lagrangian(pb);
     test_invariants(pb);
     test_reference(pb);

@@ -7,7 +7,8 @@
  *     if (vigen_problem_create(&pb, "kepler", "e=0.9", why, sizeof why) != VIGEN_SUCCESS)
  *         { fprintf(stderr, "%s\n", why); ... }
  *     const vigen_hamiltonian *H = vigen_problem_hamiltonian(pb);
- *     double t, q[8], p[8];                       dim = vigen_problem_dim(pb)
+ *     size_t dim = vigen_problem_dim(pb);          (fput: n; outer-solar-system: 18)
+ *     double t, *q = malloc(dim * sizeof *q), *p = malloc(dim * sizeof *p);
  *     vigen_problem_initial(pb, &t, q, p);
  *     ... integrate with any stepper ...
  *     double dE = vigen_problem_energy(pb, t, q, p) - E0;
@@ -63,7 +64,8 @@ double vigen_problem_param_value(const vigen_problem *pb, const char *name); /* 
 size_t vigen_problem_dim(const vigen_problem *pb);                  /* dimension of q (= of p) */
 
 /* The Hamiltonian (valid until vigen_problem_free); separable is set where
- * H = T(p) + V(q). */
+ * H = T(p) + V(q); hessian (for Newton's method) is given by every problem
+ * but point-vortices (there the stepper uses finite differences). */
 const vigen_hamiltonian *vigen_problem_hamiltonian(const vigen_problem *pb);
 /* The Lagrangian formulation, for the integrators of <vigen/lagrangian.h>,
  * with inverse Legendre map g (v with dL/dv(q, v) = p) in *g when g is not
