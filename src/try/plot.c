@@ -71,11 +71,9 @@ static char *title(const vigen_try_options *opt, const char *what)
 }
 
 static int plot_energy(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
-                       size_t n,
-                       vigen_error *err);
+                       size_t n, vigen_error *err);
 static int plot_orbit(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
-                      size_t n,
-                      vigen_error *err);
+                      size_t n, vigen_error *err);
 
 int vigen_try_plot(const char *dir, const vigen_try_options *opt, const vigen_try_result *r, size_t n,
                    vigen_error *err)
@@ -95,8 +93,7 @@ int vigen_try_plot(const char *dir, const vigen_try_options *opt, const vigen_tr
 
 /* Methods whose error is ever non-zero (a log scale shows no zero). */
 static int plot_energy(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
-                       size_t n,
-                       vigen_error *err)
+                       size_t n, vigen_error *err)
 {
     vigen_strbuf gp;
     vigen_strbuf_init(&gp);
@@ -124,8 +121,7 @@ static int plot_energy(try_figures *figs, const char *dir, const vigen_try_optio
 }
 
 static int plot_orbit(try_figures *figs, const char *dir, const vigen_try_options *opt, const vigen_try_result *r,
-                      size_t n,
-                      vigen_error *err)
+                      size_t n, vigen_error *err)
 {
     vigen_strbuf gp;
     vigen_strbuf_init(&gp);

@@ -1,7 +1,7 @@
 #!/bin/bash
 # cli_try.sh VIGEN SRC — `vigen try` on every problem of the collection: a
 # symplectic method (Gauss s = 2) keeps the energy error bounded while the
-# classical RK4 (not symplectic, tests/data/try/rk4.lua) lets it grow, read
+# classical RK4 (not symplectic, tests/data/check/rk4.lua) lets it grow, read
 # from the CSV beside the energy plot (the plot's own data); the summary's
 # largest energy error is that of the CSV; the figures are well-formed SVG
 # with one curve per method and PNG of the stated size; problem and
@@ -15,7 +15,7 @@ export TMPDIR="$T/tmp"
 mkdir -p "$TMPDIR"
 fail=0
 check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
-RK4="$SRC/tests/data/try/rk4.lua"
+RK4="$SRC/tests/data/check/rk4.lua"
 
 # The plot data and the figures of one run, checked against each other and
 # against the energy behaviour expected of each method.
