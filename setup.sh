@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-packages=(build-essential cmake pkg-config libflint-arb-dev libflint-dev libgsl-dev liblua5.4-dev clang libclang-rt-dev python3)
+packages=(build-essential cmake pkg-config libflint-arb-dev libflint-dev libgsl-dev liblua5.4-dev clang libclang-rt-dev python3 gnuplot-nox)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -35,14 +35,29 @@ case "${1:-run}" in
   run)
     # The main job: the tableau of Leok & Zhang's Example 4, certified to 34
     # digits, written to a tableau file and shown with its symplecticity
-    # residual; then its order and symplecticity certified by the checker, and
-    # the tableau compiled into a C stepper (build/ex4/leok_zhang_ex4.[ch]).
+    # residual; its order and symplecticity certified by the checker; the
+    # tableau compiled into a C stepper (build/ex4/leok_zhang_ex4.[ch]); then
+    # the method run on the Kepler problem next to Gauss s = 2 and
+    # Stormer-Verlet (energy error, invariants, error against the exact
+    # solution, cost), its empirical order next to the certified one, and the
+    # figures (SVG and PNG, with their data as CSV) written under out/.
     build/vigen generate tableaux/specs/leok_zhang_ex4.lua -o build/leok_zhang_ex4.lua
     build/vigen show build/leok_zhang_ex4.lua
     echo
     build/vigen check build/leok_zhang_ex4.lua
     mkdir -p build/ex4
     build/vigen emit build/leok_zhang_ex4.lua --name leok_zhang_ex4 -o build/ex4
+    echo
+    build/vigen try build/leok_zhang_ex4.lua gauss_2 stormer_verlet_velocity --problem kepler --plot out
+    echo
+    build/vigen order build/leok_zhang_ex4.lua --problem kepler --plot out
+    echo
+    build/vigen try build/leok_zhang_ex4.lua gauss_2 stormer_verlet_velocity --problem kepler \
+      --work-precision --levels 5 --plot out
+    echo
+    echo "setup.sh: the figures are in out/: energy.svg (energy error against time), orbit.svg,"
+    echo "          order.svg, work_precision_evals.svg and work_precision_seconds.svg (and .png,"
+    echo "          with the data of each as .csv)"
     ;;
   test)
     ctest --test-dir build --output-on-failure -j"$(nproc)"

@@ -4,6 +4,7 @@
 #include "cli.h"
 #include "vigen/method.h"
 #include "vigen/printable.h"
+#include "vigen/progress.h"
 #include "vigen/tableau.h"
 
 static void print_summary(vigen_tableau *t, slong digits)
@@ -41,7 +42,11 @@ int vigen_cmd_generate(const vigen_cli_args *args)
                                      "prints it", args->operand, args->operand);
     }
     vigen_tableau t;
+    /* a line on a terminal when the generation takes more than a second */
+    vigen_progress_begin("vigen generate");
+    vigen_progress_set("%s: %lld digits", args->operand, (long long)digits);
     rc = vigen_method_tableau(&t, m, (slong)digits, &err);
+    vigen_progress_end();
     vigen_method_free(m);
     if (rc != VIGEN_OK) return vigen_cli_fail(args->command, &err);
 

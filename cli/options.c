@@ -108,13 +108,32 @@ static int other_owners(char *buf, size_t size, int command, const char *key)
 /* An option of another command is named as such; a mistyped long option
  * gets the nearest name; a one-letter option only a name that differs from
  * it in case (any other one letter is as near as a guess). */
-static int unknown_option(int command, const char *word)
+static int owns(int c, const char *key)
+{
+    for (int k = 0; k < VIGEN_OPT_COUNT; k++) {
+        const vigen_cli_option *o = &vigen_cli_options[k];
+        if (o->command == c && ((o->long_name && strcmp(o->long_name, key) == 0) ||
+                                (o->short_name && strcmp(o->short_name, key) == 0)))
+            return 1;
+    }
+    return 0;
+}
+
+/* An option before the command: when the command that follows (next, or -1)
+ * has it, that command is the one to name. */
+static int unknown_option(int command, const char *word, int next)
 {
     char *key = vigen_strdup(word);
     char *eq = strchr(key, '=');
     if (eq) *eq = '\0';
     char owners[256];
     int rc;
+    if (command == VIGEN_CMD_global && next >= 0 && owns(next, key)) {
+        rc = vigen_cli_usage_error(command, "%s is an option of %s: put it after the command", key,
+                                   vigen_cli_commands[next].name);
+        free(key);
+        return rc;
+    }
     if (other_owners(owners, sizeof owners, command, key) > 0) {
         if (command == VIGEN_CMD_global)
             rc = vigen_cli_usage_error(command, "%s is an option of %s: put it after the command", key, owners);
@@ -145,6 +164,30 @@ static int unknown_option(int command, const char *word)
 
 static int is_option_word(const char *word) { return word[0] == '-' && word[1] != '\0'; }
 
+/* "METHOD..." (an operand kind) and "K=V..." (a metavar) may be repeated. */
+static int repeats(const char *kind)
+{
+    size_t n = strlen(kind);
+    return n > 3 && strstr(kind, "...") != NULL;
+}
+
+/* A repeatable operand or option collects its words, one per line, in a
+ * string that lives as long as the process (the parsed arguments hold
+ * pointers into argv otherwise), kept here; a word with a newline cannot be
+ * one of them. */
+static char *collected[VIGEN_OPT_COUNT + 1]; /* per option, and the operand last */
+
+static int collect(const char **slot, int index, const char *word, int command, const char *what)
+{
+    if (strchr(word, '\n'))
+        return vigen_cli_usage_error(command, "%s cannot contain a newline", what);
+    char *joined = *slot ? vigen_strdup_printf("%s\n%s", *slot, word) : vigen_strdup(word);
+    free(collected[index]);
+    collected[index] = joined;
+    *slot = joined;
+    return -1;
+}
+
 int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, int *stop)
 {
     const char *operand_kind = command == VIGEN_CMD_global ? "" : vigen_cli_commands[command].operand;
@@ -155,6 +198,11 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
             if (command == VIGEN_CMD_global) { *stop = i; return -1; }
             if (operand_kind[0] == '\0')
                 return vigen_cli_usage_error(command, "takes no operand, not '%s'", word);
+            if (repeats(operand_kind)) {
+                int rc = collect(&args->operand, VIGEN_OPT_COUNT, word, command, operand_kind);
+                if (rc >= 0) return rc;
+                continue;
+            }
             if (args->operand != NULL)
                 return vigen_cli_usage_error(command, "one %s at a time, not '%s' and '%s'",
                                              operand_kind[0] == '[' ? "COMMAND" : operand_kind, args->operand, word);
@@ -164,11 +212,19 @@ int vigen_cli_parse(vigen_cli_args *args, int command, int argc, char **argv, in
         if (strcmp(word, "--") == 0) { options_end = 1; continue; }
         const char *eq = word[1] == '-' ? strchr(word, '=') : NULL;
         int k = find_option(command, word, eq ? (size_t)(eq - word) : strlen(word));
-        if (k < 0) return unknown_option(command, word);
+        if (k < 0) {
+            int next = -1;
+            for (int j = i + 1; command == VIGEN_CMD_global && j < argc && next < 0; j++)
+                if (!is_option_word(argv[j])) next = vigen_cli_command_index(argv[j]);
+            return unknown_option(command, word, next);
+        }
         const vigen_cli_option *o = &vigen_cli_options[k];
         if (o->metavar == NULL) {
             if (eq) return vigen_cli_usage_error(command, "%s takes no value, not '%s'", vigen_cli_option_name(k), eq + 1);
             args->value[k] = "";
+        } else if (repeats(o->metavar) && (eq || i + 1 < argc)) {
+            int rc = collect(&args->value[k], k, eq ? eq + 1 : argv[++i], command, o->metavar);
+            if (rc >= 0) return rc;
         } else if (eq) args->value[k] = eq + 1;
         else if (i + 1 < argc) args->value[k] = argv[++i];
         else return vigen_cli_usage_error(command, "%s needs a value: %s %s", word, word, o->metavar);

@@ -5,6 +5,7 @@
  *   vigen_check_tableau                        (check.h)   certified order, symplecticity, claims
  *   vigen_show_render                          (show.h)    text, LaTeX, JSON, Lua
  *   vigen_emit_render                          (emit.h)    the C stepper's header and source
+ *   vigen_try_run, vigen_try_order             (try.h)     run steppers on standard problems
  *
  * Every function returns a status code (error.h, status.def) and fills a
  * vigen_error with a message naming the file and the entry. */
@@ -22,6 +23,8 @@
 #include "vigen/check.h"
 #include "vigen/show.h"
 #include "vigen/emit.h"
+#include "vigen/progress.h"
+#include "vigen/try.h"
 
 /* The version of the library ("0.1.0"). */
 const char *vigen_version(void);

@@ -1,0 +1,158 @@
+/* build.c — one method made into a program: the stepper emitted
+ * (vigen/emit.h) for double, the driver rendered from templates/try/
+ * driver.c.in, both compiled with the system C compiler against the runtime
+ * and the problem library, in the private working directory.  For `vigen
+ * order` the tableau's orders are also certified (vigen/check.h). */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "emit/template.h"
+#include "vigen/check.h"
+#include "vigen/emit.h"
+#include "vigen/progress.h"
+#include "try/try_internal.h"
+
+#ifndef VIGEN_TRY_LINK_LIBS
+#define VIGEN_TRY_LINK_LIBS "-lgsl -lgslcblas -lm"
+#endif
+
+void try_build_clear(try_build *b)
+{
+    free(b->label);
+    free(b->exe);
+    memset(b, 0, sizeof *b);
+}
+
+/* Certified orders of the tableau, for `vigen order`. */
+static int certify(try_build *b, vigen_tableau *t, const char *label, vigen_error *err)
+{
+    vigen_check_options co;
+    vigen_check_options_init(&co);
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    int rc = vigen_check_tableau(&rep, t, NULL, &co, err);
+    if (rc == VIGEN_OK) {
+        b->certified = rep.orders[VIGEN_CHECK_GENERAL].level.value;
+        b->certified_separable = rep.orders[VIGEN_CHECK_SEPARABLE].level.value;
+    } else vigen_error_prefix(err, "%s: ", label);
+    vigen_check_report_clear(&rep);
+    return rc;
+}
+
+static int emit(try_build *b, size_t k, const char *file, int check, char **hpath, char **cpath, vigen_error *err)
+{
+    char name[32];
+    snprintf(name, sizeof name, "m%zu", k);
+    const char *base = strrchr(file, '/');
+    vigen_emit_options eo = { .name = name, .real = VIGEN_REAL_DOUBLE, .input_label = base ? base + 1 : file };
+    vigen_tableau t;
+    int loaded = 0;
+    char *h = NULL, *c = NULL, *ident = NULL;
+    vigen_progress_set("%s: emitting the stepper", b->label);
+    int rc = vigen_emit_load_render(&t, &loaded, file, &eo, &h, &c, &ident, err);
+    if (rc == VIGEN_OK && check) rc = certify(b, &t, b->label, err);
+    if (loaded) vigen_tableau_clear(&t);
+    char fname[48];
+    if (rc == VIGEN_OK) {
+        snprintf(fname, sizeof fname, "%s.h", ident);
+        rc = try_workdir_write(hpath, fname, h, err);
+    }
+    if (rc == VIGEN_OK) {
+        snprintf(fname, sizeof fname, "%s.c", ident);
+        rc = try_workdir_write(cpath, fname, c, err);
+    }
+    free(h);
+    free(c);
+    free(ident);
+    return rc;
+}
+
+static int render_driver(char **path, size_t k, const try_paths *p, vigen_error *err)
+{
+    vigen_slots slots;
+    vigen_slots_init(&slots);
+    vigen_slots_textf(&slots, "NAME", "m%zu", k);
+    char *text = NULL;
+    int rc = vigen_template_render_file(&text, p->template_path, &slots, NULL, err);
+    vigen_slots_clear(&slots);
+    if (rc != VIGEN_OK) return rc;
+    char fname[48];
+    snprintf(fname, sizeof fname, "m%zu_driver.c", k);
+    rc = try_workdir_write(path, fname, text, err);
+    free(text);
+    return rc;
+}
+
+static int compile(try_build *b, size_t k, const char *cc, const char *driver, const char *stepper,
+                   const try_paths *p, vigen_error *err)
+{
+    char fname[48];
+    snprintf(fname, sizeof fname, "m%zu_driver", k);
+    b->exe = try_workdir_file(fname);
+    snprintf(fname, sizeof fname, "m%zu_cc.log", k);
+    char *log = try_workdir_file(fname);
+    char *incdir = vigen_strdup_printf("-I%s", p->include_dir);
+    char *stepdir = vigen_strdup(stepper);
+    char *slash = strrchr(stepdir, '/');
+    if (slash) *slash = '\0';
+    char *incwork = vigen_strdup_printf("-I%s", stepdir);
+    char *libs = vigen_strdup(VIGEN_TRY_LINK_LIBS);
+    /* CC may carry flags ("gcc -m64"), as make and CMake take it */
+    char *ccw = vigen_strdup(cc);
+    char *argv[96];
+    int n = 0;
+    for (char *tok = strtok(ccw, " \t"); tok && n < 32; tok = strtok(NULL, " \t")) argv[n++] = tok;
+    if (n == 0) argv[n++] = (char *)"cc";
+    argv[n++] = "-std=c11";
+    argv[n++] = "-O2";
+    argv[n++] = incwork;
+    argv[n++] = incdir;
+    argv[n++] = (char *)driver;
+    argv[n++] = (char *)stepper;
+    argv[n++] = p->problems_lib;
+    argv[n++] = p->runtime_lib;
+    for (char *tok = strtok(libs, " "); tok && n < 90; tok = strtok(NULL, " ")) argv[n++] = tok;
+    argv[n++] = "-o";
+    argv[n++] = b->exe;
+    argv[n] = NULL;
+    vigen_progress_set("%s: compiling", b->label);
+    int not_found = 0;
+    int status = try_process_run(argv, log, &not_found);
+    int rc = VIGEN_OK;
+    if (status < 0 || not_found)
+        rc = vigen_error_set(err, VIGEN_E_TEMPLATE,
+                             "%s: cannot run the C compiler '%s' (install one, or set CC to a C compiler, e.g. CC=gcc)",
+                             b->label, cc);
+    else if (status != 0) {
+        char *head = try_log_first_error(log);
+        rc = vigen_error_set(err, VIGEN_E_TEMPLATE, "%s: the C compiler '%s' failed (status %d): %s", b->label, cc,
+                             status, head ? head : "(no output)");
+        free(head);
+    }
+    free(log);
+    free(incdir);
+    free(incwork);
+    free(stepdir);
+    free(libs);
+    free(ccw);
+    return rc;
+}
+
+int try_build_method(try_build *b, size_t k, const char *method, const try_paths *p, const char *cc, int check,
+                     vigen_error *err)
+{
+    memset(b, 0, sizeof *b);
+    b->label = try_method_label(method);
+    char *file = NULL, *hpath = NULL, *cpath = NULL, *dpath = NULL;
+    int rc = try_method_resolve(&file, method, p, err);
+    if (rc == VIGEN_OK) rc = emit(b, k, file, check, &hpath, &cpath, err);
+    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, p, err);
+    if (rc == VIGEN_OK) rc = compile(b, k, cc, dpath, cpath, p, err);
+    free(file);
+    free(hpath);
+    free(cpath);
+    free(dpath);
+    return rc;
+}
