@@ -80,6 +80,11 @@ int try_paths_find(try_paths *p, vigen_error *err)
     return rc;
 }
 
+int try_method_is_file(const char *path)
+{
+    return is_file(path);
+}
+
 char *try_method_label(const char *method)
 {
     const char *base = strrchr(method, '/');
@@ -170,5 +175,6 @@ void vigen_try_print_methods(FILE *out)
         free(names[k]);
     }
     free(names);
+    try_lagrangian_print(out);
     try_paths_clear(&p);
 }
