@@ -16,6 +16,11 @@ static const try_lagrangian_method methods[] = {
     { "trapezoidal-vi", 3, 2, "trapezoidal variational integrator, one-step form (the leapfrog for L = T - V)" },
 };
 
+const char *try_lagrangian_name(size_t k)
+{
+    return k < sizeof methods / sizeof methods[0] ? methods[k].name : NULL;
+}
+
 const try_lagrangian_method *try_lagrangian_find(const char *name)
 {
     for (size_t k = 0; name && k < sizeof methods / sizeof methods[0]; k++)

@@ -69,6 +69,8 @@ typedef struct {
 } try_lagrangian_method;
 /* The built-in method of that name, or NULL. */
 const try_lagrangian_method *try_lagrangian_find(const char *name);
+/* The name of built-in method k, NULL past the last. */
+const char *try_lagrangian_name(size_t k);
 /* One line each: name and description. */
 void try_lagrangian_print(FILE *out);
 /* VIGEN_E_USAGE naming the method and the problem when one of the n methods
