@@ -143,10 +143,13 @@ int vigen_try_wp_plot(const char *dir, const vigen_try_options *opt, const vigen
  * otherwise against the same method at a step 4 times finer than the finest; the
  * order between successive levels is log2(e_k / e_(k+1)).  certified is the
  * order `vigen check` certifies for the tableau (vigen/check.h; 0 when it
- * certifies none), certified_separable the order for separable H. */
+ * certifies none), certified_separable the order for separable H.  For a
+ * built-in Lagrangian integrator (builtin = 1; no tableau) both are the
+ * order the literature proves for it. */
 typedef struct {
     char *label;
     int certified, certified_separable;
+    int builtin;
     size_t levels;
     double *h, *error, *order; /* order[k] between k and k+1; order[levels-1] = NaN */
     int against_reference;

@@ -69,11 +69,16 @@ static int emit(try_build *b, size_t k, const char *file, int check, char **hpat
     return rc;
 }
 
-static int render_driver(char **path, size_t k, const try_paths *p, vigen_error *err)
+/* lm: the built-in Lagrangian method, or NULL for an emitted stepper. */
+static int render_driver(char **path, size_t k, const char *label, const try_lagrangian_method *lm,
+                         const try_paths *p, vigen_error *err)
 {
     vigen_slots slots;
     vigen_slots_init(&slots);
     vigen_slots_textf(&slots, "NAME", "m%zu", k);
+    vigen_slots_flag(&slots, "LAGRANGIAN", lm != NULL);
+    vigen_slots_textf(&slots, "KIND", "%d", lm ? lm->kind : 0);
+    vigen_slots_text(&slots, "METHOD", label);
     char *text = NULL;
     int rc = vigen_template_render_file(&text, p->template_path, &slots, NULL, err);
     vigen_slots_clear(&slots);
@@ -85,6 +90,7 @@ static int render_driver(char **path, size_t k, const try_paths *p, vigen_error 
     return rc;
 }
 
+/* stepper: the emitted stepper's source, or NULL (a built-in method). */
 static int compile(try_build *b, size_t k, const char *cc, const char *driver, const char *stepper,
                    const try_paths *p, vigen_error *err)
 {
@@ -94,7 +100,7 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
     snprintf(fname, sizeof fname, "m%zu_cc.log", k);
     char *log = try_workdir_file(fname);
     char *incdir = vigen_strdup_printf("-I%s", p->include_dir);
-    char *stepdir = vigen_strdup(stepper);
+    char *stepdir = vigen_strdup(stepper ? stepper : driver);
     char *slash = strrchr(stepdir, '/');
     if (slash) *slash = '\0';
     char *incwork = vigen_strdup_printf("-I%s", stepdir);
@@ -110,7 +116,7 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
     argv[n++] = incwork;
     argv[n++] = incdir;
     argv[n++] = (char *)driver;
-    argv[n++] = (char *)stepper;
+    if (stepper) argv[n++] = (char *)stepper;
     argv[n++] = p->problems_lib;
     argv[n++] = p->runtime_lib;
     for (char *tok = strtok(libs, " "); tok && n < 90; tok = strtok(NULL, " ")) argv[n++] = tok;
@@ -146,9 +152,17 @@ int try_build_method(try_build *b, size_t k, const char *method, const try_paths
     memset(b, 0, sizeof *b);
     b->label = try_method_label(method);
     char *file = NULL, *hpath = NULL, *cpath = NULL, *dpath = NULL;
-    int rc = try_method_resolve(&file, method, p, err);
-    if (rc == VIGEN_OK) rc = emit(b, k, file, check, &hpath, &cpath, err);
-    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, p, err);
+    /* a file of that name is the user's: it wins over a built-in name */
+    const try_lagrangian_method *lm = try_method_is_file(method) ? NULL : try_lagrangian_find(method);
+    int rc = VIGEN_OK;
+    if (lm) {
+        b->builtin = 1;
+        b->certified = b->certified_separable = lm->order;
+    } else {
+        rc = try_method_resolve(&file, method, p, err);
+        if (rc == VIGEN_OK) rc = emit(b, k, file, check, &hpath, &cpath, err);
+    }
+    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, b->label, lm, p, err);
     if (rc == VIGEN_OK) rc = compile(b, k, cc, dpath, cpath, p, err);
     free(file);
     free(hpath);

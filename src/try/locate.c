@@ -80,6 +80,11 @@ int try_paths_find(try_paths *p, vigen_error *err)
     return rc;
 }
 
+int try_method_is_file(const char *path)
+{
+    return is_file(path);
+}
+
 char *try_method_label(const char *method)
 {
     const char *base = strrchr(method, '/');
@@ -136,6 +141,16 @@ int try_method_resolve(char **path, const char *method, const try_paths *p, vige
         free(cand);
     }
     char **names = published_names(p->published_dir);
+    size_t n = 0;
+    while (names && names[n]) n++;
+    /* the built-in names are candidates for the hint too (not owned) */
+    char **all = names ? realloc(names, (n + 8) * sizeof *names) : NULL;
+    if (all) {
+        names = all;
+        size_t nb = 0;
+        for (const char *b; nb < 7 && (b = try_lagrangian_name(nb)) != NULL; nb++) names[n + nb] = (char *)b;
+        names[n + nb] = NULL;
+    }
     const char *near = names ? vigen_nearest_name(method, (const char *const *)names, 3) : NULL;
     if (near)
         vigen_error_set(err, VIGEN_E_USAGE,
@@ -146,7 +161,7 @@ int try_method_resolve(char **path, const char *method, const try_paths *p, vige
                         "%s: no such file or published method (give a tableau or spec file, or a name that "
                         "'vigen try --list-methods' lists)",
                         method);
-    for (size_t k = 0; names && names[k]; k++) free(names[k]);
+    for (size_t k = 0; names && k < n; k++) free(names[k]);
     free(names);
     return VIGEN_E_USAGE;
 }
@@ -170,5 +185,6 @@ void vigen_try_print_methods(FILE *out)
         free(names[k]);
     }
     free(names);
+    try_lagrangian_print(out);
     try_paths_clear(&p);
 }

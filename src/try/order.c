@@ -93,6 +93,7 @@ int vigen_try_order(const char *method, const vigen_try_options *opt, int levels
     if (levels > 12) return vigen_error_set(err, VIGEN_E_USAGE, "at most 12 levels of halving, not %d", levels);
     try_plan plan;
     int rc = try_plan_make(&plan, opt, 0, err);
+    if (rc == VIGEN_OK) rc = try_lagrangian_check(1, &method, opt, err);
     if (rc != VIGEN_OK) return rc;
     try_paths paths;
     if ((rc = try_paths_find(&paths, err)) != VIGEN_OK) return rc;
@@ -114,6 +115,7 @@ int vigen_try_order(const char *method, const vigen_try_options *opt, int levels
         res->label = vigen_strdup(b.label);
         res->certified = b.certified;
         res->certified_separable = b.certified_separable;
+        res->builtin = b.builtin;
         rc = measure(res, &b, opt, levels, err);
     }
     try_build_clear(&b);
@@ -131,9 +133,11 @@ void vigen_try_order_print(FILE *out, const vigen_try_options *opt, const vigen_
         vigen_json_write_string(out, res->label);
         fputs(", \"problem\": ", out);
         vigen_json_write_string(out, opt->problem);
-        fprintf(out, ", \"certified_order\": %d, \"certified_order_separable\": %d, \"against_reference\": %s, "
-                     "\"levels\": [",
-                res->certified, res->certified_separable, res->against_reference ? "true" : "false");
+        if (res->builtin) fprintf(out, ", \"certified_order\": null, \"proven_order\": %d", res->certified);
+        else
+            fprintf(out, ", \"certified_order\": %d, \"certified_order_separable\": %d", res->certified,
+                    res->certified_separable);
+        fprintf(out, ", \"against_reference\": %s, \"levels\": [", res->against_reference ? "true" : "false");
         for (size_t l = 0; l < res->levels; l++) {
             fprintf(out, "%s{\"h\": %.17g, \"error\": %.17g, \"order\": ", l ? ", " : "", res->h[l], res->error[l]);
             if (isfinite(res->order[l])) fprintf(out, "%.6g}", res->order[l]);
@@ -157,8 +161,9 @@ void vigen_try_order_print(FILE *out, const vigen_try_options *opt, const vigen_
     fprintf(out, "empirical order: ");
     if (isfinite(res->estimate)) fprintf(out, "%.2f", res->estimate);
     else fputs("- (every error is at round-off: take a larger --h)", out);
-    fprintf(out, "   certified order (vigen check): %d", res->certified);
-    if (res->certified_separable != res->certified)
+    if (res->builtin) fprintf(out, "   proven order (built-in Lagrangian integrator): %d", res->certified);
+    else fprintf(out, "   certified order (vigen check): %d", res->certified);
+    if (!res->builtin && res->certified_separable != res->certified)
         fprintf(out, " (%d for separable H)", res->certified_separable);
     fputc('\n', out);
 }
@@ -186,9 +191,9 @@ int vigen_try_order_plot(const char *dir, const vigen_try_options *opt, const vi
                              "set key left top\n"
                              "plot datafile using 1:(column(2) > 0 ? column(2) : 1/0) with linespoints lw 1.5 "
                              "title \"%s\", \\\n    %.17g * (x / %.17g)**%d with lines dt 2 title \"slope %d "
-                             "(certified order)\"\n",
+                             "(%s order)\"\n",
                         label, prob, label, res->levels ? res->error[last] : 1.0, res->levels ? res->h[last] : 1.0,
-                        p, p);
+                        p, p, res->builtin ? "proven" : "certified");
     free(label);
     free(prob);
     try_figures figs;

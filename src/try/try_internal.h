@@ -55,14 +55,34 @@ void try_paths_clear(try_paths *p);
  * published tableau of that stem.  VIGEN_E_USAGE naming the method (with the
  * nearest published name) when neither exists.  *path is a heap string. */
 int try_method_resolve(char **path, const char *method, const try_paths *p, vigen_error *err);
+/* Whether path names an existing regular file. */
+int try_method_is_file(const char *path);
 /* The label of a method: its file stem. */
 char *try_method_label(const char *method);
+
+/* ---- lagrangian.c: the built-in Lagrangian integrators ----------------- */
+typedef struct {
+    const char *name;        /* "hp-midpoint", as the user gives it */
+    int kind;                /* the driver's KIND */
+    int order;               /* the proven order */
+    const char *description; /* one line */
+} try_lagrangian_method;
+/* The built-in method of that name, or NULL. */
+const try_lagrangian_method *try_lagrangian_find(const char *name);
+/* The name of built-in method k, NULL past the last. */
+const char *try_lagrangian_name(size_t k);
+/* One line each: name and description. */
+void try_lagrangian_print(FILE *out);
+/* VIGEN_E_USAGE naming the method and the problem when one of the n methods
+ * is built in and opt's problem has no Lagrangian (point vortices). */
+int try_lagrangian_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err);
 
 /* ---- build.c: emit a stepper, render the driver, compile --------------- */
 typedef struct {
     char *label;
     char *exe;               /* the driver program */
     int certified, certified_separable; /* orders, when asked for (check = 1) */
+    int builtin;             /* a built-in Lagrangian method: certified is its proven order */
 } try_build;
 /* Builds method k of the run into the working directory.  With check, the
  * tableau's orders are certified too (vigen/check.h). */

@@ -77,7 +77,7 @@ PY
 "$VIGEN" try --list-problems > "$T/problems.txt"
 check '[ $? -eq 0 ] && grep -q "^kepler " "$T/problems.txt" && grep -q "^  --param e=" "$T/problems.txt"' "--list-problems lists kepler and its eccentricity"
 "$VIGEN" try --list-methods > "$T/methods.txt"
-check '[ $? -eq 0 ] && [ "$(wc -l < "$T/methods.txt")" -eq "$(ls "$SRC"/tableaux/published/*.lua | wc -l)" ] && grep -qx gauss_2 "$T/methods.txt"' "--list-methods lists tableaux/published"
+check '[ $? -eq 0 ] && [ "$(grep -c "^[^ ]*$" "$T/methods.txt")" -eq "$(ls "$SRC"/tableaux/published/*.lua | wc -l)" ] && grep -qx gauss_2 "$T/methods.txt"' "--list-methods lists tableaux/published"
 
 for p in $(grep -v '^ ' "$T/problems.txt" | cut -d' ' -f1); do
   "$VIGEN" try gauss_2 "$RK4" --problem "$p" --json --plot "$T/plot-$p" > "$T/$p.json" 2> "$T/$p.err"

@@ -32,7 +32,19 @@ m = json.load(open(sys.argv[1]))[\"methods\"][0]
 want = 10 * 0.1**4 / 720
 sys.exit(0 if abs(m[\"global_error\"] / want - 1) < 0.05 else 1)" "$T/out.json"' "installed: Gauss s = 2 global error t h^4/720 ($(cat "$T/out.json"))"
 "$T/moved/bin/vigen" try --list-methods > "$T/methods"
-check '[ "$(wc -l < "$T/methods")" -eq "$(ls "$SRC"/tableaux/published/*.lua | wc -l)" ]' "installed: the published tableaux are known by name"
+check '[ "$(grep -c "^[^ ]*$" "$T/methods")" -eq "$(ls "$SRC"/tableaux/published/*.lua | wc -l)" ] && grep -q "^hp-midpoint " "$T/methods"' "installed: the published tableaux and the built-in Lagrangian integrators are known by name"
+# the built-in Lagrangian integrators compile against the installed runtime:
+# on the harmonic oscillator (q = 1, p = 0, omega = 1) hp-trapezoidal is
+# velocity Verlet, which keeps p^2/2 + (1 - h^2/4) q^2/2 exactly, so H moves
+# between H(0) = 1/2 (q = 1) and H(0) - h^2/8 (q = 0): the largest relative
+# energy error is h^2/4 (reached within 10 % by the samples)
+"$T/moved/bin/vigen" try hp-trapezoidal --problem harmonic-oscillator --h 0.1 --time 10 --json > "$T/lag.json" 2> "$T/err"
+rc=$?
+check '[ $rc -eq 0 ] && python3 -c "
+import json, sys
+m = json.load(open(sys.argv[1]))[\"methods\"][0]
+e, want = m[\"energy_error_max\"], 0.1**2 / 4
+sys.exit(0 if 0.9 * want < e <= want * (1 + 1e-9) else 1)" "$T/lag.json"' "installed: hp-trapezoidal (velocity Verlet) on the oscillator: largest energy error h^2/4 ($rc, $(cat "$T/err"), $(cat "$T/lag.json"))"
 
 lib=$(ls "$T"/moved/lib*/libvigen_problems.a "$T"/moved/lib/*/libvigen_problems.a 2>/dev/null | head -1)
 mv "$lib" "$lib.away"

@@ -7,7 +7,12 @@
  * error is z^5 / 720 + O(z^6) (Hairer-Wanner, Solving ODEs II, IV.3), so its
  * phase error at t is t h^4 / 720; Stormer-Verlet conserves exactly the
  * modified energy p^2/2 + (1 - h^2/4) q^2/2, so its relative energy error
- * oscillates with amplitude h^2/4. */
+ * oscillates with amplitude h^2/4.  The built-in Lagrangian integrators:
+ * the registry and the refusal of a problem without a Lagrangian, and a run
+ * on the oscillator, where hp-midpoint is the implicit midpoint rule (the
+ * (1,1) Pade approximant of exp, error z^3/12: phase error t h^2/12; a
+ * quadratic invariant, the energy, conserved) and hp-trapezoidal is
+ * Stormer-Verlet (energy error amplitude h^2/4). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -120,6 +125,45 @@ static void test_run(void)
     vigen_try_results_free(r, 2);
 }
 
+static void test_lagrangian(void)
+{
+    const char *names[] = { "hp-trapezoidal", "hp-midpoint", "midpoint-vi", "trapezoidal-vi" };
+    int seen = 0;
+    for (size_t k = 0; k < 4; k++) {
+        const try_lagrangian_method *m = try_lagrangian_find(names[k]);
+        CHECK_MSG(m && m->order == 2 && m->description && *m->description, "%s", names[k]);
+        if (m && m->kind >= 0 && m->kind < 4) seen |= 1 << m->kind;
+        CHECK(try_lagrangian_name(k) != NULL);
+    }
+    CHECK(seen == 15 && try_lagrangian_name(4) == NULL);
+    CHECK(try_lagrangian_find("gauss_1") == NULL && try_lagrangian_find(NULL) == NULL);
+
+    vigen_error err;
+    vigen_error_init(&err);
+    const char *methods[] = { "hp-midpoint", "hp-trapezoidal" };
+    vigen_try_options pv = { .problem = "point-vortices" };
+    CHECK(try_lagrangian_check(2, methods, &pv, &err) == VIGEN_E_USAGE);
+    CHECK_MSG(err.message && strstr(err.message, "hp-midpoint") && strstr(err.message, "point-vortices"), "%s",
+              err.message ? err.message : "");
+    vigen_error_clear(&err);
+    const char *tableau[] = { "gauss_1" };
+    CHECK(try_lagrangian_check(1, tableau, &pv, &err) == VIGEN_OK);
+
+    vigen_try_options o = { .problem = "harmonic-oscillator", .h = 0.1, .time = 10 };
+    vigen_try_result *r = NULL;
+    int rc = vigen_try_run(2, methods, &o, &r, &err);
+    CHECK_MSG(rc == VIGEN_OK, "%s", err.message ? err.message : "");
+    if (rc != VIGEN_OK) return;
+    CHECK(strcmp(r[0].label, "hp-midpoint") == 0 && r[0].steps == 100 && !r[0].failed);
+    double want = 10 * 0.01 / 12;
+    CHECK_MSG(fabs(r[0].global_error / want - 1) < 0.05, "hp-midpoint global error %g, expected %g",
+              r[0].global_error, want);
+    CHECK_MSG(r[0].energy_max < 1e-13, "hp-midpoint energy error %g", r[0].energy_max);
+    CHECK_MSG(fabs(r[1].energy_max / (0.01 / 4) - 1) < 0.05, "hp-trapezoidal energy error %g", r[1].energy_max);
+    CHECK(r[0].grad_per_step > 0 && r[1].grad_per_step > 0);
+    vigen_try_results_free(r, 2);
+}
+
 int main(void)
 {
     test_slope();
@@ -127,5 +171,6 @@ int main(void)
     test_quote();
     test_plan();
     test_run();
+    test_lagrangian();
     return testlib_failures ? 1 : 0;
 }

@@ -1,0 +1,53 @@
+/* lagrangian.c — the Lagrangian integrators `vigen try` knows by name
+ * (vigen/lagrangian.h, docs/lagrangian.md).  They have no tableau: the
+ * driver calls the runtime's stepper on the problem's Lagrangian, selected
+ * by the slot KIND of templates/try/driver.c.in.  Their order is the one
+ * the literature proves (2 for each), not one the checker certifies. */
+#include <string.h>
+#include "vigen/problems.h"
+#include "try/try_internal.h"
+
+/* The order of the rows is the KIND the driver switches on. */
+static const try_lagrangian_method methods[] = {
+    { "hp-trapezoidal", 0, 2,
+      "Hamilton-Pontryagin integrator, trapezoidal discrete Lagrangian (Stormer-Verlet for L = T - V)" },
+    { "hp-midpoint", 1, 2, "Hamilton-Pontryagin integrator, midpoint discrete Lagrangian (implicit midpoint for L = T - V)" },
+    { "midpoint-vi", 2, 2, "mid-point variational integrator of Cresson-Safi, with the inverse Legendre map" },
+    { "trapezoidal-vi", 3, 2, "trapezoidal variational integrator, one-step form (the leapfrog for L = T - V)" },
+};
+
+const char *try_lagrangian_name(size_t k)
+{
+    return k < sizeof methods / sizeof methods[0] ? methods[k].name : NULL;
+}
+
+const try_lagrangian_method *try_lagrangian_find(const char *name)
+{
+    for (size_t k = 0; name && k < sizeof methods / sizeof methods[0]; k++)
+        if (strcmp(methods[k].name, name) == 0) return &methods[k];
+    return NULL;
+}
+
+void try_lagrangian_print(FILE *out)
+{
+    for (size_t k = 0; k < sizeof methods / sizeof methods[0]; k++)
+        fprintf(out, "%-16s %s\n", methods[k].name, methods[k].description);
+}
+
+int try_lagrangian_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err)
+{
+    for (size_t k = 0; k < n; k++) {
+        const try_lagrangian_method *m = try_method_is_file(names[k]) ? NULL : try_lagrangian_find(names[k]);
+        if (m == NULL) continue;
+        vigen_problem *pb = NULL;
+        if (vigen_problem_create(&pb, opt->problem, opt->params ? opt->params : "", NULL, 0) != VIGEN_SUCCESS)
+            return vigen_error_set(err, VIGEN_E_USAGE, "%s: cannot create the problem %s", m->name, opt->problem);
+        int has = vigen_problem_lagrangian(pb, NULL) != NULL;
+        vigen_problem_free(pb);
+        if (!has)
+            return vigen_error_set(err, VIGEN_E_USAGE,
+                                   "%s: the problem %s has no Lagrangian (its Hamiltonian is degenerate); choose a "
+                                   "tableau method or another problem", m->name, opt->problem);
+    }
+    return VIGEN_OK;
+}
