@@ -183,6 +183,12 @@ static int wp_figure(try_figures *figs, const char *dir, const char *stem, const
 int vigen_try_wp_plot(const char *dir, const vigen_try_options *opt, const vigen_try_wp_curve *c, size_t n,
                       vigen_error *err)
 {
+    size_t points = 0;
+    for (size_t k = 0; k < n; k++) points += c[k].npoints;
+    /* gnuplot cannot draw a figure without data: say what to change instead */
+    if (points == 0)
+        return vigen_error_set(err, VIGEN_E_DOMAIN, "no method completed any step size, so there is nothing to "
+                               "draw; try a smaller step (--h or --steps-per-period)");
     int rc = try_plot_dir(dir, err);
     if (rc == VIGEN_OK) rc = try_workdir_create(err);
     if (rc != VIGEN_OK) return rc;

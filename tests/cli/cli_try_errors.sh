@@ -77,6 +77,15 @@ rc=$?
 check '[ $rc -eq 2 ] && grep -q "stormer_verlet_velocity: step [0-9]* (t = .*) failed: " "$T/err" && grep -q "smaller step" "$T/err"' "failed step: exit 2, names the method, the step and what to do ($(cat "$T/err"))"
 check 'empty_tmp' "nothing left in TMPDIR after a failed step"
 
+# work-precision where every method fails at every step size: no figure can
+# be drawn, and the message says what to change instead of gnuplot's error
+# (FPUT with 64 particles at the default 100 steps per period: Gauss-2's
+# stage iteration diverges and Yoshida's state overflows at every level)
+"$VIGEN" try gauss_2 yoshida_4 --problem fput --param n=64 --work-precision --plot "$T/p5" > "$T/out" 2> "$T/err"
+rc=$?
+check '[ $rc -eq 2 ] && grep -q "no method completed any step size" "$T/err" && ! grep -q gnuplot "$T/err" && [ ! -e "$T/p5" ]' "work-precision with no completed level: exit 2, no figure ($(cat "$T/err"))"
+check 'empty_tmp' "nothing left in TMPDIR after a work-precision run with no data"
+
 # SIGTERM, and SIGINT (job control on: a background job of a script
 # otherwise ignores it), while a driver runs: the child is ended, the
 # directory removed, the command ends by the signal
