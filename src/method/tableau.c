@@ -13,7 +13,8 @@
 
 static char **texts_new(slong n)
 {
-    char **t = calloc((size_t)n, sizeof(char *));
+    /* n is a stage count or its square (at most VIGEN_MAX_STAGES^2), never negative */
+    char **t = calloc(n > 0 ? (size_t)n : 1, sizeof(char *));
     if (t == NULL) abort();
     return t;
 }
@@ -211,10 +212,37 @@ static int format_entry(char **out, const arb_t x, slong digits)
     return VIGEN_OK;
 }
 
+/* 1 when |x| is certainly outside what a decimal can carry (exponents of
+ * at most VIGEN_DECIMAL_EXP_MAX, about 2^332192810): no precision would make
+ * it writable, so refining is pointless. */
+static int beyond_decimal_range(const arb_t x)
+{
+    const slong bits = 332192810; /* ceil(VIGEN_DECIMAL_EXP_MAX * log2(10)) */
+    if (arb_contains_zero(x)) return 0;
+    mag_t lo, hi;
+    mag_init(lo);
+    mag_init(hi);
+    arb_get_mag_lower(lo, x);
+    arb_get_mag(hi, x);
+    int beyond = mag_cmp_2exp_si(lo, bits) > 0 || mag_cmp_2exp_si(hi, -bits) < 0;
+    mag_clear(lo);
+    mag_clear(hi);
+    return beyond;
+}
+
 /* Formats one named entry; on failure says which entry and why. */
 static int format_named(char **out, const arb_t x, slong digits, slong prec, const char *label, vigen_error *err)
 {
     if (format_entry(out, x, digits) == VIGEN_OK) return VIGEN_OK;
+    if (beyond_decimal_range(x)) {
+        char *v = arb_get_str(x, 5, 0);
+        int code = vigen_error_set(err, VIGEN_E_DOMAIN,
+                                   "%s = %s is beyond the decimals vigen writes and reads (exponents up to "
+                                   "10^8 in magnitude): the spec gives no usable method; check its basis and nodes",
+                                   label, v);
+        flint_free(v);
+        return code;
+    }
     char *v = arb_get_str(x, digits + 20, 0);
     int code = vigen_error_set(err, VIGEN_E_PRECISION,
                                "%s = %s cannot be rounded to %ld certified digits at %ld bits (if the exact value "
@@ -231,7 +259,8 @@ static int format_vector(char ***texts, arb_srcptr v, slong n, slong digits, slo
     for (slong k = 0; k < n; k++) {
         char label[64];
         snprintf(label, sizeof label, "%s[%ld]", key, (long)(k + 1));
-        if (format_named(&(*texts)[k], v + k, digits, prec, label, err) != VIGEN_OK) return VIGEN_E_PRECISION;
+        int rc = format_named(&(*texts)[k], v + k, digits, prec, label, err);
+        if (rc != VIGEN_OK) return rc;
     }
     return VIGEN_OK;
 }
@@ -244,8 +273,8 @@ static int format_matrix(char ***texts, const arb_mat_t m, slong s, slong digits
         for (slong j = 0; j < s; j++) {
             char label[64];
             snprintf(label, sizeof label, "%s[%ld][%ld]", key, (long)(i + 1), (long)(j + 1));
-            if (format_named(&(*texts)[i * s + j], arb_mat_entry(m, i, j), digits, prec, label, err) != VIGEN_OK)
-                return VIGEN_E_PRECISION;
+            int rc = format_named(&(*texts)[i * s + j], arb_mat_entry(m, i, j), digits, prec, label, err);
+            if (rc != VIGEN_OK) return rc;
         }
     return VIGEN_OK;
 }

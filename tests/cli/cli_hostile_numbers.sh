@@ -35,6 +35,15 @@ return { name = "hostile_num_power", s = 1, c = { "1/2" }, A = { { "1/2 + 3^-100
          b = { "1" }, ct = { "1/2" }, At = { { "1/2" } } }
 LUA
 
+cat >"$work/hostile_num_huge_weight.lua" <<'LUA'
+-- A basis function t^(10^19): the weight b[1] is about 10^(5 10^17), beyond
+-- every decimal vigen writes.  The refinement loop used to double the
+-- precision up to its cap (10 s in the fuzz harness) before giving up with a
+-- message about ties; vigen now says at once that no decimal can carry it.
+return { name = "hostile_num_huge_weight", nodes = gauss_legendre(3),
+         basis = { "-t", "t^10134836310148149702", "155555555555555555555555555555555" } }
+LUA
+
 # run LABEL STATUS COMMAND-ARGS... -- PHRASE...: runs vigen with the arguments
 # in an empty directory $work/out (the output directory of -o), expecting the
 # exit status, the phrases in the standard error (status != 0) or output
@@ -72,6 +81,9 @@ run exponent-emit 2 emit "$specs/hostile_num_exponent.lua" --name hostile -o . -
   "hostile_num_exponent.lua" "nodes[2]" "exponent out of range"
 run exponent-entry 2 check "$tabs/hostile_num_exponent.lua" -- \
   "hostile_num_exponent.lua" "c[1]" "exponent out of range"
+# a weight of magnitude 10^(5 10^17): refused at the first precision
+run huge-weight 2 generate "$work/hostile_num_huge_weight.lua" --digits 8 -o out.lua -- \
+  "b[1]" "beyond the decimals vigen writes and reads"
 # 100,000 nodes (FLINT aborted allocating the matrices)
 run many-nodes 2 generate "$specs/hostile_num_many_nodes.lua" -o out.lua -- \
   "hostile_num_many_nodes.lua" "nodes has 100000 entries" "at most 256"
