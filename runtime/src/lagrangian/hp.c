@@ -60,13 +60,6 @@ struct vigen_hp {
     double ct, *cq, *cp, *qn, *pn, *cqn, *cpn, *dq, *dp;
 };
 
-static int finite_all(const double *x, size_t n)
-{
-    int ok = 1;
-    for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
-    return ok;
-}
-
 /* ---- the residual and its Jacobian -------------------------------------- */
 
 static int residual(const double *x, double *r, void *ctx)
@@ -95,7 +88,7 @@ static int residual(const double *x, double *r, void *ctx)
     vigen_vmap_apply_transpose(w->phi, VIGEN_VMAP_D1, n, h, w->q0, w->q1, a, w->ph, h, w->D, w->tmp);
     for (size_t i = 0; i < n; i++) r[i] = w->p0[i] + 0.5 * h * w->lq0[i] + w->tmp[i];
     if (m > 0) vigen_vmap_apply_transpose(w->phi, VIGEN_VMAP_DA, n, h, w->q0, w->q1, a, w->ph, 1.0, w->D, r + n);
-    return finite_all(w->v, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(w->v, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 /* Exact Jacobian d r_q / d dq for the trivial map (v = dq/h), with
@@ -288,7 +281,7 @@ static int predict(vigen_hp *w)
         for (size_t i = 0; i < n; i++) w->x[i] = h * w->vh[i];
     }
     if (w->m) memcpy(w->x + n, w->a, w->m * sizeof(double));
-    return finite_all(w->x, w->N) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(w->x, w->N) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 /* Solves the step's system and forms the increments w->dq, w->dp. */
@@ -316,7 +309,7 @@ static int solve_step(vigen_hp *w)
         vigen_vmap_apply_transpose(w->phi, VIGEN_VMAP_D1_PLUS_D2, n, h, w->q0, w->q1, a, w->ph, h, w->D, w->tmp);
         for (size_t i = 0; i < n; i++) w->dp[i] += w->tmp[i];
     }
-    return finite_all(w->dp, n) && finite_all(w->v, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(w->dp, n) && vigen_lsolve_finite(w->v, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 int vigen_hp_step_between(vigen_hp *w, double t0, double t1, double h, double *q, double *p,

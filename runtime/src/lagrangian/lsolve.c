@@ -67,8 +67,7 @@ void vigen_lsolve_free(vigen_lsolve *s)
 
 size_t vigen_lsolve_dim(const vigen_lsolve *s) { return s->n; }
 
-/* Whether x[0 .. n-1] are all finite (x - x is 0 exactly when x is). */
-static int finite_all(const double *x, size_t n)
+int vigen_lsolve_finite(const double *x, size_t n)
 {
     int ok = 1;
     for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
@@ -81,7 +80,7 @@ static int residual(vigen_lsolve_residual_fn rf, const double *x, double *r, siz
 {
     int st = rf(x, r, ctx);
     if (st != VIGEN_SUCCESS) return st;
-    return finite_all(r, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(r, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 /* Forward differences of the residual, column by column; s->r holds r(x).
@@ -111,7 +110,7 @@ static int jacobian_fd(vigen_lsolve *s, const double *x, vigen_lsolve_residual_f
 static int factor(vigen_lsolve *s)
 {
     const size_t n = s->n;
-    if (!finite_all(s->J, n * n)) return VIGEN_ENONFINITE;
+    if (!vigen_lsolve_finite(s->J, n * n)) return VIGEN_ENONFINITE;
     for (size_t i = 0; i < n; i++) {
         double m = 0.0;
         for (size_t j = 0; j < n; j++) m = fmax(m, fabs(s->J[i * n + j]));
@@ -144,7 +143,7 @@ static int solve(vigen_lsolve *s)
     for (size_t i = 0; i < n; i++) gsl_vector_set(s->b, i, -s->r[i] * s->rs[i]);
     if (gsl_linalg_LU_solve(s->M, s->perm, s->b, s->y) != GSL_SUCCESS) return VIGEN_ESINGULAR;
     for (size_t j = 0; j < n; j++) s->xp[j] = gsl_vector_get(s->y, j) * s->cs[j];
-    return finite_all(s->xp, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(s->xp, n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 int vigen_lsolve_run(vigen_lsolve *s, double *x, vigen_lsolve_residual_fn rf,
@@ -159,7 +158,7 @@ int vigen_lsolve_run(vigen_lsolve *s, double *x, vigen_lsolve_residual_fn rf,
     const double refresh_above = sqrt(tol);
     vigen_iter_monitor mon;
     vigen_iter_start(&mon);
-    int st = finite_all(x, n) ? residual(rf, x, s->r, n, ctx) : VIGEN_ENONFINITE;
+    int st = vigen_lsolve_finite(x, n) ? residual(rf, x, s->r, n, ctx) : VIGEN_ENONFINITE;
     int have_lu = 0, iters = 0;
     double last = -1.0;
     while (st == VIGEN_SUCCESS) {

@@ -50,4 +50,8 @@ int vigen_lsolve_run(vigen_lsolve *s, double *x, vigen_lsolve_residual_fn r,
 /* The dimension n given to vigen_lsolve_alloc. */
 size_t vigen_lsolve_dim(const vigen_lsolve *s);
 
+/* 1 when x[0 .. n-1] are all finite (x - x is 0 exactly when x is), for the
+ * checks of every Lagrangian integrator. */
+int vigen_lsolve_finite(const double *x, size_t n);
+
 #endif

@@ -62,35 +62,27 @@ struct vigen_midpoint_vi {
     gsl_permutation *perm;
 };
 
-/* 1 when x[0 .. n-1] are all finite (x - x is 0 exactly when x is). */
-static int mvi_finite(const double *x, size_t n)
-{
-    int ok = 1;
-    for (size_t k = 0; k < n; k++) ok &= (x[k] - x[k] == 0);
-    return ok;
-}
-
 /* The user's gradients and g, counted and checked: VIGEN_ENONFINITE for an
  * output that is NaN or infinite. */
 static int mvi_dLdq(vigen_midpoint_vi *w, double t, const double *q, const double *v, double *out)
 {
     w->lag.dLdq(t, q, v, out, w->lag.ctx);
     w->stats.dHdq_evals++;
-    return mvi_finite(out, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(out, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 static int mvi_dLdv(vigen_midpoint_vi *w, double t, const double *q, const double *v, double *out)
 {
     w->lag.dLdv(t, q, v, out, w->lag.ctx);
     w->stats.dHdp_evals++;
-    return mvi_finite(out, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(out, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 static int mvi_g(vigen_midpoint_vi *w, double t, const double *q, const double *p, double *out)
 {
     w->g(t, q, p, out, w->lag.ctx);
     w->stats.dHdp_evals++;
-    return mvi_finite(out, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(out, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 /* qbar = base + d/2 and v = d/h for the current unknown d. */
@@ -116,7 +108,7 @@ static int mvi_hessian(vigen_midpoint_vi *w, double t, const double *q, const do
         w->lag.d2Ldv2(t, q, v, w->Lvv, w->lag.ctx);
         for (size_t i = 0; i < n; i++)
             for (size_t j = 0; j < n; j++) w->Lvq[i * n + j] = w->Lqv[j * n + i];
-        return mvi_finite(w->Lqq, 4 * n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;   /* the 4 blocks */
+        return vigen_lsolve_finite(w->Lqq, 4 * n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;   /* the 4 blocks */
     }
     const double fd = w->opt.fd_step > 0 ? w->opt.fd_step : sqrt(DBL_EPSILON);
     int st = mvi_dLdq(w, t, q, v, w->gq);
@@ -211,7 +203,7 @@ static int mvi_jacobian1(const double *d, double *J, void *ctx)
         if (gsl_linalg_LU_svx(w->A, w->perm, &col.vector) != GSL_SUCCESS) return VIGEN_ESINGULAR;
         for (size_t i = 0; i < n; i++) J[i * n + j] = (i == j ? 1.0 : 0.0) - w->pm[i];
     }
-    return mvi_finite(J, n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(J, n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 /* Does (t, q, p) differ (bit for bit) from what the last step returned? */
@@ -271,7 +263,7 @@ static int mvi_step1(vigen_midpoint_vi *w, double *t, double *q, double *p, doub
     }
     double ct = w->ct;
     const double t1 = kahan ? vigen_twosum_update(*t, h, &ct) : *t + h;
-    if (!mvi_finite(w->qn, n) || !mvi_finite(w->pn, n) || !(t1 - t1 == 0)) return VIGEN_ENONFINITE;
+    if (!vigen_lsolve_finite(w->qn, n) || !vigen_lsolve_finite(w->pn, n) || !(t1 - t1 == 0)) return VIGEN_ENONFINITE;
     /* commit */
     memcpy(q, w->qn, n * sizeof *q);
     memcpy(p, w->pn, n * sizeof *p);
@@ -333,7 +325,7 @@ static int mvi_jacobian2(const double *d, double *J, void *ctx)
     if (st != VIGEN_SUCCESS) return st;
     for (size_t k = 0; k < n * n; k++)
         J[k] = 0.25 * h * w->Lqq[k] + 0.5 * (w->Lqv[k] - w->Lvq[k]) - w->Lvv[k] / h;
-    return mvi_finite(J, n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+    return vigen_lsolve_finite(J, n * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 int vigen_midpoint_vi_step2(vigen_midpoint_vi *w, double t0, double t1, double t2,
@@ -364,7 +356,7 @@ int vigen_midpoint_vi_step2(vigen_midpoint_vi *w, double t0, double t1, double t
     }
     if (st == VIGEN_SUCCESS) {
         for (size_t k = 0; k < n; k++) w->qn[k] = q1[k] + w->d[k];
-        if (!mvi_finite(w->qn, n)) st = VIGEN_ENONFINITE;
+        if (!vigen_lsolve_finite(w->qn, n)) st = VIGEN_ENONFINITE;
     }
     if (st != VIGEN_SUCCESS) {
         w->stats.failed_steps++;
