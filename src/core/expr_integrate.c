@@ -133,6 +133,29 @@ static int closed_integral(arb_t res, const node *n, const arb_t x, slong prec)
         ok = expr_eval_constant(u, n->b, prec) && !arb_contains_zero(u) && closed_integral(v, n->a, x, prec);
         if (ok) arb_div(res, v, u, prec);
         break;
+    case N_POW: {
+        /* (a t + b)^k, k >= 0 an integer of any size (t^100000000 is no
+         * polynomial anyone expands): ((a x + b)^(k+1) - b^(k+1)) / (a (k+1)) */
+        if (!n->int_exp || fmpz_sgn(n->k) < 0 || !poly_node(p, n->a, prec) || arb_poly_degree(p) != 1) break;
+        arb_srcptr b = arb_poly_get_coeff_ptr(p, 0);
+        arb_srcptr a = arb_poly_get_coeff_ptr(p, 1);
+        if (arb_contains_zero(a)) break;
+        fmpz_t k1;
+        fmpz_init(k1);
+        fmpz_add_ui(k1, n->k, 1);
+        arb_mul(u, a, x, prec);
+        if (b != NULL) arb_add(u, u, b, prec);
+        arb_pow_fmpz(u, u, k1, prec);
+        if (b != NULL) {
+            arb_pow_fmpz(v, b, k1, prec);
+            arb_sub(u, u, v, prec);
+        }
+        arb_mul_fmpz(v, a, k1, prec);
+        arb_div(res, u, v, prec);
+        fmpz_clear(k1);
+        ok = arb_is_finite(res);
+        break;
+    }
     case N_FUNC: {
         /* f(a t + b): int_0^x = (F(a x + b) - F(b)) / a with F' = f */
         expr_arb_plain_fn F = expr_functions[n->fn].antiderivative;

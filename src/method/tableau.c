@@ -244,6 +244,12 @@ static int format_named(char **out, const arb_t x, slong digits, slong prec, con
         return code;
     }
     char *v = arb_get_str(x, digits + 20, 0);
+    if (!tight_for(x, digits)) {
+        int code = vigen_error_set(err, VIGEN_E_PRECISION, "%s = %s is not certified to %ld digits at %ld bits",
+                                   label, v, (long)digits, (long)prec);
+        flint_free(v);
+        return code;
+    }
     int code = vigen_error_set(err, VIGEN_E_PRECISION,
                                "%s = %s cannot be rounded to %ld certified digits at %ld bits (if the exact value "
                                "lies halfway between two %ld-digit decimals, no precision decides it: ask for "

@@ -44,6 +44,17 @@ return { name = "hostile_num_huge_weight", nodes = gauss_legendre(3),
          basis = { "-t", "t^10134836310148149702", "155555555555555555555555555555555" } }
 LUA
 
+cat >"$work/hostile_num_monomial.lua" <<'LUA'
+-- A basis function t^101349702 (found by the spec fuzz harness): its integrals
+-- are below 2^-10^7, so quadrature to an absolute tolerance lost them and the
+-- refinement loop doubled the precision up to its cap (10 s) before giving up
+-- with a message about ties.  Its integral is now the closed form
+-- c^(k+1)/(k+1) and the refinement is cheap; the method's ct still cancels
+-- terms of about 10^(5 10^6), which no precision under the cap certifies.
+return { name = "hostile_num_monomial", nodes = gauss_legendre(3),
+         basis = { "-t", "t^101349702", "15555.5555555555555555555555555555555555555" } }
+LUA
+
 # run LABEL STATUS COMMAND-ARGS... -- PHRASE...: runs vigen with the arguments
 # in an empty directory $work/out (the output directory of -o), expecting the
 # exit status, the phrases in the standard error (status != 0) or output
@@ -84,6 +95,9 @@ run exponent-entry 2 check "$tabs/hostile_num_exponent.lua" -- \
 # a weight of magnitude 10^(5 10^17): refused at the first precision
 run huge-weight 2 generate "$work/hostile_num_huge_weight.lua" --digits 8 -o out.lua -- \
   "b[1]" "beyond the decimals vigen writes and reads"
+# a monomial of degree 10^8 in the basis: refused within seconds, not at 10 s
+limit=5 run monomial 3 generate "$work/hostile_num_monomial.lua" --digits 8 -o out.lua -- \
+  "ct[1]" "is not certified to 8 digits" "the cap"
 # 100,000 nodes (FLINT aborted allocating the matrices)
 run many-nodes 2 generate "$specs/hostile_num_many_nodes.lua" -o out.lua -- \
   "hostile_num_many_nodes.lua" "nodes has 100000 entries" "at most 256"
