@@ -11,6 +11,10 @@ static const char *const vigen_status_messages[VIGEN_STATUS_MAX] = {
     "a gradient, stage value or the new state is NaN or infinite",
     "option not supported by this stepper",
     "stopped by the observer",
+    "a gradient disagrees with central differences of H (a sign or a factor is wrong)",
+    "the problem is marked separable but dH/dp depends on q or dH/dq on p",
+    "the Hessian disagrees with differences of the gradients",
+    "the saved state belongs to another stepper, dimension or runtime version",
 };
 
 const char *vigen_strerror(int status)

@@ -85,6 +85,10 @@ enum {
     VIGEN_ENONFINITE,    /* a gradient, stage value or the new state is NaN or infinite */
     VIGEN_EUNSUPPORTED,  /* option not available for this stepper */
     VIGEN_ESTOPPED,      /* the observer asked vigen_integrate to stop */
+    VIGEN_EGRADIENT,     /* problem check: a gradient disagrees with differences of H */
+    VIGEN_ESEPARABLE,    /* problem check: a problem marked separable is not */
+    VIGEN_EHESSIAN,      /* problem check: the Hessian disagrees with differences of the gradients */
+    VIGEN_ESTATE,        /* a saved state belongs to another stepper, dimension or version */
     VIGEN_STATUS_MAX
 };
 
