@@ -3,8 +3,11 @@
  * the command's handler and makes sure standard output was written.  Nothing
  * here computes. */
 #include <errno.h>
+#include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "cli.h"
+#include "vigen/library.h"
 #include "vigen/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
@@ -85,6 +88,51 @@ static int finish_output(int command, int status)
     return vigen_cli_fail(command, &err);
 }
 
+/* Method names in operands become files (vigen/library.h): a FILE or SPEC
+ * operand must resolve; a METHOD (try, order) may also be a built-in name,
+ * which the command knows, so it is left as it is when nothing matches.
+ * Repeated operands hold one word a line. */
+static int resolve_operands(vigen_cli_args *args, int command)
+{
+    const char *kind = vigen_cli_commands[command].operand;
+    int files = strncmp(kind, "FILE", 4) == 0 || strncmp(kind, "SPEC", 4) == 0;
+    int methods = strstr(kind, "METHOD") != NULL;
+    if (args->operand == NULL || (!files && !methods)) return -1;
+    static char *resolved;   /* lives as long as the process, like the parsed arguments */
+    vigen_strbuf out;
+    vigen_strbuf_init(&out);
+    int rc = -1;
+    for (const char *w = args->operand; w != NULL && rc < 0;) {
+        const char *nl = strchr(w, '\n');
+        char *word = vigen_strdup(w);
+        if (nl) word[nl - w] = '\0';
+        char *path = NULL;
+        vigen_error err;
+        vigen_error_init(&err);
+        /* a path (or anything that exists) goes to the loader, whose
+         * messages say what is wrong with it */
+        struct stat st;
+        int name = stat(word, &st) != 0 && (strchr(word, '/') == NULL || strncmp(word, "published/", 10) == 0 ||
+                                            strncmp(word, "generated/", 10) == 0);
+        if (!name) vigen_strbuf_printf(&out, "%s%s", out.len ? "\n" : "", word);
+        else if (vigen_library_resolve(&path, word, &err) == VIGEN_OK)
+            vigen_strbuf_printf(&out, "%s%s", out.len ? "\n" : "", path);
+        else if (methods) vigen_strbuf_printf(&out, "%s%s", out.len ? "\n" : "", word);
+        else rc = vigen_cli_fail(command, &err);
+        vigen_error_clear(&err);
+        free(path);
+        free(word);
+        w = nl ? nl + 1 : NULL;
+    }
+    if (rc < 0) {
+        free(resolved);
+        resolved = vigen_strdup(out.data ? out.data : "");
+        args->operand = resolved;
+    }
+    vigen_strbuf_clear(&out);
+    return rc;
+}
+
 static int run(int *command_out, int argc, char **argv)
 {
     vigen_cli_args args;
@@ -121,6 +169,7 @@ static int run(int *command_out, int argc, char **argv)
             return vigen_cli_usage_error(command, "%s is required: %s %s (%s)", vigen_cli_option_name(k),
                                          vigen_cli_option_name(k), vigen_cli_options[k].metavar,
                                          vigen_cli_options[k].description);
+    if ((rc = resolve_operands(&args, command)) >= 0) return rc;
     return handlers[command](&args);
 }
 

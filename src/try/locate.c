@@ -5,12 +5,12 @@
  * from its templates the way the emitter finds them (emit/template.h), so
  * that a moved prefix still works. */
 #define _POSIX_C_SOURCE 200809L
-#include <dirent.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "emit/template.h"
+#include "vigen/library.h"
 #include "try/try_internal.h"
 
 static int is_file(const char *path)
@@ -103,25 +103,8 @@ static int by_name(const void *a, const void *b)
 /* The stems of the published tableaux, NULL-terminated (for a hint). */
 static char **published_names(const char *dir)
 {
-    size_t n = 0, cap = 8;
-    char **names = calloc(cap, sizeof *names);
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    while (d && names && (e = readdir(d)) != NULL) {
-        size_t len = strlen(e->d_name);
-        if (len <= 4 || strcmp(e->d_name + len - 4, ".lua") != 0) continue;
-        if (n + 2 > cap) {
-            char **more = realloc(names, 2 * cap * sizeof *names);
-            if (more == NULL) break;
-            names = more;
-            cap *= 2;
-        }
-        names[n] = vigen_strdup(e->d_name);
-        names[n++][len - 4] = '\0';
-        names[n] = NULL;
-    }
-    if (d) closedir(d);
-    return names;
+    char *dirs[2] = {(char *)dir, NULL};
+    return vigen_library_names(dirs);
 }
 
 int try_method_resolve(char **path, const char *method, const try_paths *p, vigen_error *err)
