@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include "cli.h"
 #include "vigen/library.h"
+#include "vigen/method.h"
 #include "vigen/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
@@ -176,6 +177,7 @@ static int run(int *command_out, int argc, char **argv)
 int main(int argc, char **argv)
 {
     vigen_guard_install();
+    vigen_method_set_name_resolver(vigen_library_resolve);
     int command = VIGEN_CMD_global;
     int rc = run(&command, argc - 1, argv + 1);
     rc = finish_output(command, rc);

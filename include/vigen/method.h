@@ -35,6 +35,12 @@ int vigen_method_is_generated(const vigen_method *m);
  * with VIGEN_E_USAGE. */
 int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err);
 
+/* Where a composition file's base named by a bare name (not a file beside
+ * it) is looked up: the command line sets vigen_library_resolve
+ * (vigen/library.h).  NULL (the default): files only. */
+typedef int (*vigen_name_resolver_fn)(char **path, const char *name, vigen_error *err);
+void vigen_method_set_name_resolver(vigen_name_resolver_fn fn);
+
 /* What method files may contain, from the tables of the code: the kinds of
  * method file, the node and basis families, the functions and constants of
  * exact expressions, each with one line of description (`vigen help spec`).

@@ -50,8 +50,7 @@ static char **texts_new(slong n)
     return t;
 }
 
-/* Reads the entry at the top of the Lua stack into *out (a fresh string). */
-static int read_entry(lua_State *L, char **out, const char *path, const char *label, vigen_error *err)
+int vigen_table_read_entry(lua_State *L, char **out, const char *path, const char *label, vigen_error *err)
 {
     if (lua_type(L, -1) == LUA_TSTRING) {
         size_t len;
@@ -121,7 +120,7 @@ static int read_vector(lua_State *L, const char *key, slong s, char ***out, int 
     for (slong i = 0; i < s && rc == VIGEN_OK; i++) {
         lua_rawgeti(L, -1, i + 1);
         char *label = vigen_strdup_printf("%s[%ld]", key, (long)(i + 1));
-        rc = read_entry(L, &(*out)[i], path, label, err);
+        rc = vigen_table_read_entry(L, &(*out)[i], path, label, err);
         free(label);
         lua_pop(L, 1);
     }
@@ -151,7 +150,7 @@ static int read_matrix(lua_State *L, const char *key, slong s, char ***out, int 
         for (slong j = 0; j < s && rc == VIGEN_OK; j++) {
             lua_rawgeti(L, -1, j + 1);
             char *label = vigen_strdup_printf("%s[%ld][%ld]", key, (long)(i + 1), (long)(j + 1));
-            rc = read_entry(L, &(*out)[i * s + j], path, label, err);
+            rc = vigen_table_read_entry(L, &(*out)[i * s + j], path, label, err);
             free(label);
             lua_pop(L, 1);
         }
@@ -180,28 +179,28 @@ static const char *const known_fields[] = {
     "name", "s", "c", "A", "b", "At", "ct", "bt", "digits", "source", "description",
     "basis", "nodes", "generator", "order", "symplectic", "spec", NULL};
 
-/* Unknown fields are most likely typos ("At" spelled "AT"): refused.  A key
- * is compared with its length ("A\0x" is not "A") and shown escaped. */
-static int check_fields(lua_State *L, const char *path, vigen_error *err)
+int vigen_table_check_fields(lua_State *L, const char *const *known, const char *path, vigen_error *err)
 {
     lua_pushnil(L);
     while (lua_next(L, -2) != 0) {
         lua_pop(L, 1);
-        int known = 0;
+        int is_known = 0;
         size_t len = 0;
         const char *key = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &len) : NULL;
-        for (int k = 0; key && known_fields[k]; k++)
-            known |= strlen(known_fields[k]) == len && memcmp(key, known_fields[k], len) == 0;
-        if (!known) {
-            vigen_strbuf shown;
+        for (int k = 0; key && known[k]; k++)
+            is_known |= strlen(known[k]) == len && memcmp(key, known[k], len) == 0;
+        if (!is_known) {
+            vigen_strbuf shown, list;
             vigen_strbuf_init(&shown);
+            vigen_strbuf_init(&list);
             if (key) vigen_printable_append(&shown, key, len);
             else vigen_strbuf_append(&shown, "(a non-string key)");
-            const char *near = key && strlen(key) == len ? vigen_nearest_name(key, known_fields, 2) : NULL;
-            int rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: unknown field '%s'%s%s%s (known: name, s, c, A, b, At, ct, "
-                                     "bt, digits, source, description, basis, nodes, generator, order, symplectic)",
-                                     path, shown.data, near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "");
+            for (int k = 0; known[k]; k++) vigen_strbuf_printf(&list, "%s%s", k ? ", " : "", known[k]);
+            const char *near = key && strlen(key) == len ? vigen_nearest_name(key, known, 2) : NULL;
+            int rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: unknown field '%s'%s%s%s (known: %s)", path, shown.data,
+                                     near ? "; did you mean '" : "", near ? near : "", near ? "'?" : "", list.data);
             vigen_strbuf_clear(&shown);
+            vigen_strbuf_clear(&list);
             lua_pop(L, 1);
             return rc;
         }
@@ -234,6 +233,17 @@ static int read_numbers(vigen_tableau *t, lua_State *L, const char *path, vigen_
     return rc;
 }
 
+int vigen_table_read_info(vigen_tableau *t, lua_State *L, const char *path, vigen_error *err)
+{
+    int rc = read_string_field(L, "name", &t->name, path, err);
+    if (rc == VIGEN_OK && t->name == NULL)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: the field 'name' (a string) is missing", path);
+    if (rc == VIGEN_OK) rc = read_string_field(L, "source", &t->source, path, err);
+    if (rc == VIGEN_OK) rc = read_string_field(L, "description", &t->description, path, err);
+    if (rc == VIGEN_OK) rc = read_numbers(t, L, path, err);
+    return rc;
+}
+
 int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *path, vigen_error *err)
 {
     lua_State *L = vigen_sandbox_state(sb);
@@ -244,7 +254,7 @@ int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *pa
     if (!lua_istable(L, -1) || has_metatable(L, -1))
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: a tableau file must return a plain table (return { name = ..., "
                                "s = ..., c = {...}, A = {{...}}, b = {...} })", path);
-    int rc = check_fields(L, path, err);
+    int rc = vigen_table_check_fields(L, known_fields, path, err);
     if (rc != VIGEN_OK) return rc;
 
     raw_getfield(L, -1, "s");
@@ -272,6 +282,7 @@ int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *pa
     if (rc == VIGEN_OK) rc = read_string_field(L, "nodes", &t->nodes, path, err);
     if (rc == VIGEN_OK) rc = read_string_field(L, "generator", &t->generator, path, err);
     if (rc == VIGEN_OK) rc = read_numbers(t, L, path, err);
+
     t->has_At = t->At_text != NULL;
     t->has_ct = t->ct_text != NULL;
     t->has_bt = t->bt_text != NULL;

@@ -20,4 +20,20 @@ int vigen_tableau_file_detect(lua_State *L, int idx);
  * is lifted and sb stays with the caller. */
 int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *path, vigen_error *err);
 
+/* Shared with the readers of other kinds of method file (splitting and
+ * composition files, src/lua/splitting_file.c): */
+
+/* The entry on top of the Lua stack (a string: an exact expression or a
+ * decimal; or a small Lua integer) into *out, a fresh string; messages name
+ * the file and the label. */
+int vigen_table_read_entry(lua_State *L, char **out, const char *path, const char *label, vigen_error *err);
+
+/* Refuses a field of the table on top of the stack that is not in the
+ * NULL-terminated list known (a typo), with a did-you-mean hint. */
+int vigen_table_check_fields(lua_State *L, const char *const *known, const char *path, vigen_error *err);
+
+/* name (required), source, description and the claims order, symplectic
+ * (and digits) of the table on top of the stack into t. */
+int vigen_table_read_info(vigen_tableau *t, lua_State *L, const char *path, vigen_error *err);
+
 #endif

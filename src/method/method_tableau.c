@@ -3,8 +3,10 @@
  * precision adequate for the digits asked for (or not at all for digits 0).
  * Also vigen_tableau_load of vigen/tableau.h, a tableau file read directly. */
 #include <stdlib.h>
+#include <string.h>
 #include "method/galerkin.h"
 #include "method/methods.h"
+#include "method/method_tableau.h"
 #include "method/vocabulary.h"
 
 typedef struct {
@@ -31,12 +33,29 @@ int vigen_method_tableau_read(void **state, vigen_sandbox *sb, const char *path,
     return VIGEN_OK;
 }
 
+int vigen_method_tableau_adopt(void **state, vigen_tableau *t, const char *path, vigen_error *err)
+{
+    *state = NULL;
+    tableau_state *st = calloc(1, sizeof *st);
+    if (st == NULL) {
+        vigen_tableau_clear(t);
+        return vigen_error_set(err, VIGEN_E_MEMORY, "out of memory");
+    }
+    st->read = *t;
+    memset(t, 0, sizeof *t);
+    st->path = vigen_strdup(path);
+    *state = st;
+    return VIGEN_OK;
+}
+
+slong vigen_method_tableau_prec(slong digits, slong s) { return vigen_galerkin_initial_prec(digits, s); }
+
 int vigen_method_tableau_tableau(vigen_tableau *t, void *state, slong digits, vigen_error *err)
 {
     tableau_state *st = state;
     vigen_tableau_copy(t, &st->read);
     if (digits <= 0) return VIGEN_OK;   /* as stated: texts only */
-    int rc = vigen_tableau_evaluate(t, vigen_galerkin_initial_prec(digits, t->s), err);
+    int rc = vigen_tableau_evaluate(t, vigen_method_tableau_prec(digits, t->s), err);
     if (rc != VIGEN_OK) {
         vigen_error_prefix(err, "%s: ", st->path);
         vigen_tableau_clear(t);

@@ -7,6 +7,7 @@
 #include "lua/sandbox.h"
 #include "method/spec.h"
 #include "lua/tableau_file.h"
+#include "lua/splitting_file.h"
 #include "vigen/tableau.h"
 
 #define X(id, name, detect, read, tableau, release, generated, fields, description)                            \

@@ -5,6 +5,7 @@
 
 #include <stdio.h>
 #include "vigen/check.h"
+#include "vigen/method.h"
 
 /* Checks the file at rel (from the source tree) with its order claim replaced
  * by claim (-1: none; -2: as the file states) and orders up to P enumerated
@@ -17,7 +18,11 @@ static int check_file_claim(vigen_check_report *rep, const char *rel, int claim,
     vigen_error_init(&err);
     vigen_tableau t;
     vigen_check_report_init(rep);
-    int rc = vigen_tableau_load(&t, path, NULL, &err);
+    /* any method file read as it states its tableau (splitting files too) */
+    vigen_method *m = NULL;
+    int rc = vigen_method_load(&m, path, NULL, &err);
+    if (rc == VIGEN_OK) rc = vigen_method_tableau(&t, m, 0, &err);
+    vigen_method_free(m);
     if (rc == VIGEN_OK) {
         if (claim != -2) t.claim_order = claim;
         vigen_check_options opt;
