@@ -22,6 +22,22 @@
  * call is one step); fsal_reuses stays 0.
  *
  * A workspace is not thread-safe; distinct workspaces are independent.
+ *
+ * Saved states (bit-for-bit restart), for each integrator X:
+ *   size_t X_state_size(const X *w)      bytes of a saved state (0 for NULL)
+ *   int X_state_get(const X *w, void *buf)   all that later steps depend on
+ *       (compensation, predictor history, velocity-map parameters, the end
+ *       of the last step, statistics) into buf, X_state_size bytes; save
+ *       t, q, p with it
+ *   int X_state_set(X *w, const void *buf)   that state into w, an
+ *       integrator of the same kind, rule, dimension, number of parameters
+ *       and options: the next step from the saved t, q, p is bit for bit the
+ *       one the saved integrator would have taken.  VIGEN_ESTATE, w
+ *       unchanged, for anything else, another format or runtime version, or
+ *       a damaged buffer; VIGEN_EINVAL for a NULL pointer.
+ * The buffer has the layout of an emitted stepper's (docs/emit.md).  The
+ * problem itself (the callbacks and the velocity map) is not in it: give
+ * the new integrator the same one.
  */
 #ifndef VIGEN_LAGRANGIAN_H
 #define VIGEN_LAGRANGIAN_H
@@ -111,6 +127,9 @@ const double *vigen_hp_velocity(const vigen_hp *w);
 void vigen_hp_reset(vigen_hp *w);       /* forget history and statistics; a = a0 */
 const vigen_stats *vigen_hp_stats(const vigen_hp *w);
 void vigen_hp_free(vigen_hp *w);
+size_t vigen_hp_state_size(const vigen_hp *w);
+int vigen_hp_state_get(const vigen_hp *w, void *buf);
+int vigen_hp_state_set(vigen_hp *w, const void *buf);
 
 /* ---- the mid-point variational integrator ------------------------------- */
 
@@ -133,6 +152,10 @@ int vigen_midpoint_vi_step2(vigen_midpoint_vi *w, double t0, double t1, double t
                             const double *q0, const double *q1, double *q2);
 const vigen_stats *vigen_midpoint_vi_stats(const vigen_midpoint_vi *w);
 void vigen_midpoint_vi_free(vigen_midpoint_vi *w);
+/* The state of the one-step form (the two-step form keeps none). */
+size_t vigen_midpoint_vi_state_size(const vigen_midpoint_vi *w);
+int vigen_midpoint_vi_state_get(const vigen_midpoint_vi *w, void *buf);
+int vigen_midpoint_vi_state_set(vigen_midpoint_vi *w, const void *buf);
 
 /* ---- the trapezoidal variational integrator on a non-uniform grid -------- */
 
@@ -158,6 +181,10 @@ int vigen_trapezoidal_vi_integrate(vigen_trapezoidal_vi *w, const double *times,
                                    double *q, double *p, double *qs, double *ps, size_t *done);
 const vigen_stats *vigen_trapezoidal_vi_stats(const vigen_trapezoidal_vi *w);
 void vigen_trapezoidal_vi_free(vigen_trapezoidal_vi *w);
+/* The state of the Hamilton-Pontryagin stepper it runs (named vigen_hp). */
+size_t vigen_trapezoidal_vi_state_size(const vigen_trapezoidal_vi *w);
+int vigen_trapezoidal_vi_state_get(const vigen_trapezoidal_vi *w, void *buf);
+int vigen_trapezoidal_vi_state_set(vigen_trapezoidal_vi *w, const void *buf);
 
 #ifdef __cplusplus
 }

@@ -52,6 +52,14 @@ typedef struct {
     void (*reset)(void *w);
     const vigen_stats *(*stats)(const void *w);
     void (*free)(void *w);
+    /* Saved states (bit-for-bit restart, NAME_state_size/_get/_set): the
+     * bytes of the buffer, the workspace's state into a buffer of that size,
+     * and that state back into a workspace of the same stepper, real type,
+     * dimension, problem kind and options (VIGEN_ESTATE otherwise, the
+     * workspace unchanged; VIGEN_EINVAL for a NULL pointer). */
+    size_t (*state_size)(const void *w);
+    int (*state_get)(const void *w, void *buf);
+    int (*state_set)(void *w, const void *buf);
 } VIGEN_SFX(vigen_stepper_type);
 
 /* Observer: called with the step count done so far; nonzero return stops. */

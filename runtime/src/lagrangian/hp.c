@@ -32,6 +32,7 @@
 #include <string.h>
 #include "hp_impl.h"
 #include "lsolve.h"
+#include "state.h"
 #include "vmap.h"
 
 struct vigen_hp {
@@ -59,6 +60,9 @@ struct vigen_hp {
     double t_end, *q_end, *p_end;
     double ct, *cq, *cp, *qn, *pn, *cqn, *cpn, *dq, *dp;
 };
+/* Of these, a saved state (vigen_hp_state_get) holds what later steps read:
+ * nhist, have_end, the statistics, t_end, ct, tm_h, tm_prev, q_end, p_end,
+ * cq, cp, vh, vh_prev and a; everything else is rebuilt by every step. */
 
 /* ---- the residual and its Jacobian -------------------------------------- */
 
@@ -349,7 +353,7 @@ int vigen_hp_step_between(vigen_hp *w, double t0, double t1, double h, double *q
     memcpy(w->vh, w->v, n * sizeof(double));
     w->tm_prev = w->tm_h;
     w->tm_h = t0 + 0.5 * h;
-    w->nhist++;
+    if (w->nhist < 2) w->nhist++;   /* 0, 1 or 2 and more steps behind: all the predictor asks */
     if (w->m) memcpy(w->a, w->x + n, w->m * sizeof(double));
     w->have_end = 1;
     w->t_end = t1;
@@ -377,4 +381,51 @@ int vigen_hp_step(vigen_hp *w, double *t, double *q, double *p, double h)
         w->t_end = t1;
     }
     return st;
+}
+
+/* ---- saved states ----------------------------------------------------------- */
+
+/* The payload in its order (state.h): the flags first, as
+ * vigen_lstate_check reads them, then the statistics, times and arrays. */
+static size_t state_walk(void *ws, void *buf, int save)
+{
+    vigen_hp *w = ws;
+    const size_t n = w->n;
+    vigen_lstate_io io;
+    vigen_lstate_begin(&io, buf, save);
+    vigen_lstate_flag(&io, &w->nhist);
+    vigen_lstate_flag(&io, &w->have_end);
+    vigen_lstate_stats(&io, &w->stats);
+    double *const scalars[] = { &w->t_end, &w->ct, &w->tm_h, &w->tm_prev };
+    for (size_t i = 0; i < sizeof scalars / sizeof scalars[0]; i++) vigen_lstate_reals(&io, scalars[i], 1);
+    double *const arrays[] = { w->q_end, w->p_end, w->cq, w->cp, w->vh, w->vh_prev };
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) vigen_lstate_reals(&io, arrays[i], n);
+    vigen_lstate_reals(&io, w->a, w->m);
+    if (buf && save) vigen_lstate_seal(&io);
+    return io.pos + sizeof(uint64_t);
+}
+
+/* Measuring and saving only read w (the walk takes it without const). */
+static void state_header(const vigen_hp *w, vigen_lstate_header *h)
+{
+    vigen_lstate_header_init(h, "vigen_hp", w->n, w->m, w->rule, &w->opt, state_walk((vigen_hp *)w, NULL, 1));
+}
+
+size_t vigen_hp_state_size(const vigen_hp *w) { return w ? state_walk((vigen_hp *)w, NULL, 1) : 0; }
+
+int vigen_hp_state_get(const vigen_hp *w, void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    vigen_lstate_header h;
+    state_header(w, &h);
+    return vigen_lstate_save((vigen_hp *)w, state_walk, &h, buf);
+}
+
+/* nhist is 0 .. 2, have_end 0 or 1 */
+int vigen_hp_state_set(vigen_hp *w, const void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    vigen_lstate_header h;
+    state_header(w, &h);
+    return vigen_lstate_load(w, state_walk, &h, buf, 2, 2);
 }

@@ -32,6 +32,7 @@
 #include <gsl/gsl_permutation.h>
 #include <vigen/lagrangian.h>
 #include "lsolve.h"
+#include "state.h"
 
 struct vigen_midpoint_vi {
     vigen_lagrangian lag;
@@ -61,6 +62,10 @@ struct vigen_midpoint_vi {
     gsl_matrix *A;
     gsl_permutation *perm;
 };
+/* Of these, a saved state (vigen_midpoint_vi_state_get) holds what later
+ * steps read: history, the statistics, tlast, ct, hprev, hprev2, qlast,
+ * plast, cq, cp, vprev and vprev2; everything else is rebuilt by every
+ * step. */
 
 /* The user's gradients and g, counted and checked: VIGEN_ENONFINITE for an
  * output that is NaN or infinite. */
@@ -414,4 +419,53 @@ void vigen_midpoint_vi_free(vigen_midpoint_vi *w)
     if (w->perm) gsl_permutation_free(w->perm);
     free(w->mem);
     free(w);
+}
+
+/* ---- saved states ----------------------------------------------------------- */
+
+/* The payload in its order (state.h): the flag first, as vigen_lstate_check
+ * reads it, then the statistics, times and arrays. */
+static size_t mvi_state_walk(void *ws, void *buf, int save)
+{
+    vigen_midpoint_vi *w = ws;
+    const size_t n = w->n;
+    vigen_lstate_io io;
+    vigen_lstate_begin(&io, buf, save);
+    vigen_lstate_flag(&io, &w->history);
+    vigen_lstate_stats(&io, &w->stats);
+    double *const scalars[] = { &w->tlast, &w->ct, &w->hprev, &w->hprev2 };
+    for (size_t i = 0; i < sizeof scalars / sizeof scalars[0]; i++) vigen_lstate_reals(&io, scalars[i], 1);
+    double *const arrays[] = { w->qlast, w->plast, w->cq, w->cp, w->vprev, w->vprev2 };
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) vigen_lstate_reals(&io, arrays[i], n);
+    if (buf && save) vigen_lstate_seal(&io);
+    return io.pos + sizeof(uint64_t);
+}
+
+/* Measuring and saving only read w (the walk takes it without const). */
+static void mvi_state_header(const vigen_midpoint_vi *w, vigen_lstate_header *h)
+{
+    vigen_lstate_header_init(h, "vigen_midpoint_vi", w->n, 0, w->g != NULL, &w->opt,
+                             mvi_state_walk((vigen_midpoint_vi *)w, NULL, 1));
+}
+
+size_t vigen_midpoint_vi_state_size(const vigen_midpoint_vi *w)
+{
+    return w ? mvi_state_walk((vigen_midpoint_vi *)w, NULL, 1) : 0;
+}
+
+int vigen_midpoint_vi_state_get(const vigen_midpoint_vi *w, void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    vigen_lstate_header h;
+    mvi_state_header(w, &h);
+    return vigen_lstate_save((vigen_midpoint_vi *)w, mvi_state_walk, &h, buf);
+}
+
+/* history is 0 .. 2 */
+int vigen_midpoint_vi_state_set(vigen_midpoint_vi *w, const void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    vigen_lstate_header h;
+    mvi_state_header(w, &h);
+    return vigen_lstate_load(w, mvi_state_walk, &h, buf, 1, 2);
 }

@@ -126,3 +126,18 @@ int vigen_trapezoidal_vi_integrate(vigen_trapezoidal_vi *w, const double *times,
     }
     return VIGEN_SUCCESS;
 }
+
+/* The state is the Hamilton-Pontryagin stepper's: the one-step map is that
+ * stepper, and the two-step form and the driver keep nothing of their own
+ * between calls. */
+size_t vigen_trapezoidal_vi_state_size(const vigen_trapezoidal_vi *w) { return w ? vigen_hp_state_size(w->hp) : 0; }
+
+int vigen_trapezoidal_vi_state_get(const vigen_trapezoidal_vi *w, void *buf)
+{
+    return w ? vigen_hp_state_get(w->hp, buf) : VIGEN_EINVAL;
+}
+
+int vigen_trapezoidal_vi_state_set(vigen_trapezoidal_vi *w, const void *buf)
+{
+    return w ? vigen_hp_state_set(w->hp, buf) : VIGEN_EINVAL;
+}

@@ -785,13 +785,192 @@ int gauss2_step(gauss2_workspace *w, double *t, double *q, double *p, double h)
     return gauss2_dispatch(w, t, q, p, h);
 }
 
+/* ---- saved states: bit-for-bit restart ------------------------------------
+ * gauss2_state_get writes all that a later step depends on; a fresh
+ * workspace given it by gauss2_state_set continues, from the (t, q, p) the
+ * caller saved with it, exactly as the saved one would have.  The buffer, in
+ * the byte order of the machine that wrote it:
+ *   header   gauss2_state_header below: what the state belongs to;
+ *   payload  reals: t, q[0], p[0] of the last step's output (the test that a
+ *            call continues it), the compensation of t, the previous step
+ *            size; 64-bit counts: the history and first-same-as-last flags,
+ *            the ten counters of vigen_stats in their order; reals: the
+ *            compensation of q and of p (dim each), then for an implicit
+ *            path the previous step's stage gradients (Fo, Go: 2 s dim; the
+ *            forces of a mechanical problem in Go), for an explicit path
+ *            with first same as last its work arrays (dim each, the cached
+ *            gradients among them);
+ *   trailer  the 64-bit FNV-1a hash of every byte before it.
+ * A real takes sizeof(double) bytes. */
+#define GAUSS2_STATE_FORMAT 1
+#define GAUSS2_STATE_REAL 0
+#define GAUSS2_STATE_BITS 53
+#define GAUSS2_STATE_FNV_START UINT64_C(0xcbf29ce484222325)
+
+/* Fields of 8 bytes or multiples of 8: no padding, so that the header is
+ * compared as a whole. */
+typedef struct {
+    char magic[8];             /* "vigen-st" */
+    uint64_t byte_order;       /* 0x0102030405060708 */
+    uint64_t format;           /* GAUSS2_STATE_FORMAT */
+    char runtime[16];          /* VIGEN_RUNTIME_VERSION, zero-padded */
+    char name[32];             /* the stepper's name, cut to 31 characters */
+    uint64_t identity;         /* FNV-1a of "<name> <tableau name>" in full */
+    uint64_t real, real_bits;  /* 0 double, 1 long double, 2 __float128; significand bits */
+    uint64_t kind;             /* 0 general (gauss2_alloc), 1 mechanical */
+    uint64_t dim, stages, path;
+    uint64_t solver, kahan, extrapolate, start_force, max_iter;   /* the options in use */
+    double tol, fd_step;
+    uint64_t size;             /* bytes of the whole buffer */
+} gauss2_state_header;
+_Static_assert(sizeof(gauss2_state_header) == 192, "the state header has no padding");
+
+static uint64_t gauss2_fnv(uint64_t hash, const void *data, size_t len)
+{
+    const unsigned char *b = data;
+    for (size_t i = 0; i < len; i++) hash = (hash ^ b[i]) * UINT64_C(0x100000001b3);
+    return hash;
+}
+
+/* The header a state of w has. */
+static void gauss2_state_header_of(const gauss2_workspace *w, gauss2_state_header *h, size_t size)
+{
+    static const char identity[] = "gauss2 gauss2";
+    memset(h, 0, sizeof *h);
+    memcpy(h->magic, "vigen-st", 8);
+    h->byte_order = UINT64_C(0x0102030405060708);
+    h->format = GAUSS2_STATE_FORMAT;
+    for (size_t i = 0; i < sizeof h->runtime - 1 && VIGEN_RUNTIME_VERSION[i]; i++) h->runtime[i] = VIGEN_RUNTIME_VERSION[i];
+    for (size_t i = 0; i < sizeof h->name - 1 && identity[i] != ' '; i++) h->name[i] = identity[i];
+    h->identity = gauss2_fnv(GAUSS2_STATE_FNV_START, identity, sizeof identity - 1);
+    h->real = GAUSS2_STATE_REAL;
+    h->real_bits = GAUSS2_STATE_BITS;
+    h->kind = w->path >= 3;
+    h->dim = gauss2_n(w);
+    h->stages = 2;
+    h->path = (uint64_t)w->path;
+    h->solver = (uint64_t)w->opt.solver;
+    h->kahan = w->opt.kahan != 0;
+    h->extrapolate = w->opt.extrapolate != 0;
+    h->start_force = w->opt.start_force != 0;
+    h->max_iter = (uint64_t)w->opt.max_iter;
+    h->tol = w->tol;
+    h->fd_step = w->opt.fd_step;
+    h->size = size;
+}
+
+/* Moves count reals between the workspace x and the buffer at *pos
+ * (save: into the buffer), or with no buffer only counts their bytes. */
+static void gauss2_move_reals(unsigned char *buf, size_t *pos, double *x, size_t count, int save)
+{
+    const size_t bytes = count * sizeof(double);
+    if (buf && save) {
+        memcpy(buf + *pos, x, bytes);
+    } else if (buf) {
+        memcpy(x, buf + *pos, bytes);
+    }
+    *pos += bytes;
+}
+
+/* The same for a count, as 64 bits. */
+static void gauss2_move_count(unsigned char *buf, size_t *pos, unsigned long *x, int save)
+{
+    uint64_t u = *x;
+    if (buf && save) memcpy(buf + *pos, &u, sizeof u);
+    else if (buf) { memcpy(&u, buf + *pos, sizeof u); *x = (unsigned long)u; }
+    *pos += sizeof u;
+}
+
+/* The payload in its order (see above), between w and buf + sizeof header;
+ * returns the position after it.  With buf NULL it only measures. */
+static size_t gauss2_state_walk(gauss2_workspace *w, unsigned char *buf, int save)
+{
+    const size_t n = gauss2_n(w);
+    size_t pos = sizeof(gauss2_state_header);
+    double scalars[5] = { w->t_next, w->q_next0, w->p_next0, w->ct, w->hprev };
+    unsigned long flags[2] = { (unsigned long)w->history, 0 };
+    unsigned long *const counts[] = { &flags[0], &flags[1], &w->stats.steps, &w->stats.failed_steps,
+                                      &w->stats.iterations, &w->stats.last_iterations, &w->stats.max_iterations,
+                                      &w->stats.dHdq_evals, &w->stats.dHdp_evals, &w->stats.hessian_evals,
+                                      &w->stats.lu_decompositions, &w->stats.fsal_reuses };
+    gauss2_move_reals(buf, &pos, scalars, 5, save);
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) gauss2_move_count(buf, &pos, counts[i], save);
+    gauss2_move_reals(buf, &pos, w->cq, n, save);
+    gauss2_move_reals(buf, &pos, w->cp, n, save);
+    if (w->path % 3 == 0) {
+        for (int i = 0; i < 2; i++) {
+            gauss2_move_reals(buf, &pos, w->Fo[i], n, save);
+            gauss2_move_reals(buf, &pos, w->Go[i], n, save);
+        }
+    }
+    if (buf && !save) {
+        w->t_next = scalars[0];
+        w->q_next0 = scalars[1];
+        w->p_next0 = scalars[2];
+        w->ct = scalars[3];
+        w->hprev = scalars[4];
+        w->history = (int)flags[0];
+    }
+    return pos;
+}
+
+/* Bytes of a saved state of w (0 for NULL). */
+size_t gauss2_state_size(const gauss2_workspace *w)
+{
+    if (w == NULL) return 0;
+    /* measuring reads nothing and writes nothing of w */
+    return gauss2_state_walk((gauss2_workspace *)w, NULL, 1) + sizeof(uint64_t);
+}
+
+int gauss2_state_get(const gauss2_workspace *w, void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    unsigned char *const b = buf;
+    const size_t size = gauss2_state_size(w);
+    gauss2_state_header h;
+    gauss2_state_header_of(w, &h, size);
+    memcpy(b, &h, sizeof h);
+    /* saving copies out of w only */
+    const size_t end = gauss2_state_walk((gauss2_workspace *)w, b, 1);
+    const uint64_t sum = gauss2_fnv(GAUSS2_STATE_FNV_START, b, end);
+    memcpy(b + end, &sum, sizeof sum);
+    return VIGEN_SUCCESS;
+}
+
+/* Checks everything before changing anything: the header must be the one a
+ * state of w has (same stepper, real type, dimension, problem kind, path,
+ * options, format, runtime version and size), the hash must match and the
+ * flags be 0 or 1; VIGEN_ESTATE otherwise, w unchanged. */
+int gauss2_state_set(gauss2_workspace *w, const void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    const unsigned char *const b = buf;
+    const size_t size = gauss2_state_size(w), end = size - sizeof(uint64_t);
+    gauss2_state_header want;
+    gauss2_state_header_of(w, &want, size);
+    if (memcmp(b, &want, sizeof want) != 0) return VIGEN_ESTATE;
+    uint64_t sum, flag[2];
+    memcpy(&sum, b + end, sizeof sum);
+    if (sum != gauss2_fnv(GAUSS2_STATE_FNV_START, b, end)) return VIGEN_ESTATE;
+    memcpy(flag, b + sizeof want + 5 * sizeof(double), sizeof flag);
+    if (flag[0] > 1 || flag[1] > 1) return VIGEN_ESTATE;
+    if (flag[1] != 0) return VIGEN_ESTATE;
+    /* loading writes into w only; the buffer is not changed */
+    gauss2_state_walk(w, (unsigned char *)(uintptr_t)b, 0);
+    return VIGEN_SUCCESS;
+}
+
 static void *gauss2_alloc_v(const vigen_hamiltonian *sys, const vigen_solver_options *opt) { return gauss2_alloc(sys, opt); }
 static int gauss2_step_v(void *w, double *t, double *q, double *p, double h) { return gauss2_step(w, t, q, p, h); }
 static void gauss2_reset_v(void *w) { gauss2_reset(w); }
 static const vigen_stats *gauss2_stats_v(const void *w) { return gauss2_stats(w); }
 static void gauss2_free_v(void *w) { gauss2_free(w); }
+static size_t gauss2_state_size_v(const void *w) { return gauss2_state_size(w); }
+static int gauss2_state_get_v(const void *w, void *buf) { return gauss2_state_get(w, buf); }
+static int gauss2_state_set_v(void *w, const void *buf) { return gauss2_state_set(w, buf); }
 
 const vigen_stepper_type gauss2_type = {
     "gauss2", 2, 4, 0,
-    gauss2_alloc_v, gauss2_step_v, gauss2_reset_v, gauss2_stats_v, gauss2_free_v
+    gauss2_alloc_v, gauss2_step_v, gauss2_reset_v, gauss2_stats_v, gauss2_free_v,
+    gauss2_state_size_v, gauss2_state_get_v, gauss2_state_set_v
 };

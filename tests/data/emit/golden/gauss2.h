@@ -23,6 +23,18 @@
  *   gauss2_reset(w)        forget the previous step (start a new trajectory)
  *   gauss2_stats(w)        iteration and gradient-evaluation counts
  *   gauss2_free(w)
+ *   gauss2_state_size(w)   bytes of a saved state of w (bit-for-bit restart)
+ *   gauss2_state_get(w, buf)  all that later steps depend on (compensation,
+ *                           extrapolation history, cached gradients,
+ *                           statistics) into buf (state_size bytes); save
+ *                           t, q, p with it
+ *   gauss2_state_set(w, buf)  that state into w, a workspace of this stepper
+ *                           for the same real type, dimension, problem kind
+ *                           and options: the next step from the saved t, q, p
+ *                           is bit for bit the one the saved workspace would
+ *                           have taken.  VIGEN_ESTATE (w unchanged) for a
+ *                           state of anything else, another format or runtime
+ *                           version, or a damaged buffer; VIGEN_EINVAL for NULL
  */
 #ifndef GAUSS2_H_INCLUDED
 #define GAUSS2_H_INCLUDED
@@ -47,6 +59,9 @@ int gauss2_step(gauss2_workspace *w, double *t, double *q, double *p, double h);
 void gauss2_reset(gauss2_workspace *w);
 const vigen_stats *gauss2_stats(const gauss2_workspace *w);
 void gauss2_free(gauss2_workspace *w);
+size_t gauss2_state_size(const gauss2_workspace *w);
+int gauss2_state_get(const gauss2_workspace *w, void *buf);
+int gauss2_state_set(gauss2_workspace *w, const void *buf);
 
 extern const vigen_stepper_type gauss2_type;
 

@@ -907,13 +907,195 @@ int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h)
     return verlet_dispatch(w, t, q, p, h);
 }
 
+/* ---- saved states: bit-for-bit restart ------------------------------------
+ * verlet_state_get writes all that a later step depends on; a fresh
+ * workspace given it by verlet_state_set continues, from the (t, q, p) the
+ * caller saved with it, exactly as the saved one would have.  The buffer, in
+ * the byte order of the machine that wrote it:
+ *   header   verlet_state_header below: what the state belongs to;
+ *   payload  reals: t, q[0], p[0] of the last step's output (the test that a
+ *            call continues it), the compensation of t, the previous step
+ *            size; 64-bit counts: the history and first-same-as-last flags,
+ *            the ten counters of vigen_stats in their order; reals: the
+ *            compensation of q and of p (dim each), then for an implicit
+ *            path the previous step's stage gradients (Fo, Go: 2 s dim; the
+ *            forces of a mechanical problem in Go), for an explicit path
+ *            with first same as last its work arrays (dim each, the cached
+ *            gradients among them);
+ *   trailer  the 64-bit FNV-1a hash of every byte before it.
+ * A real takes sizeof(double) bytes. */
+#define VERLET_STATE_FORMAT 1
+#define VERLET_STATE_REAL 0
+#define VERLET_STATE_BITS 53
+#define VERLET_STATE_FNV_START UINT64_C(0xcbf29ce484222325)
+
+/* Fields of 8 bytes or multiples of 8: no padding, so that the header is
+ * compared as a whole. */
+typedef struct {
+    char magic[8];             /* "vigen-st" */
+    uint64_t byte_order;       /* 0x0102030405060708 */
+    uint64_t format;           /* VERLET_STATE_FORMAT */
+    char runtime[16];          /* VIGEN_RUNTIME_VERSION, zero-padded */
+    char name[32];             /* the stepper's name, cut to 31 characters */
+    uint64_t identity;         /* FNV-1a of "<name> <tableau name>" in full */
+    uint64_t real, real_bits;  /* 0 double, 1 long double, 2 __float128; significand bits */
+    uint64_t kind;             /* 0 general (verlet_alloc), 1 mechanical */
+    uint64_t dim, stages, path;
+    uint64_t solver, kahan, extrapolate, start_force, max_iter;   /* the options in use */
+    double tol, fd_step;
+    uint64_t size;             /* bytes of the whole buffer */
+} verlet_state_header;
+_Static_assert(sizeof(verlet_state_header) == 192, "the state header has no padding");
+
+static uint64_t verlet_fnv(uint64_t hash, const void *data, size_t len)
+{
+    const unsigned char *b = data;
+    for (size_t i = 0; i < len; i++) hash = (hash ^ b[i]) * UINT64_C(0x100000001b3);
+    return hash;
+}
+
+/* The header a state of w has. */
+static void verlet_state_header_of(const verlet_workspace *w, verlet_state_header *h, size_t size)
+{
+    static const char identity[] = "verlet stormer_verlet";
+    memset(h, 0, sizeof *h);
+    memcpy(h->magic, "vigen-st", 8);
+    h->byte_order = UINT64_C(0x0102030405060708);
+    h->format = VERLET_STATE_FORMAT;
+    for (size_t i = 0; i < sizeof h->runtime - 1 && VIGEN_RUNTIME_VERSION[i]; i++) h->runtime[i] = VIGEN_RUNTIME_VERSION[i];
+    for (size_t i = 0; i < sizeof h->name - 1 && identity[i] != ' '; i++) h->name[i] = identity[i];
+    h->identity = verlet_fnv(VERLET_STATE_FNV_START, identity, sizeof identity - 1);
+    h->real = VERLET_STATE_REAL;
+    h->real_bits = VERLET_STATE_BITS;
+    h->kind = w->path >= 3;
+    h->dim = verlet_n(w);
+    h->stages = 2;
+    h->path = (uint64_t)w->path;
+    h->solver = (uint64_t)w->opt.solver;
+    h->kahan = w->opt.kahan != 0;
+    h->extrapolate = w->opt.extrapolate != 0;
+    h->start_force = w->opt.start_force != 0;
+    h->max_iter = (uint64_t)w->opt.max_iter;
+    h->tol = w->tol;
+    h->fd_step = w->opt.fd_step;
+    h->size = size;
+}
+
+/* Moves count reals between the workspace x and the buffer at *pos
+ * (save: into the buffer), or with no buffer only counts their bytes. */
+static void verlet_move_reals(unsigned char *buf, size_t *pos, double *x, size_t count, int save)
+{
+    const size_t bytes = count * sizeof(double);
+    if (buf && save) {
+        memcpy(buf + *pos, x, bytes);
+    } else if (buf) {
+        memcpy(x, buf + *pos, bytes);
+    }
+    *pos += bytes;
+}
+
+/* The same for a count, as 64 bits. */
+static void verlet_move_count(unsigned char *buf, size_t *pos, unsigned long *x, int save)
+{
+    uint64_t u = *x;
+    if (buf && save) memcpy(buf + *pos, &u, sizeof u);
+    else if (buf) { memcpy(&u, buf + *pos, sizeof u); *x = (unsigned long)u; }
+    *pos += sizeof u;
+}
+
+/* The payload in its order (see above), between w and buf + sizeof header;
+ * returns the position after it.  With buf NULL it only measures. */
+static size_t verlet_state_walk(verlet_workspace *w, unsigned char *buf, int save)
+{
+    const size_t n = verlet_n(w);
+    size_t pos = sizeof(verlet_state_header);
+    double scalars[5] = { w->t_next, w->q_next0, w->p_next0, w->ct, w->hprev };
+    unsigned long flags[2] = { (unsigned long)w->history, 0 };
+    flags[1] = (unsigned long)w->fsal;
+    unsigned long *const counts[] = { &flags[0], &flags[1], &w->stats.steps, &w->stats.failed_steps,
+                                      &w->stats.iterations, &w->stats.last_iterations, &w->stats.max_iterations,
+                                      &w->stats.dHdq_evals, &w->stats.dHdp_evals, &w->stats.hessian_evals,
+                                      &w->stats.lu_decompositions, &w->stats.fsal_reuses };
+    verlet_move_reals(buf, &pos, scalars, 5, save);
+    for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) verlet_move_count(buf, &pos, counts[i], save);
+    verlet_move_reals(buf, &pos, w->cq, n, save);
+    verlet_move_reals(buf, &pos, w->cp, n, save);
+    if (w->path % 3 == 0) {
+        for (int i = 0; i < 2; i++) {
+            verlet_move_reals(buf, &pos, w->Fo[i], n, save);
+            verlet_move_reals(buf, &pos, w->Go[i], n, save);
+        }
+    }
+    if (w->path % 3 != 0)
+        for (int i = 0; i < 4; i++) verlet_move_reals(buf, &pos, w->x[i], n, save);
+    if (buf && !save) {
+        w->t_next = scalars[0];
+        w->q_next0 = scalars[1];
+        w->p_next0 = scalars[2];
+        w->ct = scalars[3];
+        w->hprev = scalars[4];
+        w->history = (int)flags[0];
+        w->fsal = (int)flags[1];
+    }
+    return pos;
+}
+
+/* Bytes of a saved state of w (0 for NULL). */
+size_t verlet_state_size(const verlet_workspace *w)
+{
+    if (w == NULL) return 0;
+    /* measuring reads nothing and writes nothing of w */
+    return verlet_state_walk((verlet_workspace *)w, NULL, 1) + sizeof(uint64_t);
+}
+
+int verlet_state_get(const verlet_workspace *w, void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    unsigned char *const b = buf;
+    const size_t size = verlet_state_size(w);
+    verlet_state_header h;
+    verlet_state_header_of(w, &h, size);
+    memcpy(b, &h, sizeof h);
+    /* saving copies out of w only */
+    const size_t end = verlet_state_walk((verlet_workspace *)w, b, 1);
+    const uint64_t sum = verlet_fnv(VERLET_STATE_FNV_START, b, end);
+    memcpy(b + end, &sum, sizeof sum);
+    return VIGEN_SUCCESS;
+}
+
+/* Checks everything before changing anything: the header must be the one a
+ * state of w has (same stepper, real type, dimension, problem kind, path,
+ * options, format, runtime version and size), the hash must match and the
+ * flags be 0 or 1; VIGEN_ESTATE otherwise, w unchanged. */
+int verlet_state_set(verlet_workspace *w, const void *buf)
+{
+    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
+    const unsigned char *const b = buf;
+    const size_t size = verlet_state_size(w), end = size - sizeof(uint64_t);
+    verlet_state_header want;
+    verlet_state_header_of(w, &want, size);
+    if (memcmp(b, &want, sizeof want) != 0) return VIGEN_ESTATE;
+    uint64_t sum, flag[2];
+    memcpy(&sum, b + end, sizeof sum);
+    if (sum != verlet_fnv(VERLET_STATE_FNV_START, b, end)) return VIGEN_ESTATE;
+    memcpy(flag, b + sizeof want + 5 * sizeof(double), sizeof flag);
+    if (flag[0] > 1 || flag[1] > 1) return VIGEN_ESTATE;
+    /* loading writes into w only; the buffer is not changed */
+    verlet_state_walk(w, (unsigned char *)(uintptr_t)b, 0);
+    return VIGEN_SUCCESS;
+}
+
 static void *verlet_alloc_v(const vigen_hamiltonian *sys, const vigen_solver_options *opt) { return verlet_alloc(sys, opt); }
 static int verlet_step_v(void *w, double *t, double *q, double *p, double h) { return verlet_step(w, t, q, p, h); }
 static void verlet_reset_v(void *w) { verlet_reset(w); }
 static const vigen_stats *verlet_stats_v(const void *w) { return verlet_stats(w); }
 static void verlet_free_v(void *w) { verlet_free(w); }
+static size_t verlet_state_size_v(const void *w) { return verlet_state_size(w); }
+static int verlet_state_get_v(const void *w, void *buf) { return verlet_state_get(w, buf); }
+static int verlet_state_set_v(void *w, const void *buf) { return verlet_state_set(w, buf); }
 
 const vigen_stepper_type verlet_type = {
     "stormer_verlet", 2, 2, 1,
-    verlet_alloc_v, verlet_step_v, verlet_reset_v, verlet_stats_v, verlet_free_v
+    verlet_alloc_v, verlet_step_v, verlet_reset_v, verlet_stats_v, verlet_free_v,
+    verlet_state_size_v, verlet_state_get_v, verlet_state_set_v
 };

@@ -23,6 +23,18 @@
  *   verlet_reset(w)        forget the previous step (start a new trajectory)
  *   verlet_stats(w)        iteration and gradient-evaluation counts
  *   verlet_free(w)
+ *   verlet_state_size(w)   bytes of a saved state of w (bit-for-bit restart)
+ *   verlet_state_get(w, buf)  all that later steps depend on (compensation,
+ *                           extrapolation history, cached gradients,
+ *                           statistics) into buf (state_size bytes); save
+ *                           t, q, p with it
+ *   verlet_state_set(w, buf)  that state into w, a workspace of this stepper
+ *                           for the same real type, dimension, problem kind
+ *                           and options: the next step from the saved t, q, p
+ *                           is bit for bit the one the saved workspace would
+ *                           have taken.  VIGEN_ESTATE (w unchanged) for a
+ *                           state of anything else, another format or runtime
+ *                           version, or a damaged buffer; VIGEN_EINVAL for NULL
  */
 #ifndef VERLET_H_INCLUDED
 #define VERLET_H_INCLUDED
@@ -47,6 +59,9 @@ int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h);
 void verlet_reset(verlet_workspace *w);
 const vigen_stats *verlet_stats(const verlet_workspace *w);
 void verlet_free(verlet_workspace *w);
+size_t verlet_state_size(const verlet_workspace *w);
+int verlet_state_get(const verlet_workspace *w, void *buf);
+int verlet_state_set(verlet_workspace *w, const void *buf);
 
 extern const vigen_stepper_type verlet_type;
 
