@@ -14,6 +14,9 @@
  *     void NAME_reset(NAME_workspace *w);     forget history (new trajectory)
  *     const vigen_stats *NAME_stats(const NAME_workspace *w);
  *     void NAME_free(NAME_workspace *w);
+ *     size_t NAME_state_size(const NAME_workspace *w);   bytes of a saved state
+ *     int  NAME_state_get(const NAME_workspace *w, void *buf);   restart state (docs/emit.md)
+ *     int  NAME_state_set(NAME_workspace *w, const void *buf);   VIGEN_ESTATE if not this stepper's
  *     extern const vigen_stepper_type NAME_type;   for vigen_integrate
  *
  * NAME_step returns VIGEN_SUCCESS (0) or a status code below; on failure t, q
