@@ -90,7 +90,7 @@ expect unknown_field.lua      "unknown field 'AT'; did you mean 'At'?"
 expect missing_A.lua          "'A' is missing"
 expect division_by_zero.lua   "A\[1\]\[1\]"
 expect spec_without_nodes.lua "nodes is missing"
-expect no_kind.lua            "s, c, A and b (a tableau file) or name, nodes and basis (a spec)"
+expect no_kind.lua            "s, c, A and b (a tableau file), name, nodes and basis (a spec), splitting"
 expect not_a_table.lua        "returns a string"
 
 [ $failures -gt 0 ] && { echo "$failures failure(s)"; exit 1; }
