@@ -1,6 +1,12 @@
-/* real.c — instantiates real_impl.h for double, long double and __float128. */
+/* real.c — instantiates real_impl.h (the driver, finite differences, sums),
+ * and dense_impl.h (output at any time) for double, long double and
+ * __float128. */
 #include <float.h>
+#include <limits.h>
 #include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
 #include <vigen/runtime.h>
 
 #define VIGEN_REAL double
@@ -8,6 +14,7 @@
 #define VIGEN_EPS DBL_EPSILON
 #define VIGEN_SQRT sqrt
 #include "real_impl.h"
+#include "dense_impl.h"
 #undef VIGEN_REAL
 #undef VIGEN_SFX
 #undef VIGEN_EPS
@@ -18,6 +25,7 @@
 #define VIGEN_EPS LDBL_EPSILON
 #define VIGEN_SQRT sqrtl
 #include "real_impl.h"
+#include "dense_impl.h"
 #undef VIGEN_REAL
 #undef VIGEN_SFX
 #undef VIGEN_EPS
@@ -31,4 +39,5 @@
 #define VIGEN_EPS ((vigen_float128)1.925929944387235853055977942584927319e-34L)
 #define VIGEN_SQRT(x) ((vigen_float128)sqrtl((long double)(x)))
 #include "real_impl.h"
+#include "dense_impl.h"
 #endif

@@ -118,3 +118,55 @@ static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_next)(VIGEN_REAL x, VIGEN_REAL d
 
 /* Compensated sum of an array of this type. */
 VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);
+
+/* ---- output at any time (dense_impl.h) ----------------------------------- */
+/* Both drivers step exactly as vigen_integrate does (the same calls of
+ * T->step, so the steps and the final state are those of vigen_integrate
+ * bit for bit) and look between step ends through a continuous extension:
+ * on a step from (t0, y0) to (t1, y1), y = (q, p), the cubic Hermite
+ * polynomial through y0 and y1 with the slopes f(y0), f(y1) of the flow
+ * (q' = dH/dp, p' = -dH/dq).  Its error is O(h^4), like the method's own
+ * global error for order 4 and below it for orders 1 to 3.  The slopes cost
+ * one dH/dq and one dH/dp per step end, evaluated only for the steps that
+ * hold an output time or an event (a slope at a step end serves both steps
+ * that share it); other steps cost nothing beyond the stepper's work.
+ *
+ * The problem comes from the workspace: every workspace of an emitted
+ * stepper begins with its problem (the vigen_hamiltonian given to
+ * NAME_alloc, then the vigen_mechanical and the diagonal of M^-1 of
+ * NAME_alloc_mechanical, whose H has dH/dq = -f and dH/dp = M^-1 p).  For
+ * a stepper type of your own, pass the problem to the _sys variants. */
+
+#ifndef VIGEN_DENSE_STATS_DEFINED
+#define VIGEN_DENSE_STATS_DEFINED
+/* What a dense-output or event run cost beyond the steps themselves. */
+typedef struct {
+    unsigned long steps;           /* steps taken */
+    unsigned long dHdq_evals;      /* slopes of the extension: calls of dH/dq (or of the force) */
+    unsigned long dHdp_evals;      /* calls of dH/dp (M^-1 p for a mechanical problem) */
+} vigen_dense_stats;
+#endif
+
+/* Steps with h from *t (h may be negative) until the last of the n_out
+ * output times t_out is reached, and writes the state at t_out[k] into
+ * q_out[k dim ..], p_out[k dim ..] (dim from the workspace's problem).
+ * t_out must be monotone in the direction of h (equal times allowed) and
+ * not before *t; an output time equal to a step end (or to the start) gets
+ * that state exactly.  On return t, q, p hold the last step's state (past
+ * or at the last output time) and *done (may be NULL) the steps taken.
+ * Returns VIGEN_SUCCESS, VIGEN_EINVAL (NULL pointer, h zero or not finite,
+ * output times out of order or before *t, a workspace without a problem:
+ * nothing is stepped or written), VIGEN_ENOMEM, VIGEN_ENONFINITE (a slope
+ * or an interpolated state not finite) or the stepper's status (the state
+ * left at the last good step, the outputs before it written). */
+int VIGEN_SFX(vigen_integrate_at)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t, VIGEN_REAL *q,
+                                  VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
+                                  VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done);
+
+/* The same with the problem given (sys; NULL = the workspace's) and the
+ * cost reported in *st (may be NULL). */
+int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, void *w,
+                                      const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL *t, VIGEN_REAL *q,
+                                      VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
+                                      VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done,
+                                      vigen_dense_stats *st);
