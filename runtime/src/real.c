@@ -1,12 +1,14 @@
 /* real.c — instantiates real_impl.h (the driver, finite differences, sums),
- * and dense_impl.h (output at any time) for double, long double and
- * __float128. */
+ * dense_impl.h (output at any time) and events_impl.h (events) for double,
+ * long double and __float128. */
 #include <float.h>
 #include <limits.h>
 #include <math.h>
 #include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include <vigen/runtime.h>
 
 #define VIGEN_REAL double
@@ -15,6 +17,7 @@
 #define VIGEN_SQRT sqrt
 #include "real_impl.h"
 #include "dense_impl.h"
+#include "events_impl.h"
 #undef VIGEN_REAL
 #undef VIGEN_SFX
 #undef VIGEN_EPS
@@ -26,6 +29,7 @@
 #define VIGEN_SQRT sqrtl
 #include "real_impl.h"
 #include "dense_impl.h"
+#include "events_impl.h"
 #undef VIGEN_REAL
 #undef VIGEN_SFX
 #undef VIGEN_EPS
@@ -40,4 +44,5 @@
 #define VIGEN_SQRT(x) ((vigen_float128)sqrtl((long double)(x)))
 #include "real_impl.h"
 #include "dense_impl.h"
+#include "events_impl.h"
 #endif

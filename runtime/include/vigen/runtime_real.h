@@ -119,7 +119,7 @@ static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_next)(VIGEN_REAL x, VIGEN_REAL d
 /* Compensated sum of an array of this type. */
 VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);
 
-/* ---- output at any time (dense_impl.h) ----------------------------------- */
+/* ---- output at any time and events (dense_impl.h, events_impl.h) -------- */
 /* Both drivers step exactly as vigen_integrate does (the same calls of
  * T->step, so the steps and the final state are those of vigen_integrate
  * bit for bit) and look between step ends through a continuous extension:
@@ -137,6 +137,9 @@ VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);
  * NAME_alloc_mechanical, whose H has dH/dq = -f and dH/dp = M^-1 p).  For
  * a stepper type of your own, pass the problem to the _sys variants. */
 
+/* An event function; events are the sign changes of g along the solution. */
+typedef VIGEN_REAL (*VIGEN_SFX(vigen_event_fn))(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, void *ctx);
+
 #ifndef VIGEN_DENSE_STATS_DEFINED
 #define VIGEN_DENSE_STATS_DEFINED
 /* What a dense-output or event run cost beyond the steps themselves. */
@@ -144,6 +147,8 @@ typedef struct {
     unsigned long steps;           /* steps taken */
     unsigned long dHdq_evals;      /* slopes of the extension: calls of dH/dq (or of the force) */
     unsigned long dHdp_evals;      /* calls of dH/dp (M^-1 p for a mechanical problem) */
+    unsigned long event_evals;     /* calls of the event function */
+    unsigned long root_iterations; /* root finder iterations, all events together */
 } vigen_dense_stats;
 #endif
 
@@ -170,3 +175,36 @@ int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, vo
                                       VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
                                       VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done,
                                       vigen_dense_stats *st);
+
+/* Takes nsteps steps of size h from (t, q, p) and records the times where
+ * g changes sign: g is evaluated at every step end, and a step whose end
+ * values have opposite signs (rising: g0 < 0 <= g1, falling: g0 > 0 >= g1;
+ * direction +1 rising only, -1 falling only, 0 both) holds an event, found
+ * on the extension by Brent's method (GSL) to double round-off and then
+ * refined in the real type by bracketing to its round-off.  A start on a
+ * zero of g is not an event; two sign changes within one step cancel and
+ * are not seen.  The first max_events event times go to t_events (may be
+ * NULL when max_events is 0) in order, *n_events receives the number
+ * found.  terminal nonzero: the run stops at the first event with (t, q, p)
+ * set to the extension's state there (the steps before it are untouched);
+ * the workspace then holds a state it did not produce, which an emitted
+ * stepper detects on its next step (it restarts its compensation).
+ * Returns VIGEN_SUCCESS (also after a terminal event), VIGEN_EINVAL (NULL
+ * pointer, h zero or not finite, direction not -1, 0 or +1),
+ * VIGEN_ENOMEM, VIGEN_ENONFINITE (g, a slope or an interpolated state not
+ * finite), VIGEN_ENOCONV (the refinement did not close its bracket) or the
+ * stepper's status (state at the last good step). */
+int VIGEN_SFX(vigen_integrate_events)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t,
+                                      VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
+                                      VIGEN_SFX(vigen_event_fn) g, int direction, int terminal, void *ctx,
+                                      VIGEN_REAL *t_events, size_t max_events, size_t *n_events);
+
+/* The same with the problem given (sys; NULL = the workspace's) and the
+ * cost reported in *st (may be NULL; st->steps tells where a terminal
+ * event stopped the run). */
+int VIGEN_SFX(vigen_integrate_events_sys)(const VIGEN_SFX(vigen_stepper_type) *T, void *w,
+                                          const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL *t, VIGEN_REAL *q,
+                                          VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
+                                          VIGEN_SFX(vigen_event_fn) g, int direction, int terminal, void *ctx,
+                                          VIGEN_REAL *t_events, size_t max_events, size_t *n_events,
+                                          vigen_dense_stats *st);
