@@ -3,7 +3,8 @@
  * period 2 pi) started at periapsis, its exact solution from Kepler's
  * equation, and a stepper type for long double and __float128 written here
  * (Yoshida's triple jump of the Stormer-Verlet step, order 4), whose
- * workspace begins with its problem as an emitted one does.
+ * workspace begins with its problem as an emitted one does
+ * (KEPLER_DOUBLE_ONLY defined: the double problem only).
  *
  * Exact solution (Goldstein, Classical Mechanics, sec. 3.8): with the mean
  * anomaly M = t (mean motion 1) and E - e sin E = M solved by Newton,
@@ -111,12 +112,14 @@
     };
 
 KEPLER_DEFINE(double, , sqrt, sin, cos, floor)
+#ifndef KEPLER_DOUBLE_ONLY
 KEPLER_DEFINE(long double, _ld, sqrtl, sinl, cosl, floorl)
 YOSHIDA_DEFINE(long double, _ld, cbrtl)
 #ifdef VIGEN_HAVE_FLOAT128
 /* long double functions: 1e-19 relative, far below the errors tested */
 KEPLER_DEFINE(vigen_float128, _q, sqrtl, sinl, cosl, floorl)
 YOSHIDA_DEFINE(vigen_float128, _q, cbrtl)
+#endif
 #endif
 
 /* The Kepler problem in double as the stepper sees it. */
