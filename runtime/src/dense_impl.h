@@ -203,6 +203,7 @@ int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, vo
     const VIGEN_REAL needed = n_out ? (t_out[n_out - 1] - *t) / h : 0;
     if (!(needed < (VIGEN_REAL)(ULONG_MAX / 2))) return VIGEN_EINVAL;
     const unsigned long cap = (unsigned long)(needed + needed / 4) + 16;
+    if (n_out == 0) return VIGEN_SUCCESS;
     status = VIGEN_SFX(vigen_dense_open)(&d, w, sys, st);
     if (status != VIGEN_SUCCESS) {
         VIGEN_SFX(vigen_dense_close)(&d);

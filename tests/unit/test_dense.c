@@ -258,50 +258,50 @@ static void test_refused(void)
 
 /* The other real types through the triple jump: Kepler at off-grid times
  * and the O(h^4) ratio, and the final state of vigen_integrate. */
-#define TEST_REAL(R, S)                                                                          \
-    static double run_kepler##S(unsigned long steps_per_period, int check_same)                        \
-    {                                                                                                  \
-        vigen_hamiltonian##S sys = { 2, kepler_dHdq##S, kepler_dHdp##S, kepler_H##S, NULL, 1, NULL };   \
-        void *w = yoshida_type##S.alloc(&sys, NULL);                                                   \
-        R t = 0, q[2], p[2], t_out[NOUT], q_out[2 * NOUT], p_out[2 * NOUT];                           \
-        const R h = 2 * (R)KEPLER_PI / (R)steps_per_period;                                           \
-        kepler_start##S((R)0.5, q, p);                                                                 \
-        for (int k = 0; k < NOUT; k++) t_out[k] = 4 * (R)KEPLER_PI * (k + (R)0.6180339887) / NOUT;     \
-        unsigned long done = 0;                                                                        \
-        CHECK(vigen_integrate_at##S(&yoshida_type##S, w, &t, q, p, h, t_out, NOUT, q_out, p_out,       \
-                                    &done) == VIGEN_SUCCESS);                                          \
-        yoshida_type##S.free(w);                                                                       \
-        if (check_same) {                                                                              \
-            R t2 = 0, q2[2], p2[2];                                                                    \
-            kepler_start##S((R)0.5, q2, p2);                                                           \
-            w = yoshida_type##S.alloc(&sys, NULL);                                                     \
-            CHECK(vigen_integrate##S(&yoshida_type##S, w, &t2, q2, p2, h, done, 0, NULL, NULL, NULL) == \
-                  VIGEN_SUCCESS);                                                                      \
-            CHECK_MSG(t2 == t && q2[0] == q[0] && q2[1] == q[1] && p2[0] == p[0] && p2[1] == p[1],      \
-                      #S ": final state differs from vigen_integrate's");                              \
-            yoshida_type##S.free(w);                                                                   \
-        }                                                                                              \
-        R worst = 0;                                                                                   \
-        for (int k = 0; k < NOUT; k++) {                                                               \
-            R qe[2], pe[2];                                                                            \
-            kepler_exact##S((R)0.5, t_out[k], qe, pe);                                                 \
-            for (int i = 0; i < 2; i++) {                                                              \
-                R dq = q_out[2 * k + i] - qe[i], dp = p_out[2 * k + i] - pe[i];                      \
-                if (dq < 0) dq = -dq;                                                                  \
-                if (dp < 0) dp = -dp;                                                                  \
-                if (dq > worst) worst = dq;                                                            \
-                if (dp > worst) worst = dp;                                                            \
-            }                                                                                          \
-        }                                                                                              \
-        return (double)worst;                                                                          \
-    }                                                                                                  \
-    static void test_real##S(void)                                                                     \
-    {                                                                                                  \
+#define TEST_REAL(R, S)                                                                                   \
+    static double run_kepler##S(unsigned long steps_per_period, int check_same)                           \
+    {                                                                                                     \
+        vigen_hamiltonian##S sys = { 2, kepler_dHdq##S, kepler_dHdp##S, kepler_H##S, NULL, 1, NULL };     \
+        void *w = yoshida_type##S.alloc(&sys, NULL);                                                      \
+        R t = 0, q[2], p[2], t_out[NOUT], q_out[2 * NOUT], p_out[2 * NOUT];                               \
+        const R h = 2 * (R)KEPLER_PI / (R)steps_per_period;                                               \
+        kepler_start##S((R)0.5, q, p);                                                                    \
+        for (int k = 0; k < NOUT; k++) t_out[k] = 4 * (R)KEPLER_PI * (k + (R)0.6180339887) / NOUT;        \
+        unsigned long done = 0;                                                                           \
+        CHECK(vigen_integrate_at##S(&yoshida_type##S, w, &t, q, p, h, t_out, NOUT, q_out, p_out,          \
+                                    &done) == VIGEN_SUCCESS);                                             \
+        yoshida_type##S.free(w);                                                                          \
+        if (check_same) {                                                                                 \
+            R t2 = 0, q2[2], p2[2];                                                                       \
+            kepler_start##S((R)0.5, q2, p2);                                                              \
+            w = yoshida_type##S.alloc(&sys, NULL);                                                        \
+            CHECK(vigen_integrate##S(&yoshida_type##S, w, &t2, q2, p2, h, done, 0, NULL, NULL, NULL) ==   \
+                  VIGEN_SUCCESS);                                                                         \
+            CHECK_MSG(t2 == t && q2[0] == q[0] && q2[1] == q[1] && p2[0] == p[0] && p2[1] == p[1],        \
+                      #S ": final state differs from vigen_integrate's");                                 \
+            yoshida_type##S.free(w);                                                                      \
+        }                                                                                                 \
+        R worst = 0;                                                                                      \
+        for (int k = 0; k < NOUT; k++) {                                                                  \
+            R qe[2], pe[2];                                                                               \
+            kepler_exact##S((R)0.5, t_out[k], qe, pe);                                                    \
+            for (int i = 0; i < 2; i++) {                                                                 \
+                R dq = q_out[2 * k + i] - qe[i], dp = p_out[2 * k + i] - pe[i];                           \
+                if (dq < 0) dq = -dq;                                                                     \
+                if (dp < 0) dp = -dp;                                                                     \
+                if (dq > worst) worst = dq;                                                               \
+                if (dp > worst) worst = dp;                                                               \
+            }                                                                                             \
+        }                                                                                                 \
+        return (double)worst;                                                                             \
+    }                                                                                                     \
+    static void test_real##S(void)                                                                        \
+    {                                                                                                     \
         const double e1 = run_kepler##S(400, 1), e2 = run_kepler##S(800, 0), e3 = run_kepler##S(1600, 0); \
-        fprintf(stderr, "  yoshida4" #S ": errors %.3e %.3e %.3e, ratios %.2f %.2f\n", e1, e2, e3,    \
-                e1 / e2, e2 / e3);                                                                     \
-        CHECK_MSG(e1 < 1e-3 && e2 / e3 > 13 && e2 / e3 < 19, #S ": error %.3e, ratio %.2f", e1,        \
-                  e2 / e3);                                                                            \
+        fprintf(stderr, "  yoshida4" #S ": errors %.3e %.3e %.3e, ratios %.2f %.2f\n", e1, e2, e3,        \
+                e1 / e2, e2 / e3);                                                                        \
+        CHECK_MSG(e1 < 1e-3 && e2 / e3 > 13 && e2 / e3 < 19, #S ": error %.3e, ratio %.2f", e1,           \
+                  e2 / e3);                                                                               \
     }
 
 TEST_REAL(long double, _ld)

@@ -29,12 +29,12 @@
 #define MAXEV 16
 
 /* g = q.p in each real type. */
-#define RADIAL_DEFINE(R, S)                                                                                \
-    static R radial##S(R t, const R *q, const R *p, void *ctx)                                             \
-    {                                                                                                      \
-        (void)t;                                                                                           \
-        (void)ctx;                                                                                         \
-        return q[0] * p[0] + q[1] * p[1];                                                                  \
+#define RADIAL_DEFINE(R, S)                                    \
+    static R radial##S(R t, const R *q, const R *p, void *ctx) \
+    {                                                          \
+        (void)t;                                               \
+        (void)ctx;                                             \
+        return q[0] * p[0] + q[1] * p[1];                      \
     }
 RADIAL_DEFINE(double, )
 RADIAL_DEFINE(long double, _ld)
@@ -68,7 +68,8 @@ static double event_error(const double *t_ev, size_t n, size_t expected, double 
 {
     double worst = 0;
     if (n != expected) return NAN;
-    for (size_t k = 0; k < n; k += stride) worst = fmax(worst, fabs(t_ev[k] - 2 * M_PI * ((double)(k / stride) + offset)));
+    for (size_t k = 0; k < n; k += stride)
+        worst = fmax(worst, fabs(t_ev[k] - 2 * M_PI * ((double)(k / stride) + offset)));
     return worst;
 }
 
@@ -82,6 +83,11 @@ static void test_passages(double e, unsigned long n0)
         CHECK_MSG(n == 5, "e = %g: %zu periapsis passages in 5.1 periods", e, n);
         CHECK_MSG(st.dHdq_evals == 2 * n && st.dHdp_evals == 2 * n, "e = %g: %lu slopes for %zu events", e,
                   st.dHdq_evals, n);
+        CHECK_MSG(st.event_evals > st.steps + 1, "e = %g: g called %lu times in %lu steps", e, st.event_evals,
+                  st.steps);
+        if (k == 0)
+            fprintf(stderr, "  e = %.1f: g called %.1f times  beyond the step ends per event, %.1f root iterations\n",
+                    e, (double)(st.event_evals - st.steps - 1) / (double)n, (double)st.root_iterations / (double)n);
     }
     fprintf(stderr, "  periapsis e = %.1f: time errors %.3e %.3e %.3e, ratios %.2f %.2f\n", e, err[0], err[1], err[2],
             err[0] / err[1], err[1] / err[2]);
@@ -195,39 +201,39 @@ static void test_refused(void)
  * in every real type: g at the event (through vigen_integrate_at from the
  * same start) below a few eps (1 + |t| |dg/dt|), dg/dt = |p|^2 - 1/|q|.
  * The event times also match the periapsis passages. */
-#define TEST_ROOTS(R, S, EPS)                                                                              \
-    static void test_roots##S(const vigen_stepper_type##S *T, const char *label, int per)                  \
-    {                                                                                                      \
+#define TEST_ROOTS(R, S, EPS)                                                                               \
+    static void test_roots##S(const vigen_stepper_type##S *T, const char *label, int per)                   \
+    {                                                                                                       \
         vigen_hamiltonian##S sys = { 2, kepler_dHdq##S, kepler_dHdp##S, kepler_H##S, NULL, 1, NULL };       \
-        const R e = (R)0.8, h = 2 * (R)KEPLER_PI / per;                                                    \
-        R t = 0, q[2], p[2], t_ev[MAXEV];                                                                  \
-        size_t n = 0;                                                                                      \
-        void *w = T->alloc(&sys, NULL);                                                                    \
-        kepler_start##S(e, q, p);                                                                          \
+        const R e = (R)0.8, h = 2 * (R)KEPLER_PI / per;                                                     \
+        R t = 0, q[2], p[2], t_ev[MAXEV];                                                                   \
+        size_t n = 0;                                                                                       \
+        void *w = T->alloc(&sys, NULL);                                                                     \
+        kepler_start##S(e, q, p);                                                                           \
         CHECK(vigen_integrate_events##S(T, w, &t, q, p, h, 31 * per / 10, radial##S, 0, 0, NULL, t_ev,      \
                                         MAXEV, &n) == VIGEN_SUCCESS);                                       \
-        T->free(w);                                                                                        \
-        CHECK_MSG(n == 6, "%s: %zu events in 3.1 periods", label, n);                                      \
-        double worst = 0, worst_time = 0;                                                                  \
-        for (size_t k = 0; k < n && k < MAXEV; k++) {                                                      \
-            R t2 = 0, q2[2], p2[2], qo[2], po[2];                                                          \
-            w = T->alloc(&sys, NULL);                                                                      \
-            kepler_start##S(e, q2, p2);                                                                    \
+        T->free(w);                                                                                         \
+        CHECK_MSG(n == 6, "%s: %zu events in 3.1 periods", label, n);                                       \
+        double worst = 0, worst_time = 0;                                                                   \
+        for (size_t k = 0; k < n && k < MAXEV; k++) {                                                       \
+            R t2 = 0, q2[2], p2[2], qo[2], po[2];                                                           \
+            w = T->alloc(&sys, NULL);                                                                       \
+            kepler_start##S(e, q2, p2);                                                                     \
             CHECK(vigen_integrate_at##S(T, w, &t2, q2, p2, h, t_ev + k, 1, qo, po, NULL) == VIGEN_SUCCESS); \
-            T->free(w);                                                                                    \
-            R g = radial##S(t_ev[k], qo, po, NULL), r = qo[0] * qo[0] + qo[1] * qo[1];                     \
-            R slope = po[0] * po[0] + po[1] * po[1] - 1 / (R)sqrtl(r);                                     \
-            if (g < 0) g = -g;                                                                             \
-            if (slope < 0) slope = -slope;                                                                 \
-            const double ratio = (double)(g / ((R)EPS * (1 + t_ev[k] * slope)));                           \
-            if (ratio > worst) worst = ratio;                                                              \
-            const double dt = fabs((double)t_ev[k] - M_PI * (double)(k + 1));                              \
-            if (dt > worst_time) worst_time = dt;                                                          \
-        }                                                                                                  \
-        fprintf(stderr, "  %s: |g| at the events up to %.2f eps (1 + |t dg/dt|), times within %.2e\n",    \
-                label, worst, worst_time);                                                                 \
-        CHECK_MSG(worst < 16, "%s: |g| at an event is %.1f eps (1 + |t dg/dt|)", label, worst);            \
-        CHECK_MSG(worst_time < 1e-3, "%s: event time off by %.3e", label, worst_time);                     \
+            T->free(w);                                                                                     \
+            R g = radial##S(t_ev[k], qo, po, NULL), r = qo[0] * qo[0] + qo[1] * qo[1];                      \
+            R slope = po[0] * po[0] + po[1] * po[1] - 1 / (R)sqrtl(r);                                      \
+            if (g < 0) g = -g;                                                                              \
+            if (slope < 0) slope = -slope;                                                                  \
+            const double ratio = (double)(g / ((R)EPS * (1 + t_ev[k] * slope)));                            \
+            if (ratio > worst) worst = ratio;                                                               \
+            const double dt = fabs((double)t_ev[k] - M_PI * (double)(k + 1));                               \
+            if (dt > worst_time) worst_time = dt;                                                           \
+        }                                                                                                   \
+        fprintf(stderr, "  %s: |g| at the events up to %.2f eps (1 + |t dg/dt|), times within %.2e\n",      \
+                label, worst, worst_time);                                                                  \
+        CHECK_MSG(worst < 16, "%s: |g| at an event is %.1f eps (1 + |t dg/dt|)", label, worst);             \
+        CHECK_MSG(worst_time < 1e-3, "%s: event time off by %.3e", label, worst_time);                      \
     }
 
 TEST_ROOTS(double, , DBL_EPSILON)
