@@ -137,7 +137,8 @@ VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);
  * NAME_alloc_mechanical, whose H has dH/dq = -f and dH/dp = M^-1 p).  For
  * a stepper type of your own, pass the problem to the _sys variants. */
 
-/* An event function; events are the sign changes of g along the solution. */
+/* An event function; events are the sign changes of g along the solution.
+ * It returns the real type (the root is refined in that type). */
 typedef VIGEN_REAL (*VIGEN_SFX(vigen_event_fn))(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, void *ctx);
 
 #ifndef VIGEN_DENSE_STATS_DEFINED
@@ -161,9 +162,11 @@ typedef struct {
  * or at the last output time) and *done (may be NULL) the steps taken.
  * Returns VIGEN_SUCCESS, VIGEN_EINVAL (NULL pointer, h zero or not finite,
  * output times out of order or before *t, a workspace without a problem:
- * nothing is stepped or written), VIGEN_ENOMEM, VIGEN_ENONFINITE (a slope
- * or an interpolated state not finite) or the stepper's status (the state
- * left at the last good step, the outputs before it written). */
+ * nothing is stepped or written; also when the steps have not reached the
+ * last output time after 5/4 of (t_last - t)/h + 16 steps, h too small to
+ * move t), VIGEN_ENOMEM, VIGEN_ENONFINITE (a slope or an interpolated
+ * state not finite) or the stepper's status (the state left at the last
+ * good step, the outputs before it written). */
 int VIGEN_SFX(vigen_integrate_at)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t, VIGEN_REAL *q,
                                   VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
                                   VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done);
