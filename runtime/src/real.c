@@ -1,6 +1,14 @@
-/* real.c — instantiates real_impl.h for double, long double and __float128. */
+/* real.c — instantiates real_impl.h (the driver, finite differences, sums),
+ * dense_impl.h (output at any time) and events_impl.h (events) for double,
+ * long double and __float128. */
 #include <float.h>
+#include <limits.h>
 #include <math.h>
+#include <stddef.h>
+#include <stdlib.h>
+#include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include <vigen/runtime.h>
 
 #define VIGEN_REAL double
@@ -8,6 +16,8 @@
 #define VIGEN_EPS DBL_EPSILON
 #define VIGEN_SQRT sqrt
 #include "real_impl.h"
+#include "dense_impl.h"
+#include "events_impl.h"
 #undef VIGEN_REAL
 #undef VIGEN_SFX
 #undef VIGEN_EPS
@@ -18,6 +28,8 @@
 #define VIGEN_EPS LDBL_EPSILON
 #define VIGEN_SQRT sqrtl
 #include "real_impl.h"
+#include "dense_impl.h"
+#include "events_impl.h"
 #undef VIGEN_REAL
 #undef VIGEN_SFX
 #undef VIGEN_EPS
@@ -31,4 +43,6 @@
 #define VIGEN_EPS ((vigen_float128)1.925929944387235853055977942584927319e-34L)
 #define VIGEN_SQRT(x) ((vigen_float128)sqrtl((long double)(x)))
 #include "real_impl.h"
+#include "dense_impl.h"
+#include "events_impl.h"
 #endif

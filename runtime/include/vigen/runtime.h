@@ -1,6 +1,10 @@
 /* vigen/runtime.h — the library that steppers emitted by `vigen emit` link
  * against: problem types, solver options, status codes, statistics,
- * compensated sums, the stage-equation helpers and a driver.
+ * compensated sums, the stage-equation helpers and the drivers:
+ * vigen_integrate (n equal steps), vigen_integrate_at (the same steps, the
+ * state at any requested times by a continuous extension) and
+ * vigen_integrate_events (the times where a function of the state changes
+ * sign, optionally stopping there).
  *
  * An emitted stepper NAME (files NAME.h, NAME.c) offers
  *

@@ -126,3 +126,96 @@ static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_next)(VIGEN_REAL x, VIGEN_REAL d
 
 /* Compensated sum of an array of this type. */
 VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);
+
+/* ---- output at any time and events (dense_impl.h, events_impl.h) -------- */
+/* Both drivers step exactly as vigen_integrate does (the same calls of
+ * T->step, so the steps and the final state are those of vigen_integrate
+ * bit for bit) and look between step ends through a continuous extension:
+ * on a step from (t0, y0) to (t1, y1), y = (q, p), the cubic Hermite
+ * polynomial through y0 and y1 with the slopes f(y0), f(y1) of the flow
+ * (q' = dH/dp, p' = -dH/dq).  Its error is O(h^4), like the method's own
+ * global error for order 4 and below it for orders 1 to 3.  The slopes cost
+ * one dH/dq and one dH/dp per step end, evaluated only for the steps that
+ * hold an output time or an event (a slope at a step end serves both steps
+ * that share it); other steps cost nothing beyond the stepper's work.
+ *
+ * The problem comes from the workspace: every workspace of an emitted
+ * stepper begins with its problem (the vigen_hamiltonian given to
+ * NAME_alloc, then the vigen_mechanical and the diagonal of M^-1 of
+ * NAME_alloc_mechanical, whose H has dH/dq = -f and dH/dp = M^-1 p).  For
+ * a stepper type of your own, pass the problem to the _sys variants. */
+
+/* An event function; events are the sign changes of g along the solution.
+ * It returns the real type (the root is refined in that type). */
+typedef VIGEN_REAL (*VIGEN_SFX(vigen_event_fn))(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, void *ctx);
+
+#ifndef VIGEN_DENSE_STATS_DEFINED
+#define VIGEN_DENSE_STATS_DEFINED
+/* What a dense-output or event run cost beyond the steps themselves. */
+typedef struct {
+    unsigned long steps;           /* steps taken */
+    unsigned long dHdq_evals;      /* slopes of the extension: calls of dH/dq (or of the force) */
+    unsigned long dHdp_evals;      /* calls of dH/dp (M^-1 p for a mechanical problem) */
+    unsigned long event_evals;     /* calls of the event function */
+    unsigned long root_iterations; /* root finder iterations, all events together */
+} vigen_dense_stats;
+#endif
+
+/* Steps with h from *t (h may be negative) until the last of the n_out
+ * output times t_out is reached, and writes the state at t_out[k] into
+ * q_out[k dim ..], p_out[k dim ..] (dim from the workspace's problem).
+ * t_out must be monotone in the direction of h (equal times allowed) and
+ * not before *t; an output time equal to a step end (or to the start) gets
+ * that state exactly.  On return t, q, p hold the last step's state (past
+ * or at the last output time) and *done (may be NULL) the steps taken.
+ * Returns VIGEN_SUCCESS, VIGEN_EINVAL (NULL pointer, h zero or not finite,
+ * output times out of order or before *t, a workspace without a problem:
+ * nothing is stepped or written; also when the steps have not reached the
+ * last output time after 5/4 of (t_last - t)/h + 16 steps, h too small to
+ * move t), VIGEN_ENOMEM, VIGEN_ENONFINITE (a slope or an interpolated
+ * state not finite) or the stepper's status (the state left at the last
+ * good step, the outputs before it written). */
+int VIGEN_SFX(vigen_integrate_at)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t, VIGEN_REAL *q,
+                                  VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
+                                  VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done);
+
+/* The same with the problem given (sys; NULL = the workspace's) and the
+ * cost reported in *st (may be NULL). */
+int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, void *w,
+                                      const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL *t, VIGEN_REAL *q,
+                                      VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
+                                      VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done,
+                                      vigen_dense_stats *st);
+
+/* Takes nsteps steps of size h from (t, q, p) and records the times where
+ * g changes sign: g is evaluated at every step end, and a step whose end
+ * values have opposite signs (rising: g0 < 0 <= g1, falling: g0 > 0 >= g1;
+ * direction +1 rising only, -1 falling only, 0 both) holds an event, found
+ * on the extension by Brent's method (GSL) to double round-off and then
+ * refined in the real type by bracketing to its round-off.  A start on a
+ * zero of g is not an event; two sign changes within one step cancel and
+ * are not seen.  The first max_events event times go to t_events (may be
+ * NULL when max_events is 0) in order, *n_events receives the number
+ * found.  terminal nonzero: the run stops at the first event with (t, q, p)
+ * set to the extension's state there (the steps before it are untouched);
+ * the workspace then holds a state it did not produce, which an emitted
+ * stepper detects on its next step (it restarts its compensation).
+ * Returns VIGEN_SUCCESS (also after a terminal event), VIGEN_EINVAL (NULL
+ * pointer, h zero or not finite, direction not -1, 0 or +1),
+ * VIGEN_ENOMEM, VIGEN_ENONFINITE (g, a slope or an interpolated state not
+ * finite), VIGEN_ENOCONV (the refinement did not close its bracket) or the
+ * stepper's status (state at the last good step). */
+int VIGEN_SFX(vigen_integrate_events)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t,
+                                      VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
+                                      VIGEN_SFX(vigen_event_fn) g, int direction, int terminal, void *ctx,
+                                      VIGEN_REAL *t_events, size_t max_events, size_t *n_events);
+
+/* The same with the problem given (sys; NULL = the workspace's) and the
+ * cost reported in *st (may be NULL; st->steps tells where a terminal
+ * event stopped the run). */
+int VIGEN_SFX(vigen_integrate_events_sys)(const VIGEN_SFX(vigen_stepper_type) *T, void *w,
+                                          const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL *t, VIGEN_REAL *q,
+                                          VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
+                                          VIGEN_SFX(vigen_event_fn) g, int direction, int terminal, void *ctx,
+                                          VIGEN_REAL *t_events, size_t max_events, size_t *n_events,
+                                          vigen_dense_stats *st);
