@@ -77,7 +77,7 @@ void vigen_poincare_free(vigen_poincare *pc);
 /* K as a Hamiltonian of dimension dim + 1 (separable 0, no Hessian: Newton
  * solvers use finite differences); its `t` argument is the fictive time,
  * which K ignores.  Valid until vigen_poincare_free; allocate the stepper's
- * workspace with it. */
+ * workspace with it (a stepper emitted with --dim N needs N = dim + 1). */
 const vigen_hamiltonian *vigen_poincare_hamiltonian(const vigen_poincare *pc);
 
 /* The extended state of (t, q, p): Q = (q, t), P = (p, -H(t, q, p)) (dim + 1
