@@ -3,7 +3,7 @@
  * tests/data/emit/golden: for each density g = r^alpha and fictive step,
  * the work (calls of the user's functions) and the largest energy error over
  * the run, then constant steps given at least the same work.  Prints a
- * markdown table (docs/sim_poincare.md).  Built and run by
+ * markdown table (docs/simulation.md).  Built and run by
  * bench/poincare_run.sh; usage: poincare_kepler [periods [e [newton]]]. */
 #include <math.h>
 #include <stdio.h>

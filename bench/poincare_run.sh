@@ -1,7 +1,7 @@
 #!/bin/bash
 # poincare_run.sh [PERIODS [E]] — builds bench/poincare_kepler.c with the
 # golden Gauss-2 stepper of tests/data/emit/golden and the runtime and
-# problem sources, and prints its table (docs/sim_poincare.md).
+# problem sources, and prints its table (docs/simulation.md).
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$(mktemp -d)

@@ -134,26 +134,46 @@ static int closed_integral(arb_t res, const node *n, const arb_t x, slong prec)
         if (ok) arb_div(res, v, u, prec);
         break;
     case N_POW: {
-        /* (a t + b)^k, k >= 0 an integer of any size (t^100000000 is no
-         * polynomial anyone expands): ((a x + b)^(k+1) - b^(k+1)) / (a (k+1)) */
-        if (!n->int_exp || fmpz_sgn(n->k) < 0 || !poly_node(p, n->a, prec) || arb_poly_degree(p) != 1) break;
+        /* (a t + b)^k of any size (t^100000000 is no polynomial anyone
+         * expands, and its integral is far below an absolute quadrature
+         * tolerance): ((a x + b)^(k+1) - b^(k+1)) / (a (k+1)), for an integer
+         * k >= 0, or a real constant k != -1 when a t + b >= 0 on [0, x]
+         * (b > 0, or b = 0 and k > -1, so that the integral exists) */
+        if (n->b->has_t || !poly_node(p, n->a, prec) || arb_poly_degree(p) != 1) break;
         arb_srcptr b = arb_poly_get_coeff_ptr(p, 0);
         arb_srcptr a = arb_poly_get_coeff_ptr(p, 1);
         if (arb_contains_zero(a)) break;
-        fmpz_t k1;
-        fmpz_init(k1);
-        fmpz_add_ui(k1, n->k, 1);
-        arb_mul(u, a, x, prec);
-        if (b != NULL) arb_add(u, u, b, prec);
-        arb_pow_fmpz(u, u, k1, prec);
-        if (b != NULL) {
-            arb_pow_fmpz(v, b, k1, prec);
-            arb_sub(u, u, v, prec);
+        int integer = n->int_exp && fmpz_sgn(n->k) >= 0;
+        arb_t k1, ax;
+        arb_init(k1);
+        arb_init(ax);
+        arb_mul(ax, a, x, prec);
+        if (b != NULL) arb_add(ax, ax, b, prec);                 /* a x + b */
+        if (integer) arb_set_fmpz(k1, n->k);
+        else ok = expr_eval_constant(k1, n->b, prec);
+        arb_add_ui(k1, k1, 1, prec);
+        int b_zero = b == NULL || arb_is_zero(b);
+        if (!integer && ok)
+            ok = arb_is_nonnegative(ax) && (b_zero ? arb_is_positive(k1) : arb_is_positive(b) && !arb_contains_zero(k1));
+        if (integer || ok) {
+            if (integer) {
+                fmpz_t e;
+                fmpz_init(e);
+                fmpz_add_ui(e, n->k, 1);
+                arb_pow_fmpz(u, ax, e, prec);
+                if (!b_zero) arb_pow_fmpz(v, b, e, prec);
+                fmpz_clear(e);
+            } else {
+                arb_pow(u, ax, k1, prec);
+                if (!b_zero) arb_pow(v, b, k1, prec);
+            }
+            if (!b_zero) arb_sub(u, u, v, prec);
+            arb_mul(v, a, k1, prec);
+            arb_div(res, u, v, prec);
+            ok = arb_is_finite(res);
         }
-        arb_mul_fmpz(v, a, k1, prec);
-        arb_div(res, u, v, prec);
-        fmpz_clear(k1);
-        ok = arb_is_finite(res);
+        arb_clear(k1);
+        arb_clear(ax);
         break;
     }
     case N_FUNC: {

@@ -98,6 +98,13 @@ run huge-weight 2 generate "$work/hostile_num_huge_weight.lua" --digits 8 -o out
 # a monomial of degree 10^8 in the basis: refused within seconds, not at 10 s
 limit=5 run monomial 3 generate "$work/hostile_num_monomial.lua" --digits 8 -o out.lua -- \
   "ct[1]" "is not certified to 8 digits" "the cap"
+# a non-integer power t^111783.5 (found by the spec fuzz harness: quadrature
+# lost its integrals, 14 s of refinement); its closed-form integral makes it
+# a quick, if useless, method
+cat >"$work/hostile_num_real_power.lua" <<'LUA'
+return { name = "hostile_num_real_power", nodes = gauss_legendre(2), basis = { "-t", "t^111783.5" } }
+LUA
+limit=5 run real-power 0 generate "$work/hostile_num_real_power.lua" -q -o - -- "hostile_num_real_power"
 # 100,000 nodes (FLINT aborted allocating the matrices)
 run many-nodes 2 generate "$specs/hostile_num_many_nodes.lua" -o out.lua -- \
   "hostile_num_many_nodes.lua" "nodes has 100000 entries" "at most 256"

@@ -15,6 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "vigen/emit.h"
+#include "vigen/method.h"
 #include "vigen/tableau.h"
 #include "testlib.h"
 
@@ -127,7 +128,12 @@ static int harness_emit_dim(const char *path, const char *name, int real, size_t
     vigen_error_init(&err);
     vigen_tableau t;
     if (c_text) *c_text = NULL;
-    if (vigen_tableau_load(&t, path, NULL, &err) != VIGEN_OK) {
+    /* any method file as it states its tableau (splitting files too) */
+    vigen_method *m = NULL;
+    int loaded = vigen_method_load(&m, path, NULL, &err);
+    if (loaded == VIGEN_OK) loaded = vigen_method_tableau(&t, m, 0, &err);
+    vigen_method_free(m);
+    if (loaded != VIGEN_OK) {
         CHECK_MSG(0, "%s: %s", path, err.message ? err.message : "");
         vigen_error_clear(&err);
         return 0;

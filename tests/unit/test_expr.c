@@ -664,8 +664,9 @@ static void test_closed_form_integrals(void)
         "cos(pi*t)", "sin(2*pi*t)", "exp(t/2)", "1 + cos(pi*t)/2", "3*sin(2*pi*t + 1/5) - exp(-t)/7 + t^2",
         "-(cos(3*pi*t - 1) * 2)", "sin(pi*(t - 1/2))", "exp(2*t + log(3))",
         "(t/3 - 1)^2000", "2*(1/2 + 5*t)^1500",      /* powers too high to expand into polynomials */
+        "(t + 1)^(1/3)", "3*(2*t + 1/2)^(5/2)", "(1 + t)^(-2)",   /* real powers of a positive base */
     };
-    static const char *const outside[] = {"t*cos(pi*t)", "cos(t^2)", "sin(pi*t)^2", "1/(1 + t)", "cos(0*t + 1) * t * exp(t)"};
+    static const char *const outside[] = {"(t - 1)^(1/2)", "(t - 1/5)^(1/3)", "t^(-1)", "t^(-3/2)", "t*cos(pi*t)", "cos(t^2)", "sin(pi*t)^2", "1/(1 + t)", "cos(0*t + 1) * t * exp(t)"};
     slong prec = 256;
     arb_t x, closed;
     acb_t a, b, quad;
@@ -713,6 +714,28 @@ static void test_closed_form_integrals(void)
             CHECK(arb_overlaps(closed, ref));
             CHECK_CLOSE(closed, ref, 60, prec);
             arb_clear(ref);
+            vigen_expr_free(e);
+        }
+    }
+    /* t^k, k = 111783.5 (found by the spec fuzz harness): x^(k+1) / (k+1) */
+    {
+        vigen_expr *e = NULL;
+        vigen_error err;
+        vigen_error_init(&err);
+        CHECK(vigen_expr_parse(&e, "t^111783.5", 1, &err) == VIGEN_OK);
+        if (e != NULL) {
+            arb_t ref, k1;
+            arb_init(ref);
+            arb_init(k1);
+            arb_set_ui(k1, 223569);
+            arb_mul_2exp_si(k1, k1, -1);               /* k + 1 = 111784.5 */
+            arb_pow(ref, x, k1, prec);
+            arb_div(ref, ref, k1, prec);
+            CHECK_MSG(vigen_expr_integral_closed_form(closed, e, x, prec), "t^111783.5: no closed form");
+            CHECK(arb_overlaps(closed, ref));
+            CHECK_CLOSE(closed, ref, 60, prec);
+            arb_clear(ref);
+            arb_clear(k1);
             vigen_expr_free(e);
         }
     }
