@@ -1,0 +1,391 @@
+/* diagnostics_differences.c — the comparison engine of the problem checks:
+ * a gradient against central differences of its function and second
+ * derivatives against differences of the gradient, each with an error
+ * estimate of the differences (truncation from three step sizes, round-off
+ * from the size of the values) that sets the tolerance; the step per
+ * variable, the nearby points, the sampled components, and the report's
+ * text. */
+#include <float.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "diagnostics_internal.h"
+
+/* A flagged mismatch exceeds this many times the error estimate. */
+#define DG_SAFETY 8.0
+/* The steps tried, as multiples of eps^(1/3) times the variable's scale,
+ * until the differences settle: larger when round-off swamps them (a part
+ * at rest whose scale is a guess), smaller when the function is not finite
+ * at their points or they do not settle; the one with the smallest error
+ * estimate is kept. */
+#define DG_ATTEMPTS 4
+static const double dg_step_factor[DG_ATTEMPTS] = { 1, 16, 1.0 / 16, 1.0 / 256 };
+/* Differences have settled when their truncation estimate is below this
+ * share of the derivative's scale. */
+#define DG_SETTLED 0x1p-20
+
+static size_t dg_m(const dg_function *f) { return (size_t)f->nparts * f->n; }
+
+void dg_tally_init(dg_tally *t)
+{
+    memset(t, 0, sizeof *t);
+    t->flagged.part = t->largest.part = -1;
+}
+
+void dg_tally_add(dg_tally *t, const dg_mismatch *m)
+{
+    t->compared++;
+    if (m->ratio > 1 && (!t->flagged.found || m->ratio > t->flagged.ratio)) t->flagged = *m;
+    if (!t->largest.found || m->rel > t->largest.rel) t->largest = *m;
+}
+
+double dg_pair_value(const void *self, const double *x)
+{
+    const dg_pair *f = self;
+    return f->value(f->t, x, x + f->n, f->ctx);
+}
+
+void dg_pair_gradient(const void *self, const double *x, double *g)
+{
+    const dg_pair *f = self;
+    f->grad[0](f->t, x, x + f->n, g, f->ctx);
+    f->grad[1](f->t, x, x + f->n, g + f->n, f->ctx);
+}
+
+void dg_rng_init(dg_rng *r) { r->s = UINT64_C(0x243F6A8885A308D3); }
+
+double dg_rng_uniform(dg_rng *r)
+{
+    uint64_t z = (r->s += UINT64_C(0x9E3779B97F4A7C15));
+    z = (z ^ (z >> 30)) * UINT64_C(0xBF58476D1CE4E5B9);
+    z = (z ^ (z >> 27)) * UINT64_C(0x94D049BB133111EB);
+    z ^= z >> 31;
+    return (double)(z >> 11) * 0x1p-52 - 1.0;
+}
+
+void dg_scales(const dg_function *f, const double *x, double *s)
+{
+    for (int part = 0; part < f->nparts; part++) {
+        const double *xp = x + (size_t)part * f->n;
+        double big = 0;
+        for (size_t j = 0; j < f->n; j++) big = fmax(big, fabs(xp[j]));
+        if (!(big > 0) || !isfinite(big)) big = 1;
+        for (size_t j = 0; j < f->n; j++) s[(size_t)part * f->n + j] = fmax(fabs(xp[j]), big);
+    }
+}
+
+void dg_nearby(const dg_function *f, const double *x, const double *s, dg_rng *r, double *out)
+{
+    for (size_t k = 0; k < dg_m(f); k++) out[k] = x[k] + 0x1p-10 * dg_rng_uniform(r) * s[k];
+}
+
+size_t dg_sample(size_t n, dg_rng *r, size_t *idx)
+{
+    if (n <= DG_MAX_COMPONENTS) {
+        for (size_t k = 0; k < n; k++) idx[k] = k;
+        return n;
+    }
+    for (size_t k = 0; k < DG_MAX_COMPONENTS; k++) {
+        size_t lo = k * n / DG_MAX_COMPONENTS, hi = (k + 1) * n / DG_MAX_COMPONENTS;
+        size_t off = (size_t)((dg_rng_uniform(r) + 1) / 2 * (double)(hi - lo));
+        idx[k] = lo + (off < hi - lo ? off : 0);
+    }
+    return DG_MAX_COMPONENTS;
+}
+
+size_t dg_first_nonfinite(const double *v, size_t m)
+{
+    for (size_t k = 0; k < m; k++)
+        if (!isfinite(v[k])) return k;
+    return m;
+}
+
+/* Largest |v| over each part into scale[part]. */
+static void dg_part_scales(const dg_function *f, const double *v, double scale[2])
+{
+    scale[0] = scale[1] = 0;
+    for (int part = 0; part < f->nparts; part++)
+        for (size_t j = 0; j < f->n; j++) scale[part] = fmax(scale[part], fabs(v[(size_t)part * f->n + j]));
+}
+
+/* (f(x + h e_k) - f(x - h e_k)) / (the actual distance of the two points);
+ * *vmax grows to the largest |f| seen; *ok is cleared on a value that is
+ * not finite.  x[k] is restored. */
+static double dg_central(const dg_function *f, double *x, size_t k, double h, double *vmax, int *ok)
+{
+    double xk = x[k], xp = xk + h, xm = xk - h;
+    x[k] = xp;
+    double fp = f->value(f->self, x);
+    x[k] = xm;
+    double fm = f->value(f->self, x);
+    x[k] = xk;
+    if (!isfinite(fp) || !isfinite(fm) || !(xp > xm)) *ok = 0;
+    *vmax = fmax(*vmax, fmax(fabs(fp), fabs(fm)));
+    return (fp - fm) / (xp - xm);
+}
+
+/* Round-off of one evaluation of a function whose terms are of size `size`,
+ * in m variables: a few ulps, and the growth of a sum over the variables. */
+static double dg_roundoff(double size, size_t m) { return DBL_EPSILON * (4 + sqrt((double)m)) * size; }
+
+static void dg_record(dg_tally *t, double given, double diff, double acc, double scale, int part, size_t index,
+                      size_t column, const char *block, int point)
+{
+    double err = fabs(given - diff), tol = DG_SAFETY * acc, den = fmax(fmax(fabs(given), fabs(diff)), scale);
+    dg_mismatch m = { tol > 0 ? err / tol : (err > 0 ? HUGE_VAL : 0), den > 0 ? err / den : 0, given, diff, acc,
+                      part, index, column, block, point, 1 };
+    dg_tally_add(t, &m);
+}
+
+int dg_compare_gradient(const dg_function *f, const double *x, const double *g, const double *s, int point,
+                        dg_rng *r, dg_tally *t)
+{
+    size_t m = dg_m(f), idx[DG_MAX_COMPONENTS];
+    double *xw = malloc(m * sizeof *xw), gscale[2];
+    if (xw == NULL) return VIGEN_ENOMEM;
+    memcpy(xw, x, m * sizeof *xw);
+    dg_part_scales(f, g, gscale);
+    /* the size of the terms of f: |f| and sum |x_j g_j| (the terms of a sum
+     * of homogeneous functions, which |f| alone misses when they cancel) */
+    double size = fabs(f->value(f->self, x));
+    for (size_t j = 0; j < m; j++) size += fabs(x[j] * g[j]);
+    const double h0 = cbrt(DBL_EPSILON);
+    for (int part = 0; part < f->nparts; part++) {
+        size_t ns = dg_sample(f->n, r, idx);
+        if (ns < f->n) t->sampled = 1;
+        for (size_t c = 0; c < ns; c++) {
+            size_t k = (size_t)part * f->n + idx[c];
+            double best = HUGE_VAL, bestD = 0;
+            for (int attempt = 0; attempt < DG_ATTEMPTS; attempt++) {
+                double h = h0 * s[k] * dg_step_factor[attempt], vmax = 0;
+                int ok = 1;
+                double d2 = dg_central(f, xw, k, 2 * h, &vmax, &ok);
+                double d1 = dg_central(f, xw, k, h, &vmax, &ok);
+                double d0 = dg_central(f, xw, k, h / 2, &vmax, &ok);
+                if (!ok) continue;
+                double trunc = fmax(fabs(d2 - d1) / 12, fabs(d1 - d0) / 3);
+                double acc = trunc + 2 * dg_roundoff(fmax(size, vmax), m) / h + 4 * DBL_EPSILON * fabs(d0);
+                if (acc < best) {
+                    best = acc;
+                    bestD = d0;
+                }
+                if (trunc <= DG_SETTLED * fmax(fmax(fabs(g[k]), fabs(d0)), gscale[part])) break;
+            }
+            if (best == HUGE_VAL) continue;   /* no finite differences: nothing to compare */
+            /* relative to the part's largest component, or where the part
+             * vanishes (p = 0 at rest) to the function's size per scale */
+            dg_record(t, g[k], bestD, best, gscale[part] > 0 ? gscale[part] : size / s[k], part, idx[c], (size_t)-1, NULL, point);
+        }
+    }
+    free(xw);
+    return VIGEN_SUCCESS;
+}
+
+/* Whether column c is a column of some block. */
+static int dg_column_used(const dg_block *b, size_t nb, size_t c)
+{
+    for (size_t i = 0; i < nb; i++)
+        if (c >= b[i].col0 && c < b[i].col0 + b[i].cols) return 1;
+    return 0;
+}
+
+/* Differences of the gradient along column c at steps 2h, h, h/2 into
+ * d (3 m); *gmax (m) grows to the largest |g_r| seen.  0 when a gradient
+ * is not finite. */
+static int dg_gradient_differences(const dg_function *f, double *xw, size_t c, double h, double *d, double *gp,
+                                   double *gm, double *gmax)
+{
+    size_t m = dg_m(f);
+    double xc = xw[c];
+    int ok = 1;
+    for (int k = 0; k < 3; k++) {
+        double step = h * (k == 0 ? 2 : k == 1 ? 1 : 0.5), xp = xc + step, xm = xc - step;
+        xw[c] = xp;
+        f->gradient(f->self, xw, gp);
+        xw[c] = xm;
+        f->gradient(f->self, xw, gm);
+        xw[c] = xc;
+        if (dg_first_nonfinite(gp, m) < m || dg_first_nonfinite(gm, m) < m || !(xp > xm)) ok = 0;
+        for (size_t r = 0; r < m; r++) {
+            d[(size_t)k * m + r] = (gp[r] - gm[r]) / (xp - xm);
+            gmax[r] = fmax(gmax[r], fmax(fabs(gp[r]), fabs(gm[r])));
+        }
+    }
+    return ok;
+}
+
+int dg_compare_second(const dg_function *f, const double *x, const double *s, const dg_block *blocks,
+                      size_t nblocks, int point, dg_rng *r, dg_tally *t)
+{
+    size_t m = dg_m(f), idx[DG_MAX_COMPONENTS];
+    double *mem = malloc(10 * m * sizeof *mem);
+    if (mem == NULL) return VIGEN_ENOMEM;
+    double *xw = mem, *g0 = xw + m, *gp = g0 + m, *gm = gp + m, *gmax = gm + m, *d = gmax + m;
+    double *bestD = d + 3 * m, *bestAcc = bestD + m, gscale[2];
+    memcpy(xw, x, m * sizeof *xw);
+    f->gradient(f->self, x, g0);
+    dg_part_scales(f, g0, gscale);
+    double bscale[8] = { 0 };   /* largest |entry| of each block (at most 8 blocks) */
+    for (size_t b = 0; b < nblocks && b < 8; b++)
+        for (size_t i = 0; i < blocks[b].rows; i++)
+            for (size_t j = 0; j < blocks[b].cols; j++)
+                bscale[b] = fmax(bscale[b], fabs(blocks[b].a[i * blocks[b].stride + j]));
+    const double h0 = cbrt(DBL_EPSILON);
+    for (int part = 0; part < f->nparts; part++) {
+        size_t ns = dg_sample(f->n, r, idx);
+        if (ns < f->n) t->sampled = 1;
+        for (size_t ci = 0; ci < ns; ci++) {
+            size_t c = (size_t)part * f->n + idx[ci];
+            if (!dg_column_used(blocks, nblocks, c)) continue;
+            double bestq = HUGE_VAL;
+            for (int attempt = 0; attempt < DG_ATTEMPTS; attempt++) {
+                double h = h0 * s[c] * dg_step_factor[attempt], worstq = 0;
+                memcpy(gmax, g0, m * sizeof *gmax);
+                for (size_t k = 0; k < m; k++) gmax[k] = fabs(gmax[k]);
+                if (!dg_gradient_differences(f, xw, c, h, d, gp, gm, gmax)) continue;
+                for (size_t k = 0; k < m; k++) {
+                    double d2 = d[k], d1 = d[m + k], d0 = d[2 * m + k];
+                    double trunc = fmax(fabs(d2 - d1) / 12, fabs(d1 - d0) / 3);
+                    double size = fmax(gmax[k], gscale[k / f->n]);
+                    gp[k] = trunc + 2 * dg_roundoff(size, m) / h + 4 * DBL_EPSILON * fabs(d0);
+                    double den = fmax(fabs(d0), size / s[c]);
+                    if (den > 0) worstq = fmax(worstq, trunc / den);
+                }
+                if (worstq < bestq) {
+                    bestq = worstq;
+                    memcpy(bestD, d + 2 * m, m * sizeof *bestD);
+                    memcpy(bestAcc, gp, m * sizeof *bestAcc);
+                }
+                if (worstq <= DG_SETTLED) break;
+            }
+            if (bestq == HUGE_VAL) continue;
+            for (size_t b = 0; b < nblocks; b++) {
+                const dg_block *B = &blocks[b];
+                if (c < B->col0 || c >= B->col0 + B->cols) continue;
+                for (size_t i = 0; i < B->rows; i++) {
+                    size_t row = B->row0 + i;
+                    dg_record(t, B->a[i * B->stride + (c - B->col0)], bestD[row], bestAcc[row],
+                              b < 8 ? bscale[b] : 0, (int)(row / f->n), row % f->n, c, B->name, point);
+                }
+            }
+        }
+    }
+    free(mem);
+    return VIGEN_SUCCESS;
+}
+
+int dg_check_points(const dg_function *f, const double *x, double *s, dg_tally *grad, dg_point_fn extra,
+                    void *ctx, int *points)
+{
+    size_t m = dg_m(f);
+    dg_rng rng, *r = &rng;
+    dg_rng_init(r);
+    dg_tally_init(grad);
+    dg_scales(f, x, s);
+    double *y = malloc(3 * m * sizeof *y);
+    if (y == NULL) return VIGEN_ENOMEM;
+    double *gx = y + m, *gy = gx + m;
+    f->gradient(f->self, x, gx);
+    int rc = VIGEN_SUCCESS;
+    for (int point = 0; point < DG_POINTS && rc == VIGEN_SUCCESS; point++) {
+        const double *at = x, *gat = gx;
+        if (point > 0) {   /* a nearby point, skipped where the problem is not finite */
+            dg_nearby(f, x, s, r, y);
+            f->gradient(f->self, y, gy);
+            if (dg_first_nonfinite(gy, m) < m || (f->value && !isfinite(f->value(f->self, y)))) continue;
+            at = y;
+            gat = gy;
+        }
+        ++*points;
+        if (f->value) rc = dg_compare_gradient(f, at, gat, s, point, r, grad);
+        if (rc == VIGEN_SUCCESS && extra) rc = extra(ctx, at, point, r);
+    }
+    free(y);
+    return rc;
+}
+
+/* ---- the report ----------------------------------------------------------- */
+
+void dg_report_start(vigen_problem_report *rep)
+{
+    memset(rep, 0, sizeof *rep);
+    rep->worst_part = -1;
+    rep->worst_column = (size_t)-1;
+}
+
+int dg_report_set(vigen_problem_report *rep, int status, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(rep->message, sizeof rep->message, fmt, ap);
+    va_end(ap);
+    rep->status = status;
+    return status;
+}
+
+int dg_state_values(const dg_function *f, const double *x, double *g, vigen_problem_report *rep)
+{
+    size_t m = dg_m(f);
+    f->gradient(f->self, x, g);
+    size_t k = dg_first_nonfinite(g, m);
+    double v = f->value ? f->value(f->self, x) : 0;
+    if (!isfinite(v))
+        return dg_report_set(rep, VIGEN_ENONFINITE, "%s is %g at the state: the problem is not finite there",
+                             f->value_name, v);
+    if (k < m) {
+        int part = (int)(k / f->n);
+        rep->worst_part = part;
+        rep->worst_index = k % f->n;
+        return dg_report_set(rep, VIGEN_ENONFINITE, "%s[%zu] is %g at the state: the problem's derivatives are not "
+                             "finite there", f->part_name[part], k % f->n, f->part_sign[part] * g[k]);
+    }
+    return VIGEN_SUCCESS;
+}
+
+int dg_state_check(vigen_problem_report *rep, double t, const char *na, const double *a, const char *nb,
+                   const double *b, size_t n)
+{
+    if (!isfinite(t)) return dg_report_set(rep, VIGEN_EINVAL, "the time t = %g of the state is not finite", t);
+    for (int i = 0; i < 2; i++) {
+        const double *v = i ? b : a;
+        size_t k = v ? dg_first_nonfinite(v, n) : n;
+        if (k < n)
+            return dg_report_set(rep, VIGEN_EINVAL, "the state is not finite: %s[%zu] is %g", i ? nb : na, k, v[k]);
+    }
+    return VIGEN_SUCCESS;
+}
+
+const char *dg_where(int point) { return point == 0 ? "at the state" : "near the state"; }
+
+int dg_report_mismatch(vigen_problem_report *rep, const dg_function *f, const dg_mismatch *m, int status)
+{
+    rep->worst_rel_error = m->rel;
+    rep->worst_part = m->part;
+    rep->worst_index = m->index;
+    rep->worst_column = m->column;
+    const char *part = f->part_name[m->part];
+    if (m->column == (size_t)-1) {
+        double sign = f->part_sign[m->part];
+        return dg_report_set(rep, status,
+                              "%s[%zu] is %.6g %s but the central difference of %s%s is %.6g, a relative "
+                              "mismatch of %.2g (the difference is accurate to %.1g)",
+                              part, m->index, sign * m->given, dg_where(m->point), sign < 0 ? "-" : "",
+                              f->value_name, sign * m->differences, m->rel, m->accuracy);
+    }
+    int cpart = (int)(m->column / f->n);
+    return dg_report_set(rep, status,
+                          "%s entry d(%s[%zu])/d%s[%zu] is %.6g %s but the central difference of %s[%zu] is "
+                          "%.6g, a relative mismatch of %.2g (the difference is accurate to %.1g)",
+                          m->block, part, m->index, f->var_name[cpart], m->column % f->n, m->given,
+                          dg_where(m->point), part, m->index, m->differences, m->rel, m->accuracy);
+}
+
+void dg_report_largest(vigen_problem_report *rep, const dg_tally *t)
+{
+    if (!t->largest.found) return;
+    rep->worst_rel_error = t->largest.rel;
+    rep->worst_part = t->largest.part;
+    rep->worst_index = t->largest.index;
+}
