@@ -3,11 +3,13 @@
  * chain, the pendulum, a charged particle) with deliberate mistakes planted:
  * a sign error and a factor 2 are flagged naming their component (the factor
  * 2 with the relative mismatch 1/2 that the definition gives); a coupled H
- * marked separable is flagged; a wrong Hessian entry is flagged with its row
- * and column; a NaN gradient is reported; H = NULL is a skipped check.  Correct problems are
+ * marked separable is flagged; a wrong Hessian entry and a wrong second
+ * derivative of a Lagrangian are flagged with their row and column; a NaN
+ * gradient is reported; H = NULL is a skipped check.  Correct problems are
  * not flagged: Kepler and a harmonic chain rescaled (coordinates near 1e8,
  * masses near 1e-12, and a sweep of scales 1e-8 .. 1e8), every problem of the
- * collection at its initial value and at random states. */
+ * collection at its initial value and at random states, Hamiltonian and
+ * Lagrangian. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -268,7 +270,7 @@ static void check_problem(const char *name, const char *params)
         return;
     }
     size_t n = vigen_problem_dim(pb);
-    double t, *q = malloc(2 * n * sizeof *q), *p = q + n;
+    double t, *q = malloc(3 * n * sizeof *q), *p = q + n, *v = p + n;
     vigen_problem_initial(pb, &t, q, p);
     const vigen_hamiltonian *H = vigen_problem_hamiltonian(pb);
     vigen_problem_report rep;
@@ -292,6 +294,15 @@ static void check_problem(const char *name, const char *params)
             break;
         }
     }
+    vigen_lgrad_fn g = NULL;
+    const vigen_lagrangian *L = vigen_problem_lagrangian(pb, &g);
+    if (L) {
+        vigen_problem_initial(pb, &t, q, p);
+        g(t, q, p, v, L->ctx);
+        CHECK_MSG(vigen_lagrangian_check(L, t, q, v, &rep) == VIGEN_SUCCESS, "%s %s (Lagrangian): %s", name, params,
+                  rep.message);
+        CHECK(rep.gradient_checked && rep.second_checked == (n <= 1024));
+    }
     vigen_problem_free(pb);
     free(q);
 }
@@ -302,11 +313,152 @@ static void test_collection(void)
     for (size_t i = 0; i < sizeof variants / sizeof variants[0]; i++) check_problem(variants[i][0], variants[i][1]);
 }
 
+/* ---- mechanical ---------------------------------------------------------- */
+/* Kepler as V = -k/|q| with the force -k q/|q|^3 */
+static double mech_V(double t, const double *q, void *ctx)
+{
+    (void)t;
+    const kepler *K = ctx;
+    return -K->k / hypot(q[0], q[1]);
+}
+
+static void mech_force(double t, const double *q, double *f, void *ctx)
+{
+    (void)t;
+    const kepler *K = ctx;
+    double r = hypot(q[0], q[1]), c = -K->k / (r * r * r);
+    f[0] = c * q[0];
+    f[1] = c * q[1];
+    if (K->mistake == SIGN_Q1) f[1] = -f[1];
+    if (K->mistake == FACTOR2_P0) f[0] *= 2;
+    if (K->mistake == NAN_Q0) f[0] = NAN;
+}
+
+static void test_mechanical(void)
+{
+    kepler K = { 1, 1, OK };
+    double im[2] = { 1e12, 1e12 };
+    vigen_mechanical sys = { .dim = 2, .force = mech_force, .V = mech_V, .ctx = &K, .inv_mass = im };
+    double q[2] = { 0.3, 0.5 };
+    vigen_problem_report rep;
+    CHECK_MSG(vigen_mechanical_check(&sys, 0, q, &rep) == VIGEN_SUCCESS, "%s", rep.message);
+    CHECK(rep.gradient_checked && one_sentence(rep.message));
+    K.mistake = SIGN_Q1;
+    CHECK(vigen_mechanical_check(&sys, 0, q, &rep) == VIGEN_EGRADIENT);
+    CHECK_MSG(rep.worst_part == 0 && rep.worst_index == 1 && strstr(rep.message, "force[1]") &&
+              fabs(rep.worst_rel_error - 2) < 1e-6, "%s", rep.message);
+    printf("force: %s\n", rep.message);
+    K.mistake = FACTOR2_P0;
+    CHECK(vigen_mechanical_check(&sys, 0, q, &rep) == VIGEN_EGRADIENT && rep.worst_index == 0 &&
+          fabs(rep.worst_rel_error - 0.5) < 1e-6);
+    K.mistake = NAN_Q0;
+    CHECK(vigen_mechanical_check(&sys, 0, q, &rep) == VIGEN_ENONFINITE && strstr(rep.message, "force[0]"));
+    K = (kepler){ 1, 1.327e20, OK };   /* scaled: positions near 1e8 */
+    double qs[2] = { 1e8, -4e7 };
+    CHECK_MSG(vigen_mechanical_check(&sys, 0, qs, &rep) == VIGEN_SUCCESS, "%s", rep.message);
+    K.mistake = SIGN_Q1;
+    CHECK(vigen_mechanical_check(&sys, 0, qs, &rep) == VIGEN_EGRADIENT && rep.worst_index == 1);
+    sys.V = NULL;
+    CHECK(vigen_mechanical_check(&sys, 0, qs, &rep) == VIGEN_SUCCESS && strstr(rep.message, "skipped"));
+    im[1] = NAN;
+    CHECK(vigen_mechanical_check(&sys, 0, qs, &rep) == VIGEN_EINVAL && strstr(rep.message, "inv_mass[1]"));
+}
+
+/* ---- Lagrangian: the pendulum L = m v^2/2 + m cos q, in a plane pair ------ */
+typedef struct { double m; int mistake; } pend;
+
+static double pend_L(double t, const double *q, const double *v, void *ctx)
+{
+    (void)t;
+    const pend *P = ctx;
+    return P->m * (v[0] * v[0] + v[1] * v[1]) / 2 + P->m * (cos(q[0]) + cos(q[1])) + P->m * q[0] * v[1];
+}
+
+static void pend_dLdq(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t;
+    const pend *P = ctx;
+    out[0] = -P->m * sin(q[0]) + P->m * v[1];
+    out[1] = -P->m * sin(q[1]);
+    if (P->mistake == 3) out[0] = NAN;
+}
+
+static void pend_dLdv(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t;
+    const pend *P = ctx;
+    out[0] = P->m * v[0];
+    out[1] = P->m * (v[1] + q[0]);
+    if (P->mistake == 1) out[1] *= 2;
+}
+
+static void pend_Lqq(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t; (void)v;
+    const pend *P = ctx;
+    out[0] = -P->m * cos(q[0]);
+    out[1] = out[2] = 0;
+    out[3] = -P->m * cos(q[1]);
+    if (P->mistake == 2) out[3] = -out[3];
+}
+
+static void pend_Lvv(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t; (void)q; (void)v;
+    const pend *P = ctx;
+    out[0] = out[3] = P->m;
+    out[1] = out[2] = 0;
+}
+
+static void pend_Lqv(double t, const double *q, const double *v, double *out, void *ctx)
+{
+    (void)t; (void)q; (void)v;
+    const pend *P = ctx;
+    out[0] = out[2] = out[3] = 0;
+    out[1] = P->m;   /* d(dL/dq0)/dv1 */
+    if (P->mistake == 4) out[1] = 0;
+}
+
+static void test_lagrangian(void)
+{
+    pend P = { 1e-12, 0 };
+    vigen_lagrangian lag = { .dim = 2, .dLdq = pend_dLdq, .dLdv = pend_dLdv, .L = pend_L, .ctx = &P,
+                             .d2Ldq2 = pend_Lqq, .d2Ldv2 = pend_Lvv, .d2Ldqdv = pend_Lqv };
+    double q[2] = { 0.7, -2.1 }, v[2] = { 0, 0 };   /* at rest */
+    vigen_problem_report rep;
+    CHECK_MSG(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_SUCCESS, "%s", rep.message);
+    CHECK(rep.gradient_checked && rep.second_checked && one_sentence(rep.message));
+    P.mistake = 1;
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_EGRADIENT);
+    CHECK_MSG(rep.worst_part == 1 && rep.worst_index == 1 && strstr(rep.message, "dL/dv[1]") &&
+              fabs(rep.worst_rel_error - 0.5) < 1e-6, "%s", rep.message);
+    P.mistake = 2;
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_EHESSIAN);
+    CHECK_MSG(rep.worst_part == 0 && rep.worst_index == 1 && rep.worst_column == 1 &&
+              strstr(rep.message, "d2Ldq2 entry d(dL/dq[1])/dq[1]"), "%s", rep.message);
+    printf("Lagrangian: %s\n", rep.message);
+    P.mistake = 4;
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_EHESSIAN);
+    CHECK_MSG(rep.worst_part == 0 && rep.worst_index == 0 && rep.worst_column == 3 &&
+              strstr(rep.message, "d2Ldqdv entry d(dL/dq[0])/dv[1]"), "%s", rep.message);
+    P.mistake = 3;
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_ENONFINITE && strstr(rep.message, "dL/dq[0]"));
+    P.mistake = 1;
+    lag.L = NULL;   /* without L: the second derivatives still check the first */
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_EHESSIAN);
+    lag.d2Ldq2 = lag.d2Ldv2 = lag.d2Ldqdv = NULL;
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_SUCCESS && strstr(rep.message, "skipped"));
+    lag.dLdv = NULL;
+    CHECK(vigen_lagrangian_check(&lag, 0, q, v, &rep) == VIGEN_EINVAL);
+}
+
 int main(void)
 {
     test_kepler_mistakes();
     test_kepler_scaled();
     test_chain_scaled();
     test_collection();
+    test_mechanical();
+    test_lagrangian();
     TEST_MAIN_END();
 }

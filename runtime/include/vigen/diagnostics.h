@@ -75,11 +75,24 @@ typedef struct {
 int vigen_problem_check(const vigen_hamiltonian *sys, double t, const double *q, const double *p,
                         vigen_problem_report *rep);
 
+/* Checks a mechanical problem at (t, q): inv_mass (when given) and the force
+ * finite, and the force against -(central differences of V) when V is given
+ * (worst_part 0). */
+int vigen_mechanical_check(const vigen_mechanical *sys, double t, const double *q, vigen_problem_report *rep);
+
+/* Checks a Lagrangian at (t, q, v): L (when given), dL/dq and dL/dv finite;
+ * dL/dq and dL/dv against central differences of L (when given); d2Ldq2,
+ * d2Ldv2 and d2Ldqdv (each when set) against differences of dL/dq and dL/dv
+ * (VIGEN_EHESSIAN). */
+int vigen_lagrangian_check(const vigen_lagrangian *lag, double t, const double *q, const double *v,
+                           vigen_problem_report *rep);
+
 /* For code that stops on a bad problem, e.g. a stepper compiled with
  * -DVIGEN_CHECK_PROBLEM: runs the check and, when it fails, writes
  * "WHO: MESSAGE" on standard error.  Returns the status. */
 int vigen_problem_check_or_say(const char *who, const vigen_hamiltonian *sys, double t, const double *q,
                                const double *p);
+int vigen_mechanical_check_or_say(const char *who, const vigen_mechanical *sys, double t, const double *q);
 
 #ifdef __cplusplus
 }
