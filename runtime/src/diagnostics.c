@@ -93,8 +93,8 @@ static void ham_success(vigen_problem_report *rep, const vigen_hamiltonian *sys,
     dg_report_set(rep, VIGEN_SUCCESS, "%s%s%s%s.", head,
                   sys->separable ? "; dH/dp ignores t and q and dH/dq ignores p" : "",
                   !sys->hessian ? "" : hessian_checked ? "; the Hessian agrees with differences of the gradients"
-                                                       : "; the Hessian was not checked (dimension above 1024)",
-                  tally->sampled ? "; 128 components of each part were sampled" : "");
+                                                       : "; Hessian not checked (dimension > 1024)",
+                  tally->sampled ? "; 64 components per part sampled, all along random directions" : "");
 }
 
 /* The verdict once every point is checked: the first kind of mismatch found. */

@@ -38,7 +38,7 @@ void dg_tally_add(dg_tally *t, const dg_mismatch *m)
 {
     t->compared++;
     if (m->ratio > 1 && (!t->flagged.found || m->ratio > t->flagged.ratio)) t->flagged = *m;
-    if (!t->largest.found || m->rel > t->largest.rel) t->largest = *m;
+    if (m->part >= 0 && (!t->largest.found || m->rel > t->largest.rel)) t->largest = *m;
 }
 
 double dg_pair_value(const void *self, const double *x)
@@ -65,13 +65,32 @@ double dg_rng_uniform(dg_rng *r)
     return (double)(z >> 11) * 0x1p-52 - 1.0;
 }
 
+/* The scale of a part that is all zero (p = 0 at rest): the distance at
+ * which f, growing quadratically from x along the part's first variable,
+ * changes by the size of its terms (|f| + sum |x_j g_j|, estimated here by
+ * |f| and a unit step); 1 when f is not given or does not change. */
+static double dg_zero_part_scale(const dg_function *f, const double *x, int part)
+{
+    if (f->value == NULL) return 1;
+    size_t m = dg_m(f), k = (size_t)part * f->n;
+    double *y = malloc(m * sizeof *y);
+    if (y == NULL) return 1;
+    memcpy(y, x, m * sizeof *y);
+    double f0 = f->value(f->self, x);
+    y[k] = 1;
+    double d = fabs(f->value(f->self, y) - f0);
+    free(y);
+    double s = sqrt((fabs(f0) + d) / d);
+    return isfinite(s) && s > 0 ? s : 1;
+}
+
 void dg_scales(const dg_function *f, const double *x, double *s)
 {
     for (int part = 0; part < f->nparts; part++) {
         const double *xp = x + (size_t)part * f->n;
         double big = 0;
         for (size_t j = 0; j < f->n; j++) big = fmax(big, fabs(xp[j]));
-        if (!(big > 0) || !isfinite(big)) big = 1;
+        if (!(big > 0) || !isfinite(big)) big = dg_zero_part_scale(f, x, part);
         for (size_t j = 0; j < f->n; j++) s[(size_t)part * f->n + j] = fmax(fabs(xp[j]), big);
     }
 }
@@ -81,18 +100,18 @@ void dg_nearby(const dg_function *f, const double *x, const double *s, dg_rng *r
     for (size_t k = 0; k < dg_m(f); k++) out[k] = x[k] + 0x1p-10 * dg_rng_uniform(r) * s[k];
 }
 
-size_t dg_sample(size_t n, dg_rng *r, size_t *idx)
+size_t dg_sample(size_t n, size_t cap, dg_rng *r, size_t *idx)
 {
-    if (n <= DG_MAX_COMPONENTS) {
+    if (n <= cap) {
         for (size_t k = 0; k < n; k++) idx[k] = k;
         return n;
     }
-    for (size_t k = 0; k < DG_MAX_COMPONENTS; k++) {
-        size_t lo = k * n / DG_MAX_COMPONENTS, hi = (k + 1) * n / DG_MAX_COMPONENTS;
+    for (size_t k = 0; k < cap; k++) {
+        size_t lo = k * n / cap, hi = (k + 1) * n / cap;
         size_t off = (size_t)((dg_rng_uniform(r) + 1) / 2 * (double)(hi - lo));
         idx[k] = lo + (off < hi - lo ? off : 0);
     }
-    return DG_MAX_COMPONENTS;
+    return cap;
 }
 
 size_t dg_first_nonfinite(const double *v, size_t m)
@@ -110,20 +129,33 @@ static void dg_part_scales(const dg_function *f, const double *v, double scale[2
         for (size_t j = 0; j < f->n; j++) scale[part] = fmax(scale[part], fabs(v[(size_t)part * f->n + j]));
 }
 
-/* (f(x + h e_k) - f(x - h e_k)) / (the actual distance of the two points);
- * *vmax grows to the largest |f| seen; *ok is cleared on a value that is
- * not finite.  x[k] is restored. */
-static double dg_central(const dg_function *f, double *x, size_t k, double h, double *vmax, int *ok)
+/* (f(x + h d) - f(x - h d)) / (the distance of the two points) with
+ * d = e_k (dir NULL: the actual distance) or dir (2 h); xw holds x and is
+ * restored.  *vmax grows to the largest |f| seen; *ok is cleared on a value
+ * that is not finite. */
+static double dg_central(const dg_function *f, double *xw, const double *x, size_t k, const double *dir, double h,
+                         double *vmax, int *ok)
 {
-    double xk = x[k], xp = xk + h, xm = xk - h;
-    x[k] = xp;
-    double fp = f->value(f->self, x);
-    x[k] = xm;
-    double fm = f->value(f->self, x);
-    x[k] = xk;
-    if (!isfinite(fp) || !isfinite(fm) || !(xp > xm)) *ok = 0;
+    double fp, fm, dist = 2 * h;
+    if (dir == NULL) {
+        double xk = xw[k], xp = xk + h, xm = xk - h;
+        xw[k] = xp;
+        fp = f->value(f->self, xw);
+        xw[k] = xm;
+        fm = f->value(f->self, xw);
+        xw[k] = xk;
+        dist = xp - xm;
+    } else {
+        size_t m = dg_m(f);
+        for (size_t j = 0; j < m; j++) xw[j] = x[j] + h * dir[j];
+        fp = f->value(f->self, xw);
+        for (size_t j = 0; j < m; j++) xw[j] = x[j] - h * dir[j];
+        fm = f->value(f->self, xw);
+        memcpy(xw, x, m * sizeof *xw);
+    }
+    if (!isfinite(fp) || !isfinite(fm) || !(dist > 0)) *ok = 0;
     *vmax = fmax(*vmax, fmax(fabs(fp), fabs(fm)));
-    return (fp - fm) / (xp - xm);
+    return (fp - fm) / dist;
 }
 
 /* Round-off of one evaluation of a function whose terms are of size `size`,
@@ -139,11 +171,61 @@ static void dg_record(dg_tally *t, double given, double diff, double acc, double
     dg_tally_add(t, &m);
 }
 
+/* The derivative of f at x along e_k (dir NULL) or dir from central
+ * differences at the steps 2h, h, h/2 (h = h1 times each factor of
+ * dg_step_factor until they settle relative to scale): *D at h/2 and *acc
+ * its error estimate (truncation from the three steps, round-off of values
+ * of terms of size `size`).  0 when no step gives finite values. */
+static int dg_derivative(const dg_function *f, double *xw, const double *x, size_t k, const double *dir, double h1,
+                         double size, double scale, double *D, double *acc)
+{
+    double best = HUGE_VAL;
+    for (int attempt = 0; attempt < DG_ATTEMPTS; attempt++) {
+        double h = h1 * dg_step_factor[attempt], vmax = 0;
+        int ok = 1;
+        double d2 = dg_central(f, xw, x, k, dir, 2 * h, &vmax, &ok);
+        double d1 = dg_central(f, xw, x, k, dir, h, &vmax, &ok);
+        double d0 = dg_central(f, xw, x, k, dir, h / 2, &vmax, &ok);
+        if (!ok) continue;
+        double trunc = fmax(fabs(d2 - d1) / 12, fabs(d1 - d0) / 3);
+        double a = trunc + 2 * dg_roundoff(fmax(size, vmax), dg_m(f)) / h + 4 * DBL_EPSILON * fabs(d0);
+        if (a < best) {
+            best = a;
+            *D = d0;
+        }
+        if (trunc <= DG_SETTLED * fmax(fabs(d0), scale)) break;
+    }
+    *acc = best;
+    return best < HUGE_VAL;
+}
+
+/* A sampled gradient compared along random directions d (d_j = u_j s_j):
+ * g.d against the derivative of f along d, so that a wrong component
+ * outside the sample still shows. */
+static void dg_compare_directions(const dg_function *f, double *xw, const double *x, const double *g,
+                                  const double *s, double size, double *dir, dg_rng *r, dg_tally *t)
+{
+    size_t m = dg_m(f);
+    for (size_t dd = 0; dd < DG_DIRECTIONS; dd++) {
+        vigen_neumaier dot;
+        vigen_neumaier_init(&dot);
+        double absum = 0, D = 0, acc;
+        for (size_t j = 0; j < m; j++) {
+            dir[j] = dg_rng_uniform(r) * s[j];
+            vigen_neumaier_add(&dot, g[j] * dir[j]);
+            absum += fabs(g[j] * dir[j]);
+        }
+        if (!dg_derivative(f, xw, x, 0, dir, cbrt(DBL_EPSILON), size, absum, &D, &acc)) continue;
+        dg_record(t, vigen_neumaier_result(&dot), D, acc + 4 * DBL_EPSILON * absum, absum, -1, dd, (size_t)-1, NULL,
+                  0);
+    }
+}
+
 int dg_compare_gradient(const dg_function *f, const double *x, const double *g, const double *s, int point,
                         dg_rng *r, dg_tally *t)
 {
     size_t m = dg_m(f), idx[DG_MAX_COMPONENTS];
-    double *xw = malloc(m * sizeof *xw), gscale[2];
+    double *xw = malloc(2 * m * sizeof *xw), gscale[2];
     if (xw == NULL) return VIGEN_ENOMEM;
     memcpy(xw, x, m * sizeof *xw);
     dg_part_scales(f, g, gscale);
@@ -151,34 +233,23 @@ int dg_compare_gradient(const dg_function *f, const double *x, const double *g, 
      * of homogeneous functions, which |f| alone misses when they cancel) */
     double size = fabs(f->value(f->self, x));
     for (size_t j = 0; j < m; j++) size += fabs(x[j] * g[j]);
-    const double h0 = cbrt(DBL_EPSILON);
+    int sampled = 0;
     for (int part = 0; part < f->nparts; part++) {
-        size_t ns = dg_sample(f->n, r, idx);
-        if (ns < f->n) t->sampled = 1;
+        size_t ns = dg_sample(f->n, point ? DG_NEARBY_COMPONENTS : DG_MAX_COMPONENTS, r, idx);
+        if (point == 0 && ns < f->n) sampled = t->sampled = 1;
         for (size_t c = 0; c < ns; c++) {
             size_t k = (size_t)part * f->n + idx[c];
-            double best = HUGE_VAL, bestD = 0;
-            for (int attempt = 0; attempt < DG_ATTEMPTS; attempt++) {
-                double h = h0 * s[k] * dg_step_factor[attempt], vmax = 0;
-                int ok = 1;
-                double d2 = dg_central(f, xw, k, 2 * h, &vmax, &ok);
-                double d1 = dg_central(f, xw, k, h, &vmax, &ok);
-                double d0 = dg_central(f, xw, k, h / 2, &vmax, &ok);
-                if (!ok) continue;
-                double trunc = fmax(fabs(d2 - d1) / 12, fabs(d1 - d0) / 3);
-                double acc = trunc + 2 * dg_roundoff(fmax(size, vmax), m) / h + 4 * DBL_EPSILON * fabs(d0);
-                if (acc < best) {
-                    best = acc;
-                    bestD = d0;
-                }
-                if (trunc <= DG_SETTLED * fmax(fmax(fabs(g[k]), fabs(d0)), gscale[part])) break;
-            }
-            if (best == HUGE_VAL) continue;   /* no finite differences: nothing to compare */
+            double D = 0, acc;
+            if (!dg_derivative(f, xw, x, k, NULL, cbrt(DBL_EPSILON) * s[k], size, fmax(fabs(g[k]), gscale[part]),
+                               &D, &acc))
+                continue;   /* no finite differences: nothing to compare */
             /* relative to the part's largest component, or where the part
              * vanishes (p = 0 at rest) to the function's size per scale */
-            dg_record(t, g[k], bestD, best, gscale[part] > 0 ? gscale[part] : size / s[k], part, idx[c], (size_t)-1, NULL, point);
+            dg_record(t, g[k], D, acc, gscale[part] > 0 ? gscale[part] : size / s[k], part, idx[c], (size_t)-1, NULL,
+                      point);
         }
     }
+    if (sampled) dg_compare_directions(f, xw, x, g, s, size, xw + m, r, t);
     free(xw);
     return VIGEN_SUCCESS;
 }
@@ -234,8 +305,7 @@ int dg_compare_second(const dg_function *f, const double *x, const double *s, co
                 bscale[b] = fmax(bscale[b], fabs(blocks[b].a[i * blocks[b].stride + j]));
     const double h0 = cbrt(DBL_EPSILON);
     for (int part = 0; part < f->nparts; part++) {
-        size_t ns = dg_sample(f->n, r, idx);
-        if (ns < f->n) t->sampled = 1;
+        size_t ns = dg_sample(f->n, point ? DG_NEARBY_COMPONENTS : DG_MAX_COMPONENTS, r, idx);
         for (size_t ci = 0; ci < ns; ci++) {
             size_t c = (size_t)part * f->n + idx[ci];
             if (!dg_column_used(blocks, nblocks, c)) continue;
@@ -365,6 +435,15 @@ int dg_report_mismatch(vigen_problem_report *rep, const dg_function *f, const dg
     rep->worst_part = m->part;
     rep->worst_index = m->index;
     rep->worst_column = m->column;
+    if (m->part < 0) {   /* along a direction: the force or the gradient */
+        double sign = f->part_sign[0];
+        return dg_report_set(rep, status,
+                             "along a random direction %s, %s gives the derivative %.6g but the central difference "
+                             "of %s%s gives %.6g, a relative mismatch of %.2g (a component outside the %d compared "
+                             "one by one is wrong)",
+                             dg_where(m->point), f->nparts == 1 ? f->part_name[0] : "the gradient", sign * m->given,
+                             sign < 0 ? "-" : "", f->value_name, sign * m->differences, m->rel, DG_MAX_COMPONENTS);
+    }
     const char *part = f->part_name[m->part];
     if (m->column == (size_t)-1) {
         double sign = f->part_sign[m->part];

@@ -11,8 +11,12 @@
 #include <stdint.h>
 #include <vigen/diagnostics.h>
 
-/* Components of a part compared one by one; longer parts are sampled. */
-#define DG_MAX_COMPONENTS 128
+/* Components of a part compared one by one at the state; longer parts are
+ * sampled (and the whole gradient is compared along DG_DIRECTIONS random
+ * directions).  At the nearby points, DG_NEARBY_COMPONENTS. */
+#define DG_MAX_COMPONENTS 64
+#define DG_NEARBY_COMPONENTS 16
+#define DG_DIRECTIONS 2
 /* Second derivatives are compared up to this many variables (the matrix of
  * second derivatives has m^2 entries). */
 #define DG_MAX_SECOND 2048
@@ -51,7 +55,7 @@ typedef struct {
     double ratio;          /* |given - differences| / tolerance; above 1: flagged */
     double rel;            /* relative mismatch (see vigen_problem_report) */
     double given, differences, accuracy;   /* accuracy: the error estimate of the differences */
-    int part;              /* of the gradient component (the row) */
+    int part;              /* of the gradient component (the row); -1: along a direction */
     size_t index, column;  /* column: (size_t)-1 for a gradient */
     const char *block;     /* second derivatives: the matrix's name */
     int point;             /* 0: the state, else a nearby point */
@@ -61,9 +65,9 @@ typedef struct {
 /* The worst comparisons of a check. */
 typedef struct {
     dg_mismatch flagged;   /* largest ratio above 1 (found = 0: none) */
-    dg_mismatch largest;   /* largest relative mismatch */
+    dg_mismatch largest;   /* largest relative mismatch of a component */
     size_t compared;
-    int sampled;           /* a part was sampled (longer than DG_MAX_COMPONENTS) */
+    int sampled;           /* a part was sampled at the state (longer than DG_MAX_COMPONENTS) */
 } dg_tally;
 
 void dg_tally_init(dg_tally *t);
@@ -75,15 +79,16 @@ typedef struct { uint64_t s; } dg_rng;
 void dg_rng_init(dg_rng *r);
 double dg_rng_uniform(dg_rng *r);   /* in [-1, 1) */
 
-/* Scale of each variable: max(|x_k|, largest |x_j| of its part), 1 for an
- * all-zero part.  s has m entries. */
+/* Scale of each variable: max(|x_k|, largest |x_j| of its part); for an
+ * all-zero part, the distance at which f changes by about its own size
+ * (1 when that cannot be told).  s has m entries. */
 void dg_scales(const dg_function *f, const double *x, double *s);
 /* A point near x: each variable moved by up to 2^-10 of its scale. */
 void dg_nearby(const dg_function *f, const double *x, const double *s, dg_rng *r, double *out);
-/* The components of a part to compare: all when n <= DG_MAX_COMPONENTS,
- * else DG_MAX_COMPONENTS spread over it (one in each stratum); returns how
- * many were written to idx (DG_MAX_COMPONENTS entries). */
-size_t dg_sample(size_t n, dg_rng *r, size_t *idx);
+/* The components of a part to compare: all when n <= cap (at most
+ * DG_MAX_COMPONENTS), else cap spread over it (one in each stratum);
+ * returns how many were written to idx. */
+size_t dg_sample(size_t n, size_t cap, dg_rng *r, size_t *idx);
 
 /* Index of the first entry of v[0 .. m-1] that is NaN or infinite, or m. */
 size_t dg_first_nonfinite(const double *v, size_t m);

@@ -71,9 +71,9 @@ static void lag_success(vigen_problem_report *rep, const vigen_lagrangian *lag, 
     int given = lag->d2Ldq2 || lag->d2Ldv2 || lag->d2Ldqdv;
     dg_report_set(rep, VIGEN_SUCCESS, "%s%s%s.", head,
                   second ? "; the second derivatives given agree with differences of dL/dq and dL/dv"
-                  : given ? "; the second derivatives were not checked (dimension above 1024)"
+                  : given ? "; second derivatives not checked (dimension > 1024)"
                           : "",
-                  grad->sampled ? "; 128 components of each part were sampled" : "");
+                  grad->sampled ? "; 64 components per part sampled, all along random directions" : "");
 }
 
 int vigen_lagrangian_check(const vigen_lagrangian *lag, double t, const double *q, const double *v,

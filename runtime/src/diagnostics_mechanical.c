@@ -66,7 +66,7 @@ int vigen_mechanical_check(const vigen_mechanical *sys, double t, const double *
             dg_report_set(rep, VIGEN_SUCCESS,
                           "the force agrees with -dV/dq at %d points (largest relative mismatch %.1e, force[%zu])%s.",
                           rep->points, rep->worst_rel_error, rep->worst_index,
-                          grad.sampled ? "; 128 components were sampled" : "");
+                          grad.sampled ? "; 64 components sampled, all along random directions" : "");
         } else
             dg_report_set(rep, VIGEN_SUCCESS, "the force check was skipped because V is not given; the force is finite.");
     }

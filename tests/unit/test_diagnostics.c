@@ -307,6 +307,40 @@ static void check_problem(const char *name, const char *params)
     free(q);
 }
 
+/* fput with n = 300 (parts sampled) and one component's sign wrong, at
+ * every position in turn among a few: flagged by the components compared or
+ * along the random directions */
+static const vigen_hamiltonian *fput_H;
+static size_t fput_wrong;
+static void fput_dHdq_wrong(double t, const double *q, const double *p, double *out, void *ctx)
+{
+    fput_H->dHdq(t, q, p, out, ctx);
+    out[fput_wrong] = -out[fput_wrong];
+}
+
+static void test_sampled(void)
+{
+    vigen_problem *pb;
+    if (vigen_problem_create(&pb, "fput", "n=300,beta=3", NULL, 0) != VIGEN_SUCCESS) {
+        CHECK(0);
+        return;
+    }
+    double t, q[300], p[300];
+    vigen_problem_initial(pb, &t, q, p);
+    for (int i = 0; i < 300; i++) p[i] = 0.3 * cos(0.1 * i);   /* moving */
+    fput_H = vigen_problem_hamiltonian(pb);
+    vigen_hamiltonian sys = *fput_H;
+    sys.dHdq = fput_dHdq_wrong;
+    vigen_problem_report rep;
+    for (fput_wrong = 1; fput_wrong < 300; fput_wrong += 37) {
+        CHECK_MSG(vigen_problem_check(&sys, t, q, p, &rep) == VIGEN_EGRADIENT, "component %zu: %s", fput_wrong,
+                  rep.message);
+        CHECK(rep.worst_part == -1 ? strstr(rep.message, "random direction") != NULL : rep.worst_index == fput_wrong);
+    }
+    printf("sampled: %s\n", rep.message);
+    vigen_problem_free(pb);
+}
+
 static void test_collection(void)
 {
     for (size_t i = 0; i < vigen_problem_count(); i++) check_problem(vigen_problem_info_at(i)->name, "");
@@ -458,6 +492,7 @@ int main(void)
     test_kepler_scaled();
     test_chain_scaled();
     test_collection();
+    test_sampled();
     test_mechanical();
     test_lagrangian();
     TEST_MAIN_END();

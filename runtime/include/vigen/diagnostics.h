@@ -11,23 +11,29 @@
  *
  * How it decides.  Each component k of a gradient is compared with the
  * central difference D(h) of the function along that variable, with h chosen
- * for the variable's scale (eps^(1/3) max(|x_k|, largest |x_j| of its part),
- * 1 when the part is all zero; smaller steps are tried when the function is
- * not finite there or the differences do not settle).  D is taken at the
- * steps 2h, h and h/2: the differences between them estimate the truncation
- * error of D(h/2) (Richardson), and the round-off of the function values
- * (eps times the largest of |f| and sum_j |x_j g_j|, a bound on the terms a
- * sum of homogeneous terms cancels) divided by h bounds the rest.  A
+ * for the variable's scale: h = eps^(1/3) max(|x_k|, largest |x_j| of its
+ * part), or for a part that is all zero (p = 0 at rest) the distance at
+ * which the function changes by its own size; other steps are tried when the
+ * function is not finite there or round-off swamps the differences.  D is
+ * taken at the steps 2h, h and h/2: the differences between them estimate
+ * the truncation error of D(h/2) (Richardson), and the round-off of the
+ * function values (eps times the largest of |f| and sum_j |x_j g_j|, the
+ * size of the terms that a sum cancels) divided by h bounds the rest.  A
  * component is flagged when |g_k - D(h/2)| exceeds 8 times that error
  * estimate, so that the tolerance follows the function's own scale: correct
  * gradients of badly scaled problems (coordinates near 1e8, masses near
  * 1e-12) pass, while a sign error or a factor 2 fails by many orders of
- * magnitude.  The checks run at the state given and at two points nearby
- * (each variable moved by up to 2^-10 of its scale, a fixed pseudo-random
- * sequence: the same report every run), so that a term that vanishes at the
- * state (p = 0 at rest) is still checked.  Parts longer than 128 components
- * are checked at 128 of them (spread over the part; the report says so), and
- * second derivatives only up to dimension 1024.
+ * magnitude (and so does a relative error of 1e-6 in a component of a
+ * smooth problem).  The checks run at the state given and at two points
+ * nearby (each variable moved by up to 2^-10 of its scale, from a fixed
+ * pseudo-random sequence: the same report every run), so that a term that
+ * vanishes at the state is still checked.  Parts longer than 64 components
+ * are compared at 64 of them (16 at the nearby points), spread over the
+ * part, and the whole gradient along two random directions, so that a wrong
+ * component outside the sample still shows; second derivatives are compared
+ * up to dimension 1024.  The cost is about 6 evaluations of the function per
+ * component compared and point, and 6 gradients per column of second
+ * derivatives.
  *
  * All functions are for double problems; they call the callbacks only (no
  * state is kept) and are thread-safe when the callbacks are.
@@ -54,7 +60,8 @@ typedef struct {
                                 reported */
     int worst_part;          /* 0 = dH/dq, 1 = dH/dp (mechanical: 0 = the force; Lagrangian:
                                 0 = dL/dq, 1 = dL/dv); for a second derivative, the part of
-                                its row; -1 when nothing was compared */
+                                its row; -1 when nothing was compared, or for a mismatch
+                                along a random direction (worst_index: which) */
     size_t worst_index;      /* its component */
     char message[256];       /* one sentence naming the component and the size of the mismatch,
                                 or on success what was checked */
