@@ -89,7 +89,8 @@ static void ham_success(vigen_problem_report *rep, const vigen_hamiltonian *sys,
         snprintf(head, sizeof head, "H agrees with dH/dq and dH/dp at %d points (largest relative mismatch %.1e, %s[%zu])",
                  rep->points, tally->largest.rel, names[tally->largest.part], tally->largest.index);
     else
-        snprintf(head, sizeof head, "the gradient check was skipped because H is not given; dH/dq and dH/dp are finite");
+        snprintf(head, sizeof head, "the gradient check was skipped because H is %s; dH/dq and dH/dp are finite",
+                 sys->H ? "not finite next to the state" : "not given");
     dg_report_set(rep, VIGEN_SUCCESS, "%s%s%s%s.", head,
                   sys->separable ? "; dH/dp ignores t and q and dH/dq ignores p" : "",
                   !sys->hessian ? "" : hessian_checked ? "; the Hessian agrees with differences of the gradients"

@@ -37,7 +37,11 @@ void dg_tally_init(dg_tally *t)
 void dg_tally_add(dg_tally *t, const dg_mismatch *m)
 {
     t->compared++;
-    if (m->ratio > 1 && (!t->flagged.found || m->ratio > t->flagged.ratio)) t->flagged = *m;
+    /* the flagged one reported: at the state if there is one there, else
+     * the largest ratio */
+    if (m->ratio > 1 && (!t->flagged.found || m->point < t->flagged.point ||
+                         (m->point == t->flagged.point && m->ratio > t->flagged.ratio)))
+        t->flagged = *m;
     if (m->part >= 0 && (!t->largest.found || m->rel > t->largest.rel)) t->largest = *m;
 }
 

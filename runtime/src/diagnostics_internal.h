@@ -64,7 +64,8 @@ typedef struct {
 
 /* The worst comparisons of a check. */
 typedef struct {
-    dg_mismatch flagged;   /* largest ratio above 1 (found = 0: none) */
+    dg_mismatch flagged;   /* ratio above 1, at the first point with one, largest ratio
+                              there (found = 0: none) */
     dg_mismatch largest;   /* largest relative mismatch of a component */
     size_t compared;
     int sampled;           /* a part was sampled at the state (longer than DG_MAX_COMPONENTS) */

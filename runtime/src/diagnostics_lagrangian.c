@@ -67,7 +67,8 @@ static void lag_success(vigen_problem_report *rep, const vigen_lagrangian *lag, 
         snprintf(head, sizeof head, "L agrees with dL/dq and dL/dv at %d points (largest relative mismatch %.1e, %s[%zu])",
                  rep->points, grad->largest.rel, f->part_name[grad->largest.part], grad->largest.index);
     else
-        snprintf(head, sizeof head, "the gradient check was skipped because L is not given; dL/dq and dL/dv are finite");
+        snprintf(head, sizeof head, "the gradient check was skipped because L is %s; dL/dq and dL/dv are finite",
+                 lag->L ? "not finite next to the state" : "not given");
     int given = lag->d2Ldq2 || lag->d2Ldv2 || lag->d2Ldqdv;
     dg_report_set(rep, VIGEN_SUCCESS, "%s%s%s.", head,
                   second ? "; the second derivatives given agree with differences of dL/dq and dL/dv"

@@ -61,14 +61,15 @@ int vigen_mechanical_check(const vigen_mechanical *sys, double t, const double *
             dg_report_set(rep, VIGEN_ENOMEM, "out of memory checking the problem (dimension %zu)", n);
         else if (grad.flagged.found)
             dg_report_mismatch(rep, &f, &grad.flagged, VIGEN_EGRADIENT);
-        else if (sys->V) {
+        else if (sys->V && grad.largest.found) {
             dg_report_largest(rep, &grad);
             dg_report_set(rep, VIGEN_SUCCESS,
                           "the force agrees with -dV/dq at %d points (largest relative mismatch %.1e, force[%zu])%s.",
                           rep->points, rep->worst_rel_error, rep->worst_index,
                           grad.sampled ? "; 64 components sampled, all along random directions" : "");
         } else
-            dg_report_set(rep, VIGEN_SUCCESS, "the force check was skipped because V is not given; the force is finite.");
+            dg_report_set(rep, VIGEN_SUCCESS, "the force check was skipped because V is %s; the force is finite.",
+                          sys->V ? "not finite next to the state" : "not given");
     }
     free(g);
     return rep->status;
