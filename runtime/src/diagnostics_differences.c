@@ -2,7 +2,8 @@
  * a gradient against central differences of its function and second
  * derivatives against differences of the gradient, each with an error
  * estimate of the differences (truncation from three step sizes, round-off
- * from the size of the values) that sets the tolerance; the step per
+ * from the size of the values or the noise measured) that sets the
+ * tolerance; the step per
  * variable, the nearby points, the sampled components, and the report's
  * text. */
 #include <float.h>
@@ -166,6 +167,67 @@ static double dg_central(const dg_function *f, double *xw, const double *x, size
  * in m variables: a few ulps, and the growth of a sum over the variables. */
 static double dg_roundoff(double size, size_t m) { return DBL_EPSILON * (4 + sqrt((double)m)) * size; }
 
+/* The noise the model above misses (a sum that cancels terms it does not
+ * show, as in (T + C) - C), measured after Moré and Wild (Estimating
+ * computational noise, SIAM J. Sci. Comput. 33 (2011)): values at 7 points
+ * x + t_i delta d along DG_NOISE_DIRECTIONS random directions d (d_j =
+ * +-s_j: every variable moves by its full scale, so that a value rounded to
+ * a coarse grid still changes; delta = 2^-16, so that the smooth part of a
+ * fourth difference, of size delta^4 relative, is far below round-off), and
+ * the fourth divided differences of 5 consecutive points divided by the
+ * root of the sum of their squared weights (the standard deviation of the
+ * difference of unit white noise), 4 times the largest as a bound of the
+ * noise of one value (moves up to 2^12 times longer where the values come
+ * out equal: a value rounded to a grid coarser than the moves).  The nodes t_i = i - 3 + jitter are not equally
+ * spaced: the rounding errors of an arithmetic progression of values form
+ * a sawtooth that is linear between its wraps, and a fourth difference of
+ * equally spaced points would not see them.  For each of the nv outputs of
+ * f (the function, or the m gradient components), into noise; 0 where a
+ * value is not finite.  buf holds 7 nv values, xw and d m each. */
+#define DG_NOISE_DIRECTIONS 2
+static void dg_noise(const dg_function *f, int gradient, const double *x, const double *s, dg_rng *r, double *xw,
+                     double *d, double *buf, double *noise)
+{
+    size_t m = dg_m(f), nv = gradient ? m : 1;
+    for (size_t k = 0; k < nv; k++) noise[k] = 0;
+    for (int dir = 0; dir < DG_NOISE_DIRECTIONS; dir++) {
+        double tn[7], w[3][5], norm[3];
+        for (int i = 0; i < 7; i++) tn[i] = i - 3 + 0.45 * dg_rng_uniform(r);
+        for (int a = 0; a < 3; a++) {   /* weights of the divided difference of nodes a .. a+4 */
+            norm[a] = 0;
+            for (int i = 0; i < 5; i++) {
+                double prod = 1;
+                for (int j = 0; j < 5; j++)
+                    if (j != i) prod *= tn[a + i] - tn[a + j];
+                w[a][i] = 1 / prod;
+                norm[a] += w[a][i] * w[a][i];
+            }
+            norm[a] = sqrt(norm[a]);
+        }
+        for (size_t j = 0; j < m; j++) d[j] = (dg_rng_uniform(r) < 0 ? -s[j] : s[j]) * 0x1p-16;
+        for (int grow = 0; grow < 4; grow++) {
+            int flat = 0;
+            for (int i = 0; i < 7; i++) {
+                for (size_t j = 0; j < m; j++) xw[j] = x[j] + tn[i] * d[j];
+                if (gradient) f->gradient(f->self, xw, buf + (size_t)i * nv);
+                else buf[i] = f->value(f->self, xw);
+                if (!gradient && i > 0 && buf[i] == buf[i - 1]) flat = 1;
+            }
+            /* equal values: f is rounded to a grid coarser than the moves
+             * (a large hidden term); longer moves, until its steps show */
+            if (!flat) break;
+            for (size_t j = 0; j < m; j++) d[j] *= 16;
+        }
+        for (size_t k = 0; k < nv; k++)
+            for (int a = 0; a < 3; a++) {
+                double dd = 0;
+                for (int i = 0; i < 5; i++) dd += w[a][i] * buf[(size_t)(a + i) * nv + k];
+                if (isfinite(dd)) noise[k] = fmax(noise[k], 4 * fabs(dd) / norm[a]);
+            }
+    }
+    memcpy(xw, x, m * sizeof *xw);
+}
+
 static void dg_record(dg_tally *t, double given, double diff, double acc, double scale, int part, size_t index,
                       size_t column, const char *block, int point)
 {
@@ -178,10 +240,11 @@ static void dg_record(dg_tally *t, double given, double diff, double acc, double
 /* The derivative of f at x along e_k (dir NULL) or dir from central
  * differences at the steps 2h, h, h/2 (h = h1 times each factor of
  * dg_step_factor until they settle relative to scale): *D at h/2 and *acc
- * its error estimate (truncation from the three steps, round-off of values
- * of terms of size `size`).  0 when no step gives finite values. */
+ * its error estimate (truncation from the three steps, the noise of one
+ * value, at least that of values of the size seen).  0 when no step gives
+ * finite values. */
 static int dg_derivative(const dg_function *f, double *xw, const double *x, size_t k, const double *dir, double h1,
-                         double size, double scale, double *D, double *acc)
+                         double noise, double scale, double *D, double *acc)
 {
     double best = HUGE_VAL;
     for (int attempt = 0; attempt < DG_ATTEMPTS; attempt++) {
@@ -192,7 +255,7 @@ static int dg_derivative(const dg_function *f, double *xw, const double *x, size
         double d0 = dg_central(f, xw, x, k, dir, h / 2, &vmax, &ok);
         if (!ok) continue;
         double trunc = fmax(fabs(d2 - d1) / 12, fabs(d1 - d0) / 3);
-        double a = trunc + 2 * dg_roundoff(fmax(size, vmax), dg_m(f)) / h + 4 * DBL_EPSILON * fabs(d0);
+        double a = trunc + 2 * fmax(noise, dg_roundoff(vmax, dg_m(f))) / h + 4 * DBL_EPSILON * fabs(d0);
         if (a < best) {
             best = a;
             *D = d0;
@@ -207,7 +270,7 @@ static int dg_derivative(const dg_function *f, double *xw, const double *x, size
  * g.d against the derivative of f along d, so that a wrong component
  * outside the sample still shows. */
 static void dg_compare_directions(const dg_function *f, double *xw, const double *x, const double *g,
-                                  const double *s, double size, double *dir, dg_rng *r, dg_tally *t)
+                                  const double *s, double noise, double *dir, dg_rng *r, dg_tally *t)
 {
     size_t m = dg_m(f);
     for (size_t dd = 0; dd < DG_DIRECTIONS; dd++) {
@@ -219,7 +282,7 @@ static void dg_compare_directions(const dg_function *f, double *xw, const double
             vigen_neumaier_add(&dot, g[j] * dir[j]);
             absum += fabs(g[j] * dir[j]);
         }
-        if (!dg_derivative(f, xw, x, 0, dir, cbrt(DBL_EPSILON), size, absum, &D, &acc)) continue;
+        if (!dg_derivative(f, xw, x, 0, dir, cbrt(DBL_EPSILON), noise, absum, &D, &acc)) continue;
         dg_record(t, vigen_neumaier_result(&dot), D, acc + 4 * DBL_EPSILON * absum, absum, -1, dd, (size_t)-1, NULL,
                   0);
     }
@@ -229,14 +292,18 @@ int dg_compare_gradient(const dg_function *f, const double *x, const double *g, 
                         dg_rng *r, dg_tally *t)
 {
     size_t m = dg_m(f), idx[DG_MAX_COMPONENTS];
-    double *xw = malloc(2 * m * sizeof *xw), gscale[2];
+    double *xw = malloc(2 * m * sizeof *xw), gscale[2], buf[7], measured;
     if (xw == NULL) return VIGEN_ENOMEM;
     memcpy(xw, x, m * sizeof *xw);
     dg_part_scales(f, g, gscale);
     /* the size of the terms of f: |f| and sum |x_j g_j| (the terms of a sum
-     * of homogeneous functions, which |f| alone misses when they cancel) */
-    double size = fabs(f->value(f->self, x));
+     * of homogeneous functions, which |f| alone misses when they cancel),
+     * and the noise of its values: that of terms of this size, or the one
+     * measured when larger */
+    double size = fabs(f->value(f->self, x)), noise;
     for (size_t j = 0; j < m; j++) size += fabs(x[j] * g[j]);
+    dg_noise(f, 0, x, s, r, xw, xw + m, buf, &measured);
+    noise = fmax(dg_roundoff(size, m), measured);
     int sampled = 0;
     for (int part = 0; part < f->nparts; part++) {
         size_t ns = dg_sample(f->n, point ? DG_NEARBY_COMPONENTS : DG_MAX_COMPONENTS, r, idx);
@@ -244,7 +311,7 @@ int dg_compare_gradient(const dg_function *f, const double *x, const double *g, 
         for (size_t c = 0; c < ns; c++) {
             size_t k = (size_t)part * f->n + idx[c];
             double D = 0, acc;
-            if (!dg_derivative(f, xw, x, k, NULL, cbrt(DBL_EPSILON) * s[k], size, fmax(fabs(g[k]), gscale[part]),
+            if (!dg_derivative(f, xw, x, k, NULL, cbrt(DBL_EPSILON) * s[k], noise, fmax(fabs(g[k]), gscale[part]),
                                &D, &acc))
                 continue;   /* no finite differences: nothing to compare */
             /* relative to the part's largest component, or where the part
@@ -253,7 +320,7 @@ int dg_compare_gradient(const dg_function *f, const double *x, const double *g, 
                       point);
         }
     }
-    if (sampled) dg_compare_directions(f, xw, x, g, s, size, xw + m, r, t);
+    if (sampled) dg_compare_directions(f, xw, x, g, s, noise, xw + m, r, t);
     free(xw);
     return VIGEN_SUCCESS;
 }
@@ -295,12 +362,14 @@ int dg_compare_second(const dg_function *f, const double *x, const double *s, co
                       size_t nblocks, int point, dg_rng *r, dg_tally *t)
 {
     size_t m = dg_m(f), idx[DG_MAX_COMPONENTS];
-    double *mem = malloc(10 * m * sizeof *mem);
+    double *mem = malloc(19 * m * sizeof *mem);
     if (mem == NULL) return VIGEN_ENOMEM;
+    double *gnoise = mem + 10 * m, *dir = gnoise + m, *buf = dir + m;
     double *xw = mem, *g0 = xw + m, *gp = g0 + m, *gm = gp + m, *gmax = gm + m, *d = gmax + m;
     double *bestD = d + 3 * m, *bestAcc = bestD + m, gscale[2];
     memcpy(xw, x, m * sizeof *xw);
     f->gradient(f->self, x, g0);
+    dg_noise(f, 1, x, s, r, xw, dir, buf, gnoise);   /* measured, where the gradient cancels what it hides */
     dg_part_scales(f, g0, gscale);
     double bscale[8] = { 0 };   /* largest |entry| of each block (at most 8 blocks) */
     for (size_t b = 0; b < nblocks && b < 8; b++)
@@ -323,7 +392,7 @@ int dg_compare_second(const dg_function *f, const double *x, const double *s, co
                     double d2 = d[k], d1 = d[m + k], d0 = d[2 * m + k];
                     double trunc = fmax(fabs(d2 - d1) / 12, fabs(d1 - d0) / 3);
                     double size = fmax(gmax[k], gscale[k / f->n]);
-                    gp[k] = trunc + 2 * dg_roundoff(size, m) / h + 4 * DBL_EPSILON * fabs(d0);
+                    gp[k] = trunc + 2 * fmax(dg_roundoff(size, m), gnoise[k]) / h + 4 * DBL_EPSILON * fabs(d0);
                     double den = fmax(fabs(d0), size / s[c]);
                     if (den > 0) worstq = fmax(worstq, trunc / den);
                 }

@@ -25,6 +25,7 @@ enum { OK = 0, SIGN_Q1, FACTOR2_P0, TINY_P1, NAN_Q0, WRONG_HESS, COUPLED, TIME_I
 typedef struct {
     double m, k;      /* mass, gravitational parameter */
     int mistake;
+    double C;         /* a constant added to T and taken away again: H loses its digits */
 } kepler;
 
 static double kep_H(double t, const double *q, const double *p, void *ctx)
@@ -33,7 +34,7 @@ static double kep_H(double t, const double *q, const double *p, void *ctx)
     const kepler *K = ctx;
     double T = (p[0] * p[0] + p[1] * p[1]) / (2 * K->m), V = -K->k * K->m / hypot(q[0], q[1]);
     if (K->mistake == COUPLED) T *= 1 + q[0] * q[0];
-    return T + V;
+    return ((T + K->C) - K->C) + V;
 }
 
 static void kep_dHdq(double t, const double *q, const double *p, double *out, void *ctx)
@@ -88,7 +89,7 @@ static int one_sentence(const char *s)
 
 static void test_kepler_mistakes(void)
 {
-    kepler K = { 1, 1, OK };
+    kepler K = { 1, 1, OK, 0 };
     vigen_hamiltonian sys = kepler_system(&K, 1);
     double q[2] = { 0.3, 0.5 }, p[2] = { -0.7, 0.4 };
     vigen_problem_report rep, rep2;
@@ -171,7 +172,7 @@ static void test_kepler_scaled(void)
 {
     /* a body of mass 1e-12 at 1e8 from a centre with k = 1.3e20 (SI units
      * of the Sun): speed sqrt(k/r) ~ 1.1e6, momentum ~ 1e-6 */
-    kepler K = { 1e-12, 1.327e20, OK };
+    kepler K = { 1e-12, 1.327e20, OK, 0 };
     vigen_hamiltonian sys = kepler_system(&K, 1);
     double q[2] = { 1.0e8, 3.1e7 }, p[2] = { -3.0e-7, 1.2e-6 };
     vigen_problem_report rep;
@@ -190,7 +191,7 @@ static void test_kepler_scaled(void)
     for (double L = 1e-8; L <= 1e8; L *= 100)
         for (double M = 1e-12; M <= 1e12; M *= 1e4) {
             double S = sqrt(L * L * L);   /* k scales as L^3 / S^2 */
-            kepler Ks = { M, 1.0, OK };
+            kepler Ks = { M, 1.0, OK, 0 };
             sys = kepler_system(&Ks, 1);
             double qs[2] = { 0.3 * L, 0.5 * L }, ps[2] = { -0.7 * M * L / S, 0.4 * M * L / S };
             if (vigen_problem_check(&sys, 0, qs, ps, &rep) != VIGEN_SUCCESS) {
@@ -199,6 +200,18 @@ static void test_kepler_scaled(void)
             }
         }
     CHECK(flagged == 0);
+
+    /* H computed as ((T + C) - C) + V with C = 1e6 |H|: six digits of H are
+     * lost to a cancellation that |H| and its terms do not show; the noise
+     * measured (fourth differences of H) keeps the correct gradients from
+     * being flagged, and a sign error is still found */
+    kepler Kc = { 1, 1, OK, 0 };
+    sys = kepler_system(&Kc, 0);
+    double qc[2] = { 0.3, 0.5 }, pc[2] = { -0.7, 0.4 };
+    Kc.C = 1e6 * fabs(kep_H(0, qc, pc, &Kc));
+    CHECK_MSG(vigen_problem_check(&sys, 0, qc, pc, &rep) == VIGEN_SUCCESS, "%s", rep.message);
+    Kc.mistake = SIGN_Q1;
+    CHECK(vigen_problem_check(&sys, 0, qc, pc, &rep) == VIGEN_EGRADIENT && rep.worst_index == 1);
 }
 
 /* A harmonic chain of N masses m at positions q_i ~ i a with a = 1e8, springs
@@ -370,7 +383,7 @@ static void mech_force(double t, const double *q, double *f, void *ctx)
 
 static void test_mechanical(void)
 {
-    kepler K = { 1, 1, OK };
+    kepler K = { 1, 1, OK, 0 };
     double im[2] = { 1e12, 1e12 };
     vigen_mechanical sys = { .dim = 2, .force = mech_force, .V = mech_V, .ctx = &K, .inv_mass = im };
     double q[2] = { 0.3, 0.5 };
@@ -387,7 +400,7 @@ static void test_mechanical(void)
           fabs(rep.worst_rel_error - 0.5) < 1e-6);
     K.mistake = NAN_Q0;
     CHECK(vigen_mechanical_check(&sys, 0, q, &rep) == VIGEN_ENONFINITE && strstr(rep.message, "force[0]"));
-    K = (kepler){ 1, 1.327e20, OK };   /* scaled: positions near 1e8 */
+    K = (kepler){ 1, 1.327e20, OK, 0 };   /* scaled: positions near 1e8 */
     double qs[2] = { 1e8, -4e7 };
     CHECK_MSG(vigen_mechanical_check(&sys, 0, qs, &rep) == VIGEN_SUCCESS, "%s", rep.message);
     K.mistake = SIGN_Q1;

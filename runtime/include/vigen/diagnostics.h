@@ -18,7 +18,8 @@
  * taken at the steps 2h, h and h/2: the differences between them estimate
  * the truncation error of D(h/2) (Richardson), and the round-off of the
  * function values (eps times the largest of |f| and sum_j |x_j g_j|, the
- * size of the terms that a sum cancels) divided by h bounds the rest.  A
+ * size of the terms that a sum cancels, or the noise of f measured by
+ * fourth differences when larger) divided by h bounds the rest.  A
  * component is flagged when |g_k - D(h/2)| exceeds 8 times that error
  * estimate, so that the tolerance follows the function's own scale: correct
  * gradients of badly scaled problems (coordinates near 1e8, masses near
