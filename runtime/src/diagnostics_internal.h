@@ -1,10 +1,10 @@
 /* diagnostics_internal.h — what the problem checks (diagnostics.c for
  * Hamiltonians, diagnostics_mechanical.c, diagnostics_lagrangian.c) share
- * with the comparison engine (diagnostics_differences.c): a scalar function
- * of m = nparts * n variables with its gradient, described for messages; the
- * comparison of a gradient with central differences of the function and of
- * second derivatives with differences of the gradient; the nearby points and
- * the report's text. */
+ * with the comparison engine (diagnostics_differences.c) and the report
+ * (diagnostics_report.c): a scalar function of m = nparts * n variables
+ * with its gradient, described for messages; the comparison of a gradient
+ * with central differences of the function and of second derivatives with
+ * differences of the gradient; the nearby points; the report's text. */
 #ifndef VIGEN_DIAGNOSTICS_INTERNAL_H
 #define VIGEN_DIAGNOSTICS_INTERNAL_H
 
