@@ -8,12 +8,16 @@
  * canonical angular momentum x p_y - y p_x (a quadratic invariant, which
  * Gauss methods conserve up to round-off), and the range of the distance
  * from the z axis the particle explores (its gyration and drift).
+ * First the problem is checked (vigen/diagnostics.h: its gradients against
+ * differences of H, its separability, its Hessian): the program prints the
+ * check's sentence (problem-check) or stops with it.
  *
  *   charged_particle [TIME [H]]      defaults 10000 and 0.1
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <vigen/diagnostics.h>
 #include <vigen/problems.h>
 #include "gauss3.h"   /* emitted from gauss3.lua by vigen_add_stepper */
 
@@ -32,6 +36,12 @@ int main(int argc, char **argv)
     }
     double t, q[3], p[3];
     vigen_problem_initial(pb, &t, q, p);
+    vigen_problem_report rep;   /* the problem checked before integrating: gradients, separability */
+    if (vigen_problem_check(vigen_problem_hamiltonian(pb), t, q, p, &rep) != VIGEN_SUCCESS) {
+        fprintf(stderr, "charged_particle: the problem fails its check: %s\n", rep.message);
+        return 1;
+    }
+    printf("problem-check %s\n", rep.message);
     double E0 = vigen_problem_energy(pb, t, q, p), J0 = vigen_problem_invariant(pb, 0, t, q, p);
 
     vigen_solver_options opt;

@@ -8,12 +8,16 @@
  * exchange energy, so it stays 1; for beta > 0 energy flows to the other
  * modes and, famously, comes back), and for beta = 0 the largest distance to
  * the exact solution (the mode oscillating at w = 2 sin(pi/(2(n+1)))).
+ * First the problem is checked (vigen/diagnostics.h: its gradients against
+ * differences of H, its separability, its Hessian): the program prints the
+ * check's sentence (problem-check) or stops with it.
  *
  *   fput [BETA [N [PERIODS [STEPS_PER_PERIOD]]]]      defaults 1, 32, 20, 400
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <vigen/diagnostics.h>
 #include <vigen/problems.h>
 #include "yoshida4.h"   /* emitted from yoshida4.lua by vigen_add_stepper */
 
@@ -50,6 +54,12 @@ int main(int argc, char **argv)
     if (q == NULL || qr == NULL) return 1;
     double *p = q + dim, *pr = qr + dim;
     vigen_problem_initial(pb, &t, q, p);
+    vigen_problem_report rep;   /* the problem checked before integrating: gradients, separability */
+    if (vigen_problem_check(vigen_problem_hamiltonian(pb), t, q, p, &rep) != VIGEN_SUCCESS) {
+        fprintf(stderr, "fput: the problem fails its check: %s\n", rep.message);
+        return 1;
+    }
+    printf("problem-check %s\n", rep.message);
     double E0 = vigen_problem_energy(pb, t, q, p), h = vigen_problem_period(pb) / (double)per_period;
 
     yoshida4_workspace *w = yoshida4_alloc(vigen_problem_hamiltonian(pb), NULL);

@@ -10,13 +10,17 @@
  * sqrt(1 - e^2) are conserved.  Both methods are symplectic, so the energy
  * error stays bounded (no drift), and both conserve L (a quadratic invariant)
  * up to round-off.  For each tenth of the run the program prints the largest
- * relative errors |H/H0 - 1| and |L/L0 - 1| seen at any step.
+ * relative errors |H/H0 - 1| and |L/L0 - 1| seen at any step.  Before
+ * integrating it checks the problem (vigen/diagnostics.h: the gradients
+ * against differences of H, the separability promise) and stops with the
+ * check's sentence if the problem is wrong.
  *
  *   kepler [PERIODS [STEPS_PER_PERIOD]]      defaults 10000 and 200
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <vigen/diagnostics.h>
 #include <vigen/runtime.h>
 #include "gauss2.h"   /* emitted from gauss2.lua by vigen_add_stepper */
 #include "verlet.h"   /* emitted from verlet.lua */
@@ -48,6 +52,18 @@ static double energy(double t, const double *q, const double *p, void *ctx)
 
 static double angular_momentum(const double *q, const double *p) { return q[0] * p[1] - q[1] * p[0]; }
 
+static const vigen_hamiltonian kepler = { .dim = 2, .dHdq = dHdq, .dHdp = dHdp, .H = energy, .separable = 1 };
+
+/* The start of the orbit: the pericentre. */
+static void initial(double *t, double q[2], double p[2])
+{
+    *t = 0;
+    q[0] = 1 - e;
+    q[1] = 0;
+    p[0] = 0;
+    p[1] = sqrt((1 + e) / (1 - e));
+}
+
 /* ---- the observer: called by vigen_integrate after every step ---------- */
 typedef struct {
     const char *name;
@@ -75,8 +91,8 @@ static int observe(unsigned long step, double t, const double *q, const double *
 /* Integrates from the pericentre with the emitted stepper of type T. */
 static int run(const vigen_stepper_type *T, const char *label, unsigned long periods, unsigned long per_period)
 {
-    const vigen_hamiltonian kepler = { .dim = 2, .dHdq = dHdq, .dHdp = dHdp, .H = energy, .separable = 1 };
-    double t = 0, q[2] = { 1 - e, 0 }, p[2] = { 0, sqrt((1 + e) / (1 - e)) };
+    double t, q[2], p[2];
+    initial(&t, q, p);
     double h = 2 * pi / per_period;
     unsigned long nsteps = periods * per_period;
     monitor m = { label, energy(0, q, p, NULL), angular_momentum(q, p), 0, 0, nsteps / 10, per_period };
@@ -104,7 +120,17 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: kepler [PERIODS >= 10 [STEPS_PER_PERIOD]]\n");
         return 2;
     }
+    /* a sign or a factor wrong in dHdq or dHdp, or a coupling in a problem
+     * marked separable, would give wrong orbits without a warning: check */
+    double t, q[2], p[2];
+    vigen_problem_report rep;
+    initial(&t, q, p);
+    if (vigen_problem_check(&kepler, t, q, p, &rep) != VIGEN_SUCCESS) {
+        fprintf(stderr, "kepler: the problem fails its check: %s\n", rep.message);
+        return 1;
+    }
     printf("Kepler problem, e = %.1f, %lu periods of 2 pi, h = 2 pi / %lu\n", e, periods, per_period);
+    printf("problem check: %s\n", rep.message);
     printf("largest relative errors in each tenth of the run:\n\n");
     printf("%-8s %15s %12s %12s\n", "stepper", "periods", "|H/H0 - 1|", "|L/L0 - 1|");
     if (run(&gauss2_type, "gauss2", periods, per_period)) return 1;

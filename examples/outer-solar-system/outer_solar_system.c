@@ -9,12 +9,16 @@
  * orbital period measured from the simulation (its angle about the Sun,
  * unwrapped): about 4332.6 days, or 11.86 years; then the final positions
  * (AU).
+ * First the problem is checked (vigen/diagnostics.h: its gradients against
+ * differences of H, its separability, its Hessian): the program prints the
+ * check's sentence (problem-check) or stops with it.
  *
  *   outer_solar_system [DAYS [H]]        defaults 200000 and 10
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <vigen/diagnostics.h>
 #include <vigen/problems.h>
 #include "gauss2.h"   /* generated and emitted from gauss2_spec.lua by vigen_add_stepper */
 
@@ -44,6 +48,12 @@ int main(int argc, char **argv)
     }
     double t, q[18], p[18], P0[3], L0[3], P[3], L[3];
     vigen_problem_initial(pb, &t, q, p);
+    vigen_problem_report rep;   /* the problem checked before integrating: gradients, separability */
+    if (vigen_problem_check(vigen_problem_hamiltonian(pb), t, q, p, &rep) != VIGEN_SUCCESS) {
+        fprintf(stderr, "outer_solar_system: the problem fails its check: %s\n", rep.message);
+        return 1;
+    }
+    printf("problem-check %s\n", rep.message);
     double E0 = vigen_problem_energy(pb, t, q, p);
     invariants(pb, t, q, p, P0, L0);
     double pscale = 0;   /* the size of the momenta, for a relative momentum error */

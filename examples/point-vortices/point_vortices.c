@@ -8,12 +8,16 @@
  * The polygon rotates rigidly (the exact solution); the program prints the
  * largest distance to it, the largest relative energy error and the largest
  * changes of the linear and angular impulse.
+ * First the problem is checked (vigen/diagnostics.h: its gradients against
+ * differences of H, its separability, its Hessian): the program prints the
+ * check's sentence (problem-check) or stops with it.
  *
  *   point_vortices [N [PERIODS [STEPS_PER_PERIOD]]]      defaults 3, 10, 200
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <vigen/diagnostics.h>
 #include <vigen/problems.h>
 #include "lz4.h"   /* generated and emitted from leok_zhang_ex4.lua by vigen_add_stepper */
 
@@ -35,6 +39,12 @@ int main(int argc, char **argv)
     if (q == NULL) return 1;
     double *p = q + dim, *qr = p + dim, *pr = qr + dim, I0[3], dI[3] = { 0, 0, 0 };
     vigen_problem_initial(pb, &t, q, p);
+    vigen_problem_report rep;   /* the problem checked before integrating: gradients, separability */
+    if (vigen_problem_check(vigen_problem_hamiltonian(pb), t, q, p, &rep) != VIGEN_SUCCESS) {
+        fprintf(stderr, "point_vortices: the problem fails its check: %s\n", rep.message);
+        return 1;
+    }
+    printf("problem-check %s\n", rep.message);
     double E0 = vigen_problem_energy(pb, t, q, p), h = vigen_problem_period(pb) / (double)per_period;
     for (size_t k = 0; k < ninv && k < 3; k++) I0[k] = vigen_problem_invariant(pb, k, t, q, p);
 

@@ -94,6 +94,7 @@ int vigen_try_order(const char *method, const vigen_try_options *opt, int levels
     try_plan plan;
     int rc = try_plan_make(&plan, opt, 0, err);
     if (rc == VIGEN_OK) rc = try_lagrangian_check(1, &method, opt, err);
+    if (rc == VIGEN_OK) rc = try_problem_check(1, &method, opt, err);
     if (rc != VIGEN_OK) return rc;
     try_paths paths;
     if ((rc = try_paths_find(&paths, err)) != VIGEN_OK) return rc;

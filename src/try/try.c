@@ -20,6 +20,7 @@ int vigen_try_run(size_t n, const char *const *methods, const vigen_try_options 
     try_plan plan;
     int rc = try_plan_make(&plan, opt, 0, err);
     if (rc == VIGEN_OK) rc = try_lagrangian_check(n, methods, opt, err);
+    if (rc == VIGEN_OK) rc = try_problem_check(n, methods, opt, err);
     if (rc != VIGEN_OK) return rc;
     try_paths paths;
     if ((rc = try_paths_find(&paths, err)) != VIGEN_OK) return rc;

@@ -77,6 +77,13 @@ void try_lagrangian_print(FILE *out);
  * is built in and opt's problem has no Lagrangian (point vortices). */
 int try_lagrangian_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err);
 
+/* ---- check.c: the problem checked before a run ------------------------ */
+/* The problem of opt (created already once by try_plan_make) checked at its
+ * initial value with vigen_problem_check, and with vigen_lagrangian_check
+ * when one of the n methods is a built-in Lagrangian integrator:
+ * VIGEN_E_DOMAIN with the check's sentence when it fails. */
+int try_problem_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err);
+
 /* ---- build.c: emit a stepper, render the driver, compile --------------- */
 typedef struct {
     char *label;
