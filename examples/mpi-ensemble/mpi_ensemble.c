@@ -19,7 +19,8 @@
  *   mpirun -np R mpi_ensemble ORBITS [STEPS_PER_PERIOD [PERIODS [FAIL]]]
  *       defaults: STEPS_PER_PERIOD 200, PERIODS 1, FAIL none
  *
- * Output (rank 0; the number of ranks and threads goes to stderr): one line
+ * Output (rank 0; the number of ranks and threads and the wall-clock time
+ * of the integration and the gathering go to stderr): one line
  *   orbit I E STATUS STEPS T Q1 Q2 P1 P2
  * per orbit (%.17g: the exact doubles), then the largest energy error
  * |H + 1/2| and distance to the start (after whole periods the exact orbit
@@ -102,6 +103,8 @@ int main(int argc, char **argv)
     vigen_mechanical sys = { .dim = 2, .force = kepler_force };
     vigen_ensemble ens = { .type = &gauss2_type, .alloc = alloc_gauss2, .alloc_ctx = &sys, .dim = 2 };
     const double h = 2 * pi / (double)per;
+    MPI_Barrier(MPI_COMM_WORLD);
+    const double wall0 = MPI_Wtime();
     int rc = vigen_integrate_ensemble(&ens, m, t, q, p, h, (unsigned long)(per * periods), status, steps);
     if (rc == VIGEN_EINVAL || rc == VIGEN_ENOMEM) {
         fprintf(stderr, "mpi_ensemble: rank %d: %s\n", rank, vigen_strerror(rc));
@@ -136,9 +139,11 @@ int main(int argc, char **argv)
         }
     }
     MPI_Gatherv(mine, (int)(PACK * m), MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    const double wall = MPI_Wtime() - wall0;
 
     if (rank == 0) {
-        fprintf(stderr, "mpi_ensemble: %d rank(s), %d thread(s) per rank\n", size, vigen_ensemble_max_threads());
+        fprintf(stderr, "mpi_ensemble: %d rank(s), %d thread(s) per rank, %.3f s (integration and gathering)\n", size,
+                vigen_ensemble_max_threads(), wall);
         double max_dh = 0, max_dist = 0;
         long failed = 0;
         printf("orbits %ld steps-per-period %ld periods %ld\n", n, per, periods);
