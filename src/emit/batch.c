@@ -8,7 +8,10 @@
  * are arrays of W (t0[j], t1[j], ts[j]), that batched gradients or forces
  * are called once for all trajectories, that finiteness is tracked per
  * trajectory (nfl[j]), and that the first-same-as-last gradient is cached
- * per trajectory. */
+ * per trajectory.  A tableau without an explicit step gets the fixed-point
+ * iteration of the Nystrom form for mechanical problems instead, with a
+ * convergence test per trajectory (the stage lines are the scalar
+ * stepper's, nystrom.c). */
 #include <stdlib.h>
 #include <string.h>
 #include "emit/batch.h"
@@ -103,22 +106,62 @@ static void batch_ops(vigen_slot *L, const emit_explicit *X, const char *N, int 
     }
 }
 
-int vigen_emit_batch_code(vigen_slots *S, const prk_coefs *K, const char *name, emit_ctx *E)
+/* The blocks of the batched implicit step of a mechanical problem (a
+ * tableau without an explicit step): pointers to the stage positions Q_i,
+ * forces f_i, the previous step's fo_i and the fresh evaluations ft_i; the
+ * forces of a sweep into ft_i (stage times per trajectory); the fresh forces
+ * taken by the trajectories still iterating (a trajectory that has
+ * converged keeps the forces of its last sweep, as the scalar stepper
+ * does); the starting forces copied from ft1 or from fo_i; and the previous
+ * step's forces put back for a trajectory that failed. */
+static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N)
+{
+    const slong s = K->s;
+    vigen_slot *ptr = vigen_slots_lines(S, "BATCH_IMPL_POINTERS");
+    vigen_slot *fc = vigen_slots_lines(S, "BATCH_IMPL_FORCES");
+    vigen_slot *bl = vigen_slots_lines(S, "BATCH_IMPL_BLEND");
+    vigen_slot *st = vigen_slots_lines(S, "BATCH_IMPL_START");
+    vigen_slot *cp = vigen_slots_lines(S, "BATCH_IMPL_COPY");
+    vigen_slot *rs = vigen_slots_lines(S, "BATCH_IMPL_RESTORE");
+    if (K->X.mode != EMIT_EXPLICIT_NONE) return;
+    for (slong i = 1; i <= s; i++) {
+        const long z = (long)(i - 1);
+        vigen_slot_line(ptr, "double *const Q%ld = b->Q[%ld], *const f%ld = b->G[%ld], *const ft%ld = b->FT[%ld];", (long)i,
+                        z, (long)i, z, (long)i, z);
+        vigen_slot_line(ptr, "const double *const fo%ld = b->Go[%ld];", (long)i, z);
+        vigen_slot_line(ptr, "(void)Q%ld; (void)f%ld; (void)ft%ld; (void)fo%ld;", (long)i, (long)i, (long)i, (long)i);
+        char *ch = vigen_emit_times(K->c[i - 1], "h");
+        if (ch) {
+            vigen_slot_line(fc, "for (size_t j = 0; j < W; j++) ts[j] = t0[j] + %s;", ch);
+            vigen_slot_line(fc, "%s_bforce(b, ts, Q%ld, ft%ld);", N, (long)i, (long)i);
+        } else {
+            vigen_slot_line(fc, "%s_bforce(b, t0, Q%ld, ft%ld);", N, (long)i, (long)i);
+        }
+        free(ch);
+        vigen_slot_line(bl, "f%ld[k] = done[j] ? f%ld[k] : ft%ld[k];", (long)i, (long)i, (long)i);
+        vigen_slot_line(st, "f%ld[k] = ft1[k];", (long)i);
+        vigen_slot_line(cp, "f%ld[k] = fo%ld[k];", (long)i, (long)i);
+        vigen_slot_line(rs, "b->G[%ld][k] = b->Go[%ld][k];", z, z);
+    }
+}
+
+void vigen_emit_batch_code(vigen_slots *S, const prk_coefs *K, const char *name)
 {
     const emit_explicit *X = &K->X;
-    if (X->mode == EMIT_EXPLICIT_NONE)
-        return vigen_error_set(E->err, VIGEN_E_USAGE,
-                               "--batch needs a tableau with an explicit step (Stormer-Verlet, a composition); "
-                               "this one is implicit: emit it without --batch and run the ensemble with "
-                               "vigen_integrate_ensemble");
+    /* arrays of n W doubles: cq, cp, cqn, cpn, qs, ps, imw, ft, and the work
+     * arrays of the explicit step or, for the implicit one, Q, G, Go, FT per
+     * stage and v */
+    vigen_slots_textf(S, "BATCH_NARRAYS", "%ld", 8 + (X->mode != EMIT_EXPLICIT_NONE ? X->nx : 4 * (long)K->s + 1));
+    implicit_blocks(S, K, name);
     vigen_slot *xp = vigen_slots_lines(S, "BATCH_X_POINTERS");
-    for (long x = 0; x < X->nx; x++) vigen_slot_line(xp, "double *restrict const X%ld = b->x[%ld];", x, x);
     vigen_slot *sw = vigen_slots_lines(S, "BATCH_FSAL_SWAPS");
+    vigen_slot *ops = vigen_slots_lines(S, "BATCH_OPS"), *mops = vigen_slots_lines(S, "BATCH_MECH_OPS");
+    if (X->mode == EMIT_EXPLICIT_NONE) return;
+    for (long x = 0; x < X->nx; x++) vigen_slot_line(xp, "double *restrict const X%ld = b->x[%ld];", x, x);
     for (int k = 0; k < X->nswaps; k++) {
         vigen_slot_line(sw, "b->x[%ld] = X%ld;", X->swaps[k][0], X->swaps[k][1]);
         vigen_slot_line(sw, "b->x[%ld] = X%ld;", X->swaps[k][1], X->swaps[k][0]);
     }
-    batch_ops(vigen_slots_lines(S, "BATCH_OPS"), X, name, 0);
-    batch_ops(vigen_slots_lines(S, "BATCH_MECH_OPS"), X, name, 1);
-    return VIGEN_OK;
+    batch_ops(ops, X, name, 0);
+    batch_ops(mops, X, name, 1);
 }

@@ -5,10 +5,9 @@
 
 #include "emit/prk.h"
 
-/* The blocks of the batched explicit step (BATCH_X_POINTERS, BATCH_OPS,
- * BATCH_MECH_OPS, BATCH_FSAL_SWAPS) from the explicit plan of K.
- * VIGEN_E_USAGE (message in E->err) when the tableau has no explicit
- * step. */
-int vigen_emit_batch_code(vigen_slots *S, const prk_coefs *K, const char *name, emit_ctx *E);
+/* The slots of the batched step (BATCH_*): the explicit step's blocks from
+ * the explicit plan of K, or for a tableau without one the blocks of the
+ * mechanical fixed-point iteration (the other blocks then empty). */
+void vigen_emit_batch_code(vigen_slots *S, const prk_coefs *K, const char *name);
 
 #endif
