@@ -1,7 +1,7 @@
 /* ensemble_bench.c — throughput of Kepler ensembles (N orbits, e = 0.7 i/N,
  * h = 2 pi/200, STEPS steps each) with an emitted explicit stepper
- * (Stormer-Verlet or Yoshida's triple jump, mechanical problem), side by
- * side in one run:
+ * (Stormer-Verlet, Yoshida's triple jump, or Gauss s = 2 with its fixed
+ * point; mechanical problem), side by side in one run:
  *   - scalar: a fresh workspace per orbit, NAME_step looped, one core;
  *   - vigen_integrate_ensemble with 1 and 2 OpenMP threads (the same scalar
  *     stepper per orbit);
@@ -47,11 +47,14 @@ static inline void kep_force_b(const double *t, const double *q, double *f, size
 
 #include "ens_sv.h"
 #include "ens_y4.h"
+#include "ens_g2.h"
 /* the same steppers once more with the batched force called directly */
 #define ENS_SVD_DIRECT_FORCE_BATCH kep_force_b
 #include "ens_svd.c"
 #define ENS_Y4D_DIRECT_FORCE_BATCH kep_force_b
 #include "ens_y4d.c"
+#define ENS_G2D_DIRECT_FORCE_BATCH kep_force_b
+#include "ens_g2d.c"
 
 static const double pi = 3.14159265358979323846;
 
@@ -218,12 +221,12 @@ int main(int argc, char **argv)
     R.ref_p = malloc(2 * R.n * sizeof(double));
     R.status = malloc(R.n * sizeof(int));
     if (!R.t || !R.q || !R.p || !R.ref_q || !R.ref_p || !R.status) return 1;
-    const stepper S[2] = { STEPPER(ens_sv, ens_svd), STEPPER(ens_y4, ens_y4d) };
+    const stepper S[3] = { STEPPER(ens_sv, ens_svd), STEPPER(ens_y4, ens_y4d), STEPPER(ens_g2, ens_g2d) };
     printf("Kepler ensemble: %zu orbits, %zu steps each (h = 2 pi/200), batch blocks of %zu, fastest of %d; "
            "OpenMP threads available: %d\n\n", R.n, R.steps, R.W, repeat, vigen_ensemble_max_threads());
     printf("| stepper | configuration | cores | ns per orbit-step | M orbit-steps/s | vs scalar loop | same bits |\n");
     printf("|---|---|---|---|---|---|---|\n");
-    for (int s = 0; s < 2; s++) {
+    for (int s = 0; s < 3; s++) {
         struct { const char *what; int kind, threads; } rows[] = {
             { "scalar loop (NAME_step)", SCALAR, 1 },
             { "vigen_integrate_ensemble", ENS, 1 },

@@ -1,9 +1,10 @@
 #!/bin/bash
 # ensemble_run.sh VIGEN [BUILD_DIR] — the ensemble benchmarks, side by side in
 # one run (docs/benchmarks.md, "Ensembles"):
-#   1. bench/ensemble_bench.c: Kepler ensemble of 10^5 orbits, Stormer-Verlet
-#      and Yoshida's triple jump emitted with --batch: the scalar loop, the
-#      OpenMP ensemble on 1 and 2 threads, the batch on 1 and 2 threads;
+#   1. bench/ensemble_bench.c: Kepler ensemble of 10^5 orbits, Stormer-Verlet,
+#      Yoshida's triple jump and Gauss s = 2 emitted with --batch: the scalar
+#      loop, the OpenMP ensemble on 1 and 2 threads, the batch on 1 and 2
+#      threads;
 #   2. examples/mpi-ensemble (Gauss s = 2, the ensemble spread over ranks):
 #      1 and 2 MPI ranks of one thread each, wall-clock time of the
 #      integration and the gathering (fastest of three runs), and whether
@@ -22,9 +23,12 @@ done
 for n in y4 y4d; do
     "$VIGEN" emit "$SRC/tableaux/published/yoshida_4.lua" --name ens_$n --batch -o "$OUT" -q
 done
+for n in g2 g2d; do
+    "$VIGEN" emit "$SRC/tableaux/published/gauss_2.lua" --name ens_$n --batch -o "$OUT" -q
+done
 FLAGS="-std=c11 -O3 -Wall -Wextra -Wpedantic"
 gcc $FLAGS -fopenmp -I"$SRC/runtime/include" -I"$OUT" "$SRC/bench/ensemble_bench.c" "$OUT/ens_sv.c" \
-    "$OUT/ens_y4.c" "$SRC"/runtime/src/*.c -lgsl -lgslcblas -lm -o "$OUT/ensemble_bench"
+    "$OUT/ens_y4.c" "$OUT/ens_g2.c" "$SRC"/runtime/src/*.c -lgsl -lgslcblas -lm -o "$OUT/ensemble_bench"
 
 echo "## $(date -u '+%Y-%m-%d %H:%M UTC'), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores, gcc $(gcc -dumpfullversion) ($FLAGS)"
 echo "load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"
