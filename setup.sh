@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-packages=(build-essential cmake pkg-config libflint-arb-dev libflint-dev libgsl-dev liblua5.4-dev clang libclang-rt-dev python3 gnuplot-nox)
+packages=(build-essential cmake pkg-config libflint-arb-dev libflint-dev libgsl-dev liblua5.4-dev clang libclang-rt-dev python3 gnuplot-nox libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -71,7 +71,8 @@ int vigen_cmd_emit(const vigen_cli_args *args)
     const char *base = strrchr(file, '/');
     vigen_emit_options opt = { .name = name, .real = real, .input_label = base ? base + 1 : file,
                                .allow_inexact = args->value[VIGEN_OPT_emit_allow_inexact] != NULL,
-                               .variant = args->value[VIGEN_OPT_emit_variant], .dim = dim };
+                               .variant = args->value[VIGEN_OPT_emit_variant], .dim = dim,
+                               .batch = args->value[VIGEN_OPT_emit_batch] != NULL };
 
     vigen_error err;
     vigen_error_init(&err);

@@ -4,7 +4,7 @@
 #
 #   vigen_add_stepper(TARGET <target> TABLEAU <file.lua> NAME <name>
 #                     [REAL double|long-double|float128]
-#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT] [DIM <n>])
+#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT] [DIM <n>] [BATCH])
 #   vigen_add_stepper(TARGET <target> SPEC <spec.lua> [DIGITS <n>] NAME <name> ...)
 #
 # With SPEC, a first rule runs
@@ -26,11 +26,12 @@
 # REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
 # decimal entries as written when they have too few digits for REAL).  DIM
 # passes --dim N (a static dimension: NAME_alloc and NAME_alloc_mechanical
-# refuse problems of another dimension).
+# refuse problems of another dimension).  BATCH passes --batch (NAME_step_batch
+# too: W trajectories per call, docs/ensembles.md; double, explicit tableaux).
 # Compile the program without -ffast-math (the emitted code refuses it).
 
 function(vigen_add_stepper)
-  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR;DIM" "")
+  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT;BATCH" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR;DIM" "")
   if(VAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "vigen_add_stepper: unknown arguments: ${VAS_UNPARSED_ARGUMENTS}")
   endif()
@@ -101,6 +102,9 @@ function(vigen_add_stepper)
   set(extra)
   if(VAS_ALLOW_INEXACT)
     list(APPEND extra --allow-inexact)
+  endif()
+  if(VAS_BATCH)
+    list(APPEND extra --batch)
   endif()
   if(DEFINED VAS_DIM)
     if(NOT VAS_DIM MATCHES "^[1-9][0-9]*$")

@@ -1,7 +1,7 @@
 /* emit.h — `vigen emit`: compiles a tableau into a specialised C stepper.
  *
  *   vigen emit FILE --name NAME [--real double|long-double|float128] [-o DIR]
- *              [--variant NAME] [--dim N] [--allow-inexact] [-q]
+ *              [--variant NAME] [--dim N] [--batch] [--allow-inexact] [-q]
  *
  * writes DIR/NAME.h and DIR/NAME.c (DIR defaults to "."), rendered from
  * templates/<variant>/stepper.h.in and templates/<variant>/stepper.c.in
@@ -53,6 +53,8 @@
  *   sum b and b^T At rounded from balls like the other coefficients; the
  *   explicit path calls the force in place of dH/dq (docs/emit.md).
  * - --dim N (opt->dim): a static dimension, see vigen_emit_options.dim.
+ * - --batch (opt->batch): the batched stepper NAME_step_batch beside the
+ *   scalar one (templates/prk/batch.h.in, batch.c.in; docs/ensembles.md).
  *
  * Variants: src/emit/variants.def lists the steppers the emitter can write,
  * chosen by name (vigen_emit_options.variant; today one, "prk", the default:
@@ -104,6 +106,9 @@ typedef struct {
                                 workspace itself, and NAME_alloc / NAME_alloc_mechanical
                                 refusing (NULL) a problem whose dim is not N; the header
                                 defines NAME_DIM (upper case) as N, 0 when any */
+    int batch;               /* `--batch`: also NAME_step_batch, W trajectories per call in
+                                structure-of-arrays layout (double, explicit tableaux only;
+                                docs/ensembles.md) */
 } vigen_emit_options;
 
 /* The target types by name, as `vigen emit --real` takes them:

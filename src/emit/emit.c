@@ -38,6 +38,9 @@ static int check_options(const vigen_emit_variant **variant, const vigen_emit_op
         return vigen_error_set(err, VIGEN_E_USAGE, "static dimension %zu is too large (at most %d; 0 for any)",
                                opt->dim, VIGEN_EMIT_MAX_DIM);
     *variant = vigen_emit_variant_find(opt->variant);
+    if (opt->batch && *variant != NULL && (opt->real != VIGEN_REAL_DOUBLE || *variant != variants))
+        return vigen_error_set(err, VIGEN_E_USAGE, "--batch is for the %s variant in double precision only "
+                               "(leave out --real and --variant, or --batch)", variants[0].name);
     if (*variant != NULL) return VIGEN_OK;
     vigen_strbuf known;
     vigen_strbuf_init(&known);
@@ -53,8 +56,26 @@ static int check_options(const vigen_emit_variant **variant, const vigen_emit_op
 /* Renders the variant's two templates with the slots, and checks the
  * contract from the builder's side: every slot it supplies is declared by
  * one of the templates (each template checks the rest itself). */
-static int render_templates(const vigen_emit_variant *v, const char *top, const vigen_slots *S, char **h_text,
-                            char **c_text, vigen_error *err)
+/* Appends the rendering of <dir>/<file> to *text (the batched stepper's
+ * templates after the scalar ones: the batch uses the scalar file's
+ * helpers). */
+static int render_append(char **text, const char *dir, const char *file, const vigen_slots *S,
+                         unsigned char *declared, vigen_error *err)
+{
+    char *path = vigen_strdup_printf("%s/%s", dir, file), *more = NULL;
+    int rc = vigen_template_render_file(&more, path, S, declared, err);
+    if (rc == VIGEN_OK) {
+        char *joined = vigen_strdup_printf("%s\n%s", *text, more);
+        free(*text);
+        *text = joined;
+    }
+    free(more);
+    free(path);
+    return rc;
+}
+
+static int render_templates(const vigen_emit_variant *v, const char *top, const vigen_slots *S, int batch,
+                            char **h_text, char **c_text, vigen_error *err)
 {
     char *dir = top ? vigen_strdup_printf("%s/%s", top, v->name) : vigen_template_dir(v->name);
     char *hp = vigen_strdup_printf("%s/stepper.h.in", dir);
@@ -63,6 +84,8 @@ static int render_templates(const vigen_emit_variant *v, const char *top, const 
     if (declared == NULL) abort();
     int rc = vigen_template_render_file(h_text, hp, S, declared, err);
     if (rc == VIGEN_OK) rc = vigen_template_render_file(c_text, cp, S, declared, err);
+    if (rc == VIGEN_OK && batch) rc = render_append(h_text, dir, "batch.h.in", S, declared, err);
+    if (rc == VIGEN_OK && batch) rc = render_append(c_text, dir, "batch.c.in", S, declared, err);
     for (size_t k = 0; rc == VIGEN_OK && k < S->n; k++)
         if (!declared[k])
             rc = vigen_error_set(err, VIGEN_E_TEMPLATE,
@@ -126,7 +149,7 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
         vigen_emit_precision_message(&E, opt, err);
         rc = err->code;
     }
-    if (rc == VIGEN_OK) rc = render_templates(variant, opt->template_dir, &slots, h_text, c_text, err);
+    if (rc == VIGEN_OK) rc = render_templates(variant, opt->template_dir, &slots, opt->batch, h_text, c_text, err);
     if (rc == VIGEN_OK) vigen_emit_report_marks(&E, opt);
     vigen_slots_clear(&slots);
     free(E.marks);

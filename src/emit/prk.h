@@ -40,6 +40,7 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *name, i
 char *vigen_emit_times(const char *coef, const char *x);
 char *vigen_emit_lin(char *const *coefs, slong n, const char *pre, const char *post);
 char *vigen_emit_at_time(const char *c);
+char *vigen_emit_hsum_op(const emit_xop *op);
 /* Whether column j of the s x s literals m has a nonzero entry. */
 int vigen_emit_colused(char *const *m, slong s, slong j);
 

@@ -122,7 +122,9 @@ static char *hsum_vec(char *const *v, slong s, const char *prefix)
     return r;
 }
 
-static char *hsum_op(const emit_xop *op)
+/* h times the sum of the terms of an explicit operation (shared with
+ * batch.c). */
+char *vigen_emit_hsum_op(const emit_xop *op)
 {
     hterm *l = calloc((size_t)(op->nterms > 0 ? op->nterms : 1), sizeof *l);
     if (l == NULL) abort();
@@ -339,7 +341,7 @@ static void explicit_ops(vigen_slot *L, const emit_explicit *X, const char *N, c
             free(tm);
             continue;
         }
-        char *ht = hsum_op(op);
+        char *ht = vigen_emit_hsum_op(op);
         switch (op->op) {
         case XOP_STAGE_Q:
             vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] + %s;", op->dst, q0, ht);
