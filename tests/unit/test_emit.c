@@ -167,7 +167,7 @@ static void test_tableau(const char *path, const char *runtime_lib)
     char *ident = vigen_strdup_printf("t_%s", ident0);
     free(ident0);
     int real = ps >= 6 ? VIGEN_REAL_LONG_DOUBLE : VIGEN_REAL_DOUBLE;
-    vigen_emit_options opt = { ident, real, "input.lua", 0, NULL, NULL, 0 };
+    vigen_emit_options opt = { ident, real, "input.lua", 0, NULL, NULL, 0, 0 };
     char *h1 = NULL, *c1 = NULL, *h2 = NULL, *c2 = NULL, *id1 = NULL, *id2 = NULL;
     int rc = vigen_emit_render(&t, &opt, &h1, &c1, &id1, &err);
     if (rc == VIGEN_E_INEXACT) {
@@ -279,7 +279,7 @@ static void test_rounding(void)
         vigen_error_clear(&err);
         return;
     }
-    vigen_emit_options opt = { "rnd", VIGEN_REAL_DOUBLE, "rounding.lua", 0, NULL, NULL, 0 };
+    vigen_emit_options opt = { "rnd", VIGEN_REAL_DOUBLE, "rounding.lua", 0, NULL, NULL, 0, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     CHECK(c && strstr(c, "0x1.5555555555555p-2") != NULL);     /* 1/3, rounded down (…0101|0101…) */
@@ -341,7 +341,7 @@ static void test_golden(const char *name)
         return;
     }
     char *label = vigen_strdup_printf("%s.lua", name);
-    vigen_emit_options opt = { name, VIGEN_REAL_DOUBLE, label, 0, NULL, NULL, 0 };
+    vigen_emit_options opt = { name, VIGEN_REAL_DOUBLE, label, 0, NULL, NULL, 0, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     char *gh = vigen_strdup_printf("tests/data/emit/golden/%s.h", name), *gc = vigen_strdup_printf("tests/data/emit/golden/%s.c", name);
@@ -382,7 +382,7 @@ static void test_names(void)
     t.description = vigen_strdup("evil */ int injected; /* \"\\ ?\?/\n#include <x>");
     free(t.name);
     t.name = vigen_strdup("bad\"name */ int x;");
-    vigen_emit_options opt = { "evil", VIGEN_REAL_DOUBLE, "evil */.lua", 0, NULL, NULL, 0 };
+    vigen_emit_options opt = { "evil", VIGEN_REAL_DOUBLE, "evil */.lua", 0, NULL, NULL, 0, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     CHECK(vigen_emit_render(&t, &opt, &h, &c, &id, &err) == VIGEN_OK);
     CHECK(c && strstr(c, "*/ int injected") == NULL && strstr(c, "\n#include <x>") == NULL);
@@ -502,7 +502,7 @@ static void test_inexact(void)
         free(path);
         return;
     }
-    vigen_emit_options opt = { "g3", VIGEN_REAL_DOUBLE, "gauss3_34.lua", 0, NULL, NULL, 0 };
+    vigen_emit_options opt = { "g3", VIGEN_REAL_DOUBLE, "gauss3_34.lua", 0, NULL, NULL, 0, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     vigen_strbuf_clear(&audit_text);
     vigen_strbuf_init(&audit_text);
@@ -542,7 +542,7 @@ static void test_inexact(void)
     vigen_strbuf_init(&audit_text);
     vigen_strbuf_append(&audit_text, "");
     if (vigen_tableau_load(&t, "tableaux/published/blanes_moan_s6_4.lua", NULL, &err) == VIGEN_OK) {
-        vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0, NULL, NULL, 0 };
+        vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0, NULL, NULL, 0, 0 };
         CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_E_INEXACT);
         m = err.message ? err.message : "";
         CHECK_MSG(strstr(m, "c[1] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits") != NULL &&
@@ -563,7 +563,7 @@ static void test_inexact(void)
 
     /* a spec generated for the emitter: the header says from what */
     CHECK(vigen_galerkin_generate(&g, spec, vigen_emit_spec_digits(VIGEN_REAL_FLOAT128), &err) == VIGEN_OK);
-    vigen_emit_options so = { "g3s", VIGEN_REAL_FLOAT128, "gauss_legendre_s3.lua", 0, NULL, NULL, 0 };
+    vigen_emit_options so = { "g3s", VIGEN_REAL_FLOAT128, "gauss_legendre_s3.lua", 0, NULL, NULL, 0, 0 };
     audit_count = 0;
     CHECK(vigen_emit_render(&g, &so, &h, &c, &id, &err) == VIGEN_OK && audit_count == 0);
     CHECK(c && strstr(c, "Tableau generated from the spec gauss_legendre_s3.lua with 60 certified digits") != NULL);

@@ -138,7 +138,7 @@ static int harness_emit_dim(const char *path, const char *name, int real, size_t
         vigen_error_clear(&err);
         return 0;
     }
-    vigen_emit_options opt = { name, real, path, 0, NULL, NULL, dim };
+    vigen_emit_options opt = { name, real, path, 0, NULL, NULL, dim, 0 };
     char *h = NULL, *c = NULL, *id = NULL;
     int rc = vigen_emit_render(&t, &opt, &h, &c, &id, &err);
     vigen_tableau_clear(&t);

@@ -245,7 +245,7 @@ typedef struct {
 
 static emitted emit_gauss2(const char *file, const char *template_dir, const char *variant)
 {
-    vigen_emit_options opt = { "g2", VIGEN_REAL_DOUBLE, "gauss2.lua", 0, template_dir, variant, 0 };
+    vigen_emit_options opt = { "g2", VIGEN_REAL_DOUBLE, "gauss2.lua", 0, template_dir, variant, 0, 0 };
     emitted e = { 0, 0, NULL, NULL, NULL };
     vigen_tableau t;
     char *ident = NULL;

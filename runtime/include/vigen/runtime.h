@@ -84,7 +84,9 @@ enum {
     VIGEN_SUCCESS = 0,
     VIGEN_EINVAL,        /* invalid argument: NULL pointer, dim 0, t or h not finite, or
                           * t + h overflowing (an emitted NAME_step checks pointers
-                          * only when compiled with -DVIGEN_CHECK_ARGS) */
+                          * only when compiled with -DVIGEN_CHECK_ARGS; with
+                          * -DVIGEN_CHECK_PROBLEM it also checks the problem
+                          * at its first step, vigen/diagnostics.h) */
     VIGEN_ENOMEM,        /* allocation failed */
     VIGEN_ENOCONV,       /* stage iteration stopped decreasing above the tolerance (diverges) */
     VIGEN_EMAXITER,      /* stage iteration reached max_iter without converging */

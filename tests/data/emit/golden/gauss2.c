@@ -39,6 +39,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "gauss2.h"
+#ifdef VIGEN_CHECK_PROBLEM
+#include <vigen/diagnostics.h>
+#endif
 
 #if defined(__FAST_MATH__)
 #error "compile without -ffast-math: the compensated sums need IEEE rounding"
@@ -71,6 +74,8 @@
 /* Number of arrays of length dim in the workspace block. */
 #define GAUSS2_NARRAYS 25
 
+/* sys, mech and im stay first and in this order: vigen_integrate_at and
+ * vigen_integrate_events read the problem there (runtime/src/dense_impl.h). */
 struct gauss2_workspace {
     vigen_hamiltonian sys;
     vigen_mechanical mech;     /* the problem of gauss2_alloc_mechanical */
@@ -94,6 +99,10 @@ struct gauss2_workspace {
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
     int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain;
                                        3, 4, 5 the same for a mechanical problem */
+#ifdef VIGEN_CHECK_PROBLEM
+    int check_status;               /* -1 until the problem is checked at the first step's state,
+                                       then the check's status */
+#endif
 };
 
 static inline double gauss2_abs(double x) { return fabs(x); }
@@ -224,6 +233,9 @@ gauss2_workspace *gauss2_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     if (sys == NULL || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
     gauss2_workspace *w = gauss2_alloc_dim(sys->dim, sys->separable, 0, opt);
     if (w) w->sys = *sys;
+#ifdef VIGEN_CHECK_PROBLEM
+    if (w) w->check_status = -1;   /* checked at the first step: alloc has no state */
+#endif
     return w;
 }
 
@@ -237,6 +249,9 @@ gauss2_workspace *gauss2_alloc_mechanical(const vigen_mechanical *sys, const vig
     w->sys.dim = sys->dim;
     w->sys.ctx = sys->ctx;
     for (size_t k = 0; k < sys->dim; k++) w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+#ifdef VIGEN_CHECK_PROBLEM
+    w->check_status = -1;          /* checked at the first step: alloc has no state */
+#endif
     return w;
 }
 
@@ -775,6 +790,16 @@ int gauss2_step(gauss2_workspace *w, double *t, double *q, double *p, double h)
 {
 #if defined(VIGEN_CHECK_ARGS) || defined(GAUSS2_CHECK_ARGS)
     if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
+#endif
+#ifdef VIGEN_CHECK_PROBLEM
+    /* the problem checked once, at the first step's state (vigen/diagnostics.h);
+     * a problem that fails it fails every step, its sentence on stderr once */
+    if (w->check_status != VIGEN_SUCCESS) {
+        if (w->check_status < 0)
+            w->check_status = w->path >= 3 ? vigen_mechanical_check_or_say("gauss2", &w->mech, *t, q)
+                                           : vigen_problem_check_or_say("gauss2", &w->sys, *t, q, p);
+        if (w->check_status != VIGEN_SUCCESS) return w->check_status;
+    }
 #endif
     /* One branch for the unusual cases.  For an IEEE double x, x finite and
      * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out);

@@ -39,6 +39,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "verlet.h"
+#ifdef VIGEN_CHECK_PROBLEM
+#include <vigen/diagnostics.h>
+#endif
 
 #if defined(__FAST_MATH__)
 #error "compile without -ffast-math: the compensated sums need IEEE rounding"
@@ -71,6 +74,8 @@
 /* Number of arrays of length dim in the workspace block. */
 #define VERLET_NARRAYS 29
 
+/* sys, mech and im stay first and in this order: vigen_integrate_at and
+ * vigen_integrate_events read the problem there (runtime/src/dense_impl.h). */
 struct verlet_workspace {
     vigen_hamiltonian sys;
     vigen_mechanical mech;     /* the problem of verlet_alloc_mechanical */
@@ -96,6 +101,10 @@ struct verlet_workspace {
     int fsal;                       /* cached first-same-as-last gradients valid */
     int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain;
                                        3, 4, 5 the same for a mechanical problem */
+#ifdef VIGEN_CHECK_PROBLEM
+    int check_status;               /* -1 until the problem is checked at the first step's state,
+                                       then the check's status */
+#endif
 };
 
 static inline double verlet_abs(double x) { return fabs(x); }
@@ -227,6 +236,9 @@ verlet_workspace *verlet_alloc(const vigen_hamiltonian *sys, const vigen_solver_
     if (sys == NULL || sys->dHdq == NULL || sys->dHdp == NULL) return NULL;
     verlet_workspace *w = verlet_alloc_dim(sys->dim, sys->separable, 0, opt);
     if (w) w->sys = *sys;
+#ifdef VIGEN_CHECK_PROBLEM
+    if (w) w->check_status = -1;   /* checked at the first step: alloc has no state */
+#endif
     return w;
 }
 
@@ -240,6 +252,9 @@ verlet_workspace *verlet_alloc_mechanical(const vigen_mechanical *sys, const vig
     w->sys.dim = sys->dim;
     w->sys.ctx = sys->ctx;
     for (size_t k = 0; k < sys->dim; k++) w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+#ifdef VIGEN_CHECK_PROBLEM
+    w->check_status = -1;          /* checked at the first step: alloc has no state */
+#endif
     return w;
 }
 
@@ -897,6 +912,16 @@ int verlet_step(verlet_workspace *w, double *t, double *q, double *p, double h)
 {
 #if defined(VIGEN_CHECK_ARGS) || defined(VERLET_CHECK_ARGS)
     if (w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
+#endif
+#ifdef VIGEN_CHECK_PROBLEM
+    /* the problem checked once, at the first step's state (vigen/diagnostics.h);
+     * a problem that fails it fails every step, its sentence on stderr once */
+    if (w->check_status != VIGEN_SUCCESS) {
+        if (w->check_status < 0)
+            w->check_status = w->path >= 3 ? vigen_mechanical_check_or_say("verlet", &w->mech, *t, q)
+                                           : vigen_problem_check_or_say("verlet", &w->sys, *t, q, p);
+        if (w->check_status != VIGEN_SUCCESS) return w->check_status;
+    }
 #endif
     /* One branch for the unusual cases.  For an IEEE double x, x finite and
      * nonzero <=> 0 < (bits << 1) < bits of infinity << 1 (sign shifted out);
