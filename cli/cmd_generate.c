@@ -2,6 +2,7 @@
  * tableau file, with a one-line summary on standard error. */
 #include <stdlib.h>
 #include "cli.h"
+#include "vigen/check.h"
 #include "vigen/method.h"
 #include "vigen/printable.h"
 #include "vigen/progress.h"
@@ -49,6 +50,12 @@ int vigen_cmd_generate(const vigen_cli_args *args)
     vigen_progress_end();
     vigen_method_free(m);
     if (rc != VIGEN_OK) return vigen_cli_fail(args->command, &err);
+    /* the order and symplecticity the checker certifies become the file's
+     * claims (a spec's own order = p is checked here) */
+    if (vigen_check_certify(&t, args->operand, &err) != VIGEN_OK) {
+        vigen_tableau_clear(&t);
+        return vigen_cli_fail(args->command, &err);
+    }
 
     char *text = vigen_tableau_to_lua(&t);
     rc = vigen_write_file_atomic(out_path ? out_path : "-", text, &err);

@@ -348,6 +348,19 @@ void vigen_check_report_clear(vigen_check_report *rep);
 int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau *against,
                         const vigen_check_options *opt, vigen_error *err);
 
+/* The order the report certifies for a family (VIGEN_CHECK_GENERAL,
+ * _SEPARABLE, _NYSTROM): the enumerated trees, a confirmed claim, or
+ * Butcher's theorem beyond them; *at_least when nothing bounds it from above,
+ * *undecided when the next order is undecided. */
+int vigen_check_certified_order(const vigen_check_report *rep, int family, int *at_least, int *undecided);
+
+/* Checks t (a copy; its texts as written, as `vigen check` reads the file)
+ * and records what is certified as the file's claims: order = p when the
+ * order is decided, symplectic = true or false when decided.  A claim
+ * t->claim_order already set (a spec's order = p) that is false is an error
+ * (VIGEN_E_MATH) naming the failing tree. */
+int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err);
+
 /* The checks the checker runs (checks.def), one line each with what it
  * decides, for `vigen help checks`.  A heap string; free with free(). */
 char *vigen_check_list_text(void);

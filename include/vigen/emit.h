@@ -166,6 +166,12 @@ char *vigen_emit_identifier(const char *name);
  * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
 int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
 
+/* The order NAME_ORDER and the stepper type's order field carry: the order
+ * the checker certifies for general H (a claim of the file that holds, the
+ * enumerated order conditions, Butcher's theorem beyond them), -1 when it is
+ * not decided. */
+int vigen_emit_certified_order(const vigen_tableau *t);
+
 /* Loads FILE for emission, once (vigen_method_load), and asks it for the
  * tableau (vigen_method_tableau): a tableau file as it is; a spec generated with
  * vigen_emit_spec_digits(real) digits, doubled (up to 960) while the emitter

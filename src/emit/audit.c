@@ -1,6 +1,7 @@
 /* audit.c — the audit `vigen emit` runs on every tableau it compiles: the
- * checker on row sums and symplecticity (and a cheap claimed order), with a
- * warning for each certain failure; the stepper is written all the same. */
+ * checker on row sums, symplecticity and a claimed order, with a warning for
+ * each certain failure; the stepper is written all the same.  Also the order
+ * NAME_ORDER carries: the one the checker certifies. */
 #include <stdio.h>
 #include "vigen/check.h"
 #include "vigen/emit.h"
@@ -20,13 +21,13 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
 {
     *warnings = 0;
     const char *label = path ? path : (t->name ? t->name : "tableau");
-    /* The claimed order becomes NAME_ORDER and the type's order field, which
+    /* NAME_ORDER and the type's order field carry the certified order, which
      * programs print; one claim is certainly false without any evaluation:
      * an s-stage (P)RK method has order at most 2s (its q part alone is an
      * s-stage Runge-Kutta method). */
     if (t->claim_order > 2 * t->s) {
         vigen_warn("%s: the file claims order %d, but a %ld-stage method has order at most %ld; the stepper's order "
-                   "field repeats the claim: run 'vigen check %s'", label, t->claim_order, (long)t->s,
+                   "field is the certified order: run 'vigen check %s'", label, t->claim_order, (long)t->s,
                    (long)(2 * t->s), label);
         (*warnings)++;
     }
@@ -74,13 +75,12 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
                    p ? "; first: " : "", p ? p->message : "");
         (*warnings)++;
     }
-    /* A claimed order up to 7 is cheap to test (orders <= claim + 1 <= 8:
-     * milliseconds even for 10 stages); a certainly false one is warned
-     * about, since it becomes NAME_ORDER and the type's order field. */
-    if (claim_order >= 0 && claim_order <= 2 * t->s && claim_order + 1 <= 8) {
+    /* A false claim is warned about: NAME_ORDER is the certified order
+     * (vigen_emit_certified_order) and may differ from what the file says. */
+    if (claim_order >= 0 && claim_order <= 2 * t->s) {
         vigen_check_options oopt;
         vigen_check_options_init(&oopt);
-        oopt.max_order = claim_order + 1;
+        oopt.max_order = claim_order + 1 <= VIGEN_TREE_MAX_ORDER ? claim_order + 1 : VIGEN_TREE_MAX_ORDER;
         oopt.path = label;
         vigen_check_report orep;
         vigen_check_report_init(&orep);
@@ -89,8 +89,8 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
         if (vigen_check_tableau(&orep, t, NULL, &oopt, &oerr) == VIGEN_OK &&
             orep.claim_order_status == VIGEN_CHECK_NO) {
             const vigen_check_level *L = &orep.orders[VIGEN_CHECK_GENERAL].level;
-            vigen_warn("%s: the file claims order %d, which is false (%s %d); the stepper's order field repeats "
-                       "the claim: run 'vigen check %s'", label, claim_order,
+            vigen_warn("%s: the file claims order %d, which is false (%s %d); the stepper's order field is the "
+                       "certified order: run 'vigen check %s'", label, claim_order,
                        L->capped ? "the order conditions hold up to order" : "the order is", L->value, label);
             (*warnings)++;
         }
@@ -105,4 +105,29 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
     }
     vigen_check_report_clear(&rep);
     return VIGEN_OK;
+}
+
+int vigen_emit_certified_order(const vigen_tableau *t)
+{
+    vigen_tableau u;
+    vigen_tableau_copy(&u, t);
+    if (u.claim_order > 2 * u.s) u.claim_order = -1;     /* impossible: not evaluated as a claim */
+    vigen_check_options opt;
+    vigen_check_options_init(&opt);
+    if (u.claim_order + 1 > opt.max_order)
+        opt.max_order = u.claim_order + 1 <= VIGEN_TREE_MAX_ORDER ? u.claim_order + 1 : VIGEN_TREE_MAX_ORDER;
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    vigen_error err;
+    vigen_error_init(&err);
+    int order = -1;
+    if (vigen_check_tableau(&rep, &u, NULL, &opt, &err) == VIGEN_OK) {
+        int at_least, undecided;
+        int p = vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided);
+        if (!at_least && !undecided) order = p;
+    }
+    vigen_error_clear(&err);
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&u);
+    return order;
 }

@@ -130,7 +130,9 @@ void vigen_emit_prk_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options 
     vigen_slots_flag(S, "FLOAT128", opt->real == VIGEN_REAL_FLOAT128);
     vigen_slots_text(S, "TABLEAU_NAME", tname);
     vigen_slots_textf(S, "STAGES", "%ld", (long)s);
-    vigen_slots_textf(S, "ORDER", "%d", t->claim_order);
+    /* the order the checker certifies, not merely what the file claims */
+    const int order = vigen_emit_certified_order(t);
+    vigen_slots_textf(S, "ORDER", "%d", order);
     /* what the coefficient comments may promise */
     if (E->inexact_done)
         vigen_slots_textf(S, "COEF_HEAD",
@@ -153,11 +155,11 @@ void vigen_emit_prk_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options 
                         "--digits %ld)", inp, (long)t->digits, inp, (long)t->digits);
     free(inp);
     vigen_slot_line(H, "Tableau digest (FNV-1a 64 of the canonical text): %016llx", vigen_emit_digest(t));
-    if (t->claim_order >= 0)
-        vigen_slot_line(H, "Stages: %ld; claimed order: %d%s", (long)s, t->claim_order,
+    if (order >= 0)
+        vigen_slot_line(H, "Stages: %ld; certified order: %d%s", (long)s, order,
                         t->claim_symplectic == 1 ? "; claimed symplectic" : "");
     else
-        vigen_slot_line(H, "Stages: %ld; claimed order: none%s", (long)s,
+        vigen_slot_line(H, "Stages: %ld; certified order: not decided%s", (long)s,
                         t->claim_symplectic == 1 ? "; claimed symplectic" : "");
     if (t->description) {
         char *d = vigen_emit_safe_text(t->description, 300);

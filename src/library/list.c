@@ -22,34 +22,11 @@ static int by_name(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* The certified order of a family: *at_least when every order evaluated
- * holds and nothing bounds it, *undecided when the next order is undecided. */
-static int order_of(const vigen_check_report *rep, int family, int *at_least, int *undecided)
-{
-    const vigen_check_level *L = &rep->orders[family].level;
-    *at_least = L->capped;
-    *undecided = L->undecided;
-    /* a claim of the file confirmed beyond the enumerated trees is the order */
-    if (family == VIGEN_CHECK_GENERAL && rep->claim_order >= 0 && rep->claim_order_status == VIGEN_CHECK_YES &&
-        !rep->claim_order_separable) {
-        *at_least = *undecided = 0;
-        return rep->claim_order;
-    }
-    /* every enumerated order holds: Butcher's theorem (B, C, D) may prove
-     * more, for every family, and a failing bushy tree bound it */
-    const vigen_check_theorem *th = &rep->theorem;
-    if (L->capped && th->applies && th->order >= L->value) {
-        *at_least = th->bushy_fail[family == VIGEN_CHECK_GENERAL ? 0 : 1] != th->order + 1;
-        return th->order;
-    }
-    return L->value;
-}
-
 /* "6", "8+" (at least), "4?" (the next order undecided) */
 static char *order_word(const vigen_check_report *rep, int family)
 {
     int at_least, undecided;
-    int p = order_of(rep, family, &at_least, &undecided);
+    int p = vigen_check_certified_order(rep, family, &at_least, &undecided);
     return vigen_strdup_printf("%d%s", p, undecided ? "?" : at_least ? "+" : "");
 }
 
@@ -109,7 +86,7 @@ static void print_json_row(FILE *out, const entry *e, int first)
         static const char *const key[3] = {"general", "separable", "nystrom"};
         fprintf(out, ", \"stages\": %ld, \"orders\": {", (long)e->rep.cost.stages);
         for (int f = 0; f < 3; f++) {
-            int at_least, undecided, p = order_of(&e->rep, fam[f], &at_least, &undecided);
+            int at_least, undecided, p = vigen_check_certified_order(&e->rep, fam[f], &at_least, &undecided);
             fprintf(out, "%s\"%s\": {\"order\": %d, \"at_least\": %s, \"undecided_above\": %s}", f ? ", " : "",
                     key[f], p, at_least ? "true" : "false", undecided ? "true" : "false");
         }

@@ -121,6 +121,7 @@ static void fill_metadata(vigen_tableau *t, const vigen_spec *spec)
                                                                                              : spec->basis_text);
     t->nodes = vigen_strdup(spec->nodes_text);
     t->generator = vigen_strdup("vigen " VIGEN_VERSION);
+    t->claim_order = spec->claim_order;
     t->generated_now = 1;
     t->has_At = 1;
     t->has_ct = 1;

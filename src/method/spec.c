@@ -29,7 +29,7 @@
 #include "method/vocabulary.h"
 #include "vigen/limits.h"
 
-static const char *const known_fields[] = { "name", "description", "source", "nodes", "basis", NULL };
+static const char *const known_fields[] = { "name", "description", "source", "nodes", "basis", "order", NULL };
 
 typedef struct {
     vigen_spec *spec;
@@ -510,6 +510,16 @@ static int validate(lua_State *L)
     if (check_string_field(L, 1, "name", 1, &sp->name, cx)) return 0;
     if (check_string_field(L, 1, "description", 0, &sp->description, cx)) return 0;
     if (check_string_field(L, 1, "source", 0, &sp->source, cx)) return 0;
+    /* order = p: a claim, checked against the certified order of the tableau */
+    int ot = raw_field(L, 1, "order");
+    if (ot != LUA_TNIL && !(lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 && lua_tointeger(L, -1) <= 100)) {
+        lua_pop(L, 1);
+        vigen_error_set(&cx->err, VIGEN_E_SPEC, "%s: 'order' (a claim, checked when the tableau is generated) must "
+                        "be an integer from 1 to 100", P);
+        return 0;
+    }
+    if (ot != LUA_TNIL) sp->claim_order = (int)lua_tointeger(L, -1);
+    lua_pop(L, 1);
     if (check_nodes(L, 1, cx)) return 0;
     if (check_basis(L, 1, cx)) return 0;
     if (sp->basis_count != sp->s) {
@@ -538,6 +548,7 @@ int vigen_spec_from_table(vigen_spec **out, vigen_sandbox *sb, const char *path,
 {
     *out = NULL;
     vigen_spec *sp = xcalloc(1, sizeof *sp);
+    sp->claim_order = -1;
     sp->path = vigen_strdup(path);
     sp->sandbox = sb;
     lua_State *L = vigen_sandbox_state(sb);

@@ -34,6 +34,7 @@ typedef struct {
 typedef struct {
     char *path;
     char *name, *description, *source;
+    int claim_order;             /* order = p stated by the spec (checked at generation), -1 when absent */
 
     int nodes_kind;
     slong s;                     /* number of nodes */

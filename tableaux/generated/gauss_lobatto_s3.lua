@@ -10,6 +10,8 @@ return {
   nodes = "gauss_lobatto(3)",
   generator = "vigen 0.1.0",
   digits = 50,
+  order = 4,
+  symplectic = true,
   s = 3,
   c = { "0", "0.50000000000000000000000000000000000000000000000000", "1" },
   A = {

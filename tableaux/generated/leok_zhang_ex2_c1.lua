@@ -10,6 +10,8 @@ return {
   nodes = [[{"1"}]],
   generator = "vigen 0.1.0",
   digits = 50,
+  order = 1,
+  symplectic = true,
   s = 1,
   c = { "1" },
   A = {

@@ -10,6 +10,8 @@ return {
   nodes = [[{"0", "1"}]],
   generator = "vigen 0.1.0",
   digits = 50,
+  order = 2,
+  symplectic = true,
   s = 2,
   c = { "0", "1" },
   A = {

@@ -10,6 +10,8 @@ return {
   nodes = "chebyshev_quadrature(1)",
   generator = "vigen 0.1.0",
   digits = 50,
+  order = 2,
+  symplectic = true,
   s = 1,
   c = { "0.50000000000000000000000000000000000000000000000000" },
   A = {

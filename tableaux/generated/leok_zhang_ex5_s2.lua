@@ -10,6 +10,8 @@ return {
   nodes = "chebyshev_quadrature(2)",
   generator = "vigen 0.1.0",
   digits = 50,
+  order = 4,
+  symplectic = true,
   s = 2,
   c = { "0.21132486540518711774542560974902127217619912436494", "0.78867513459481288225457439025097872782380087563506" },
   A = {

@@ -10,6 +10,8 @@ return {
   nodes = "radau_right(2)",
   generator = "vigen 0.1.0",
   digits = 50,
+  order = 3,
+  symplectic = true,
   s = 2,
   c = { "0.33333333333333333333333333333333333333333333333333", "1" },
   A = {

@@ -34,6 +34,8 @@ expect() {
   rm -f "$work"/*.lua
 }
 
+expect false_order         2 "claims order 5" "has order 4" "b\[b,b,b,b\]"
+expect bad_order_claim     2 "'order' (a claim"
 expect singular_m          2 "singular" "psi_2" "sin(pi\*t)"
 expect zero_weight         2 "b_2 = 0" "divides by b_i"
 expect count_mismatch      2 "basis has 2 functions but nodes has 1"

@@ -150,7 +150,11 @@ static void test_tableau(const char *path, const char *runtime_lib)
         vigen_check_options_init(&copt);
         copt.max_order = 7;
         vigen_check_report_init(&rep);
-        if (vigen_tableau_load(&tc, path, NULL, &err) == VIGEN_OK) {
+        /* orders up to 6 only are measured below: the file's claim (which
+         * would have orders above 7 evaluated) is set aside */
+        vigen_tableau_copy(&tc, &t);
+        tc.claim_order = -1;
+        {
             if (vigen_check_tableau(&rep, &tc, NULL, &copt, &err) == VIGEN_OK) {
                 vigen_check_level lg = rep.orders[VIGEN_CHECK_GENERAL].level, ls = rep.orders[VIGEN_CHECK_SEPARABLE].level;
                 pg = lg.capped ? -1 : lg.value;

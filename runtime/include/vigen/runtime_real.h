@@ -45,7 +45,7 @@ typedef struct {
 typedef struct {
     const char *name;          /* tableau name */
     int stages;
-    int order;                 /* order claimed by the tableau file, -1 unknown */
+    int order;                 /* order certified by the checker for general H, -1 not decided */
     int explicit_separable;    /* 1 when explicit for separable H */
     void *(*alloc)(const VIGEN_SFX(vigen_hamiltonian) *sys, const vigen_solver_options *opt);
     int (*step)(void *w, VIGEN_REAL *t, VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h);

@@ -1,0 +1,57 @@
+/* certify.c — what the checker certifies about a tableau, as the claims a
+ * file states: the order (Butcher's theorem and the bushy trees beyond the
+ * enumerated ones) and symplecticity.  Used by `vigen generate`, which
+ * records them in the files it writes, by `vigen emit` (NAME_ORDER) and by
+ * `vigen list`. */
+#include "check/check_internal.h"
+
+int vigen_check_certified_order(const vigen_check_report *rep, int family, int *at_least, int *undecided)
+{
+    const vigen_check_level *L = &rep->orders[family].level;
+    *at_least = L->capped;
+    *undecided = L->undecided;
+    /* a claim of the file confirmed beyond the enumerated trees is the order */
+    if (family == VIGEN_CHECK_GENERAL && rep->claim_order >= 0 && rep->claim_order_status == VIGEN_CHECK_YES &&
+        !rep->claim_order_separable) {
+        *at_least = *undecided = 0;
+        return rep->claim_order;
+    }
+    /* every enumerated order holds: Butcher's theorem (B, C, D) may prove
+     * more, for every family, and a failing bushy tree bounds it */
+    const vigen_check_theorem *th = &rep->theorem;
+    if (L->capped && th->applies && th->order >= L->value) {
+        *at_least = th->bushy_fail[family == VIGEN_CHECK_GENERAL ? 0 : 1] != th->order + 1;
+        return th->order;
+    }
+    return L->value;
+}
+
+int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err)
+{
+    vigen_tableau u;
+    vigen_tableau_copy(&u, t);
+    vigen_check_options opt;
+    vigen_check_options_init(&opt);
+    opt.path = path;
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    int rc = vigen_check_tableau(&rep, &u, NULL, &opt, err);
+    vigen_tableau_clear(&u);
+    if (rc == VIGEN_OK) {
+        int at_least, undecided;
+        int p = vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided);
+        int decided = !at_least && !undecided;
+        if (t->claim_order >= 0 && rep.claim_order_status == VIGEN_CHECK_NO)
+            rc = vigen_error_set(err, VIGEN_E_MATH, "%s: the spec claims order %d, but the tableau has %s %d%s%s%s; "
+                                 "correct the claim or the spec", path, t->claim_order,
+                                 decided ? "order" : "order at least", p,
+                                 rep.orders[VIGEN_CHECK_GENERAL].fail_tree ? " (the condition of the tree " : "",
+                                 rep.orders[VIGEN_CHECK_GENERAL].fail_tree ? rep.orders[VIGEN_CHECK_GENERAL].fail_tree : "",
+                                 rep.orders[VIGEN_CHECK_GENERAL].fail_tree ? " fails)" : "");
+        else if (t->claim_order < 0) t->claim_order = decided ? p : -1;
+        if (rc == VIGEN_OK && t->claim_symplectic < 0)
+            t->claim_symplectic = rep.symplectic == VIGEN_CHECK_YES ? 1 : rep.symplectic == VIGEN_CHECK_NO ? 0 : -1;
+    }
+    vigen_check_report_clear(&rep);
+    return rc;
+}
