@@ -316,6 +316,8 @@ typedef struct {
     int claim_order_too_short;   /* undecided because the data are too short */
     int claim_order_theorem;     /* decided by the simplifying assumptions and the bushy trees */
     int claim_symplectic;        /* -1, 0, 1 */
+    int claim_order_family[2];   /* order_separable, order_nystrom claimed (-1 absent) */
+    int claim_order_family_status[2];   /* tri-state: the certified order of the family is exactly that */
     int claim_symplectic_status;
     int claim_symplectic_separable;  /* the claim holds for separable H only */
     int claim_symplectic_within_data;

@@ -42,6 +42,8 @@ typedef struct {
     char *description, *source, *basis, *nodes, *generator;
     int claim_order;             /* -1 when absent */
     int claim_symplectic;        /* -1 absent, 0 false, 1 true */
+    int claim_order_sep;         /* order_separable = p: the order for H = T(p) + V(q); -1 absent */
+    int claim_order_nys;         /* order_nystrom = p: the order for H = p^T M^-1 p / 2 + V(q); -1 absent */
     int generated_now;           /* 1: made by the generator in this run (from a spec), not read */
 } vigen_tableau;
 

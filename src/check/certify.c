@@ -49,6 +49,12 @@ int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err)
                                  rep.orders[VIGEN_CHECK_GENERAL].fail_tree ? rep.orders[VIGEN_CHECK_GENERAL].fail_tree : "",
                                  rep.orders[VIGEN_CHECK_GENERAL].fail_tree ? " fails)" : "");
         else if (t->claim_order < 0) t->claim_order = decided ? p : -1;
+        static const int families[2] = {VIGEN_CHECK_SEPARABLE, VIGEN_CHECK_NYSTROM};
+        for (int f = 0; f < 2 && rc == VIGEN_OK; f++) {
+            int *claim = f ? &t->claim_order_nys : &t->claim_order_sep;
+            int q = vigen_check_certified_order(&rep, families[f], &at_least, &undecided);
+            if (*claim < 0 && !at_least && !undecided) *claim = q;
+        }
         if (rc == VIGEN_OK && t->claim_symplectic < 0)
             t->claim_symplectic = rep.symplectic == VIGEN_CHECK_YES ? 1 : rep.symplectic == VIGEN_CHECK_NO ? 0 : -1;
     }

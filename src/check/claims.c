@@ -163,6 +163,31 @@ int chk_claims(chk_round *rd, vigen_error *err)
                 p->message = vigen_strdup_printf("claim order = %d is false: the order is %d", claim, g->value);
         }
     }
+    /* order_separable = p, order_nystrom = p: the certified order of the
+     * family (its trees, Butcher's theorem beyond) is exactly p */
+    static const int families[2] = {VIGEN_CHECK_SEPARABLE, VIGEN_CHECK_NYSTROM};
+    static const char *const family_names[2] = {"order_separable", "order_nystrom"};
+    for (int f = 0; f < 2; f++) {
+        int claim = rep->claim_order_family[f];
+        if (claim < 0) continue;
+        int at_least, undecided;
+        int q = vigen_check_certified_order(rep, families[f], &at_least, &undecided);
+        int st = !at_least && !undecided ? (q == claim ? VIGEN_CHECK_YES : VIGEN_CHECK_NO)
+                 : claim < q ? VIGEN_CHECK_NO : VIGEN_CHECK_UNDECIDED;
+        rep->claim_order_family_status[f] = st;
+        if (st != VIGEN_CHECK_YES) {
+            vigen_check_problem *p = chk_problem_new(rep, VIGEN_PROBLEM_CLAIM);
+            p->claim = family_names[f];
+            p->undecided = st == VIGEN_CHECK_UNDECIDED;
+            p->value_json = vigen_strdup_printf("%d", q);
+            p->expected_json = vigen_strdup_printf("%d", claim);
+            p->message = st == VIGEN_CHECK_NO
+                             ? vigen_strdup_printf("claim %s = %d is false: the order for %s is %s%d", family_names[f],
+                                                   claim, f ? "Nystrom H" : "separable H", at_least ? "at least " : "", q)
+                             : vigen_strdup_printf("claim %s = %d: undecided (order %s%d for %s)", family_names[f], claim,
+                                                   at_least ? "at least " : "", q, f ? "Nystrom H" : "separable H");
+        }
+    }
     if (rep->claim_symplectic >= 0) {
         int want = rep->claim_symplectic, st;
         rep->claim_symplectic_separable = 0;

@@ -107,6 +107,8 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     rep->has_ct = t->has_At && t->has_ct;
     rep->claim_order = t->claim_order;
     rep->claim_symplectic = t->claim_symplectic;
+    rep->claim_order_family[0] = t->claim_order_sep;
+    rep->claim_order_family[1] = t->claim_order_nys;
 
     slong prec = opt.prec > 0 ? opt.prec : chk_adequate_prec(t);
     if (against && opt.prec <= 0 && chk_adequate_prec(against) > prec) prec = chk_adequate_prec(against);
@@ -232,6 +234,8 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     if (rep->consistent != VIGEN_CHECK_YES) code = 1;
     if (rep->claim_order >= 0 && rep->claim_order_status != VIGEN_CHECK_YES) code = 1;
     if (rep->claim_symplectic >= 0 && rep->claim_symplectic_status != VIGEN_CHECK_YES) code = 1;
+    for (int f = 0; f < 2; f++)
+        if (rep->claim_order_family[f] >= 0 && rep->claim_order_family_status[f] != VIGEN_CHECK_YES) code = 1;
     if (rep->against_differences > 0 || rep->against_undecided > 0) code = 1;
     rep->exit_code = code;
     return VIGEN_OK;

@@ -59,6 +59,7 @@ void vigen_check_report_init(vigen_check_report *rep)
     arb_init(rep->stability.x);
     rep->claim_order = -1;
     rep->claim_symplectic = -1;
+    rep->claim_order_family[0] = rep->claim_order_family[1] = -1;
 }
 
 void chk_notes_clear(vigen_check_report *rep)

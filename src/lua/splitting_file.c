@@ -63,7 +63,7 @@ int vigen_splitting_from_table(vigen_splitting *sp, vigen_tableau *info, vigen_s
                                vigen_error *err)
 {
     static const char *const known[] = {"name", "splitting", "source", "description", "order", "symplectic",
-                                        "digits", NULL};
+                                        "order_separable", "order_nystrom", "digits", NULL};
     memset(sp, 0, sizeof *sp);
     lua_State *L = vigen_sandbox_state(sb);
     int rc = start(L, sb, known, info, path, err);
@@ -121,7 +121,7 @@ int vigen_composition_from_table(vigen_composition *co, vigen_tableau *info, vig
                                  vigen_error *err)
 {
     static const char *const known[] = {"name", "composition", "source", "description", "order", "symplectic",
-                                        "digits", NULL};
+                                        "order_separable", "order_nystrom", "digits", NULL};
     static const char *const known_inner[] = {"base", "gamma", NULL};
     memset(co, 0, sizeof *co);
     lua_State *L = vigen_sandbox_state(sb);

@@ -177,7 +177,7 @@ static int read_string_field(lua_State *L, const char *key, char **out, const ch
 
 static const char *const known_fields[] = {
     "name", "s", "c", "A", "b", "At", "ct", "bt", "digits", "source", "description",
-    "basis", "nodes", "generator", "order", "symplectic", "spec", NULL};
+    "basis", "nodes", "generator", "order", "symplectic", "order_separable", "order_nystrom", "spec", NULL};
 
 int vigen_table_check_fields(lua_State *L, const char *const *known, const char *path, vigen_error *err)
 {
@@ -224,6 +224,17 @@ static int read_numbers(vigen_tableau *t, lua_State *L, const char *path, vigen_
     else if (!lua_isnil(L, -1))
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'order' (a claim) must be a non-negative integer", path);
     lua_pop(L, 1);
+    if (rc != VIGEN_OK) return rc;
+    static const char *const family_claims[2] = {"order_separable", "order_nystrom"};
+    for (int f = 0; f < 2 && rc == VIGEN_OK; f++) {
+        raw_getfield(L, -1, family_claims[f]);
+        if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 0 && lua_tointeger(L, -1) < 1000)
+            *(f ? &t->claim_order_nys : &t->claim_order_sep) = (int)lua_tointeger(L, -1);
+        else if (!lua_isnil(L, -1))
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' (a claim) must be a non-negative integer", path,
+                                 family_claims[f]);
+        lua_pop(L, 1);
+    }
     if (rc != VIGEN_OK) return rc;
     raw_getfield(L, -1, "symplectic");
     if (lua_isboolean(L, -1)) t->claim_symplectic = lua_toboolean(L, -1);

@@ -170,6 +170,8 @@ static void take_info(vigen_tableau *t, vigen_tableau *info)
     info->name = info->source = info->description = NULL;
     t->claim_order = info->claim_order;
     t->claim_symplectic = info->claim_symplectic;
+    t->claim_order_sep = info->claim_order_sep;
+    t->claim_order_nys = info->claim_order_nys;
     t->digits = info->digits;
 }
 
@@ -336,6 +338,8 @@ int vigen_method_composition_tableau(vigen_tableau *t, void *state, slong digits
     t->description = st->info.description ? vigen_strdup(st->info.description) : NULL;
     t->claim_order = st->info.claim_order;
     t->claim_symplectic = st->info.claim_symplectic;
+    t->claim_order_sep = st->info.claim_order_sep;
+    t->claim_order_nys = st->info.claim_order_nys;
     if (digits <= 0) return VIGEN_OK;
     rc = vigen_tableau_evaluate(t, vigen_method_tableau_prec(digits, t->s), err);
     if (rc != VIGEN_OK) {

@@ -38,6 +38,8 @@ void vigen_tableau_init(vigen_tableau *t, slong s)
     arb_mat_init(t->At, s, s);
     t->claim_order = -1;
     t->claim_symplectic = -1;
+    t->claim_order_sep = -1;
+    t->claim_order_nys = -1;
 }
 
 void vigen_tableau_clear(vigen_tableau *t)
@@ -103,6 +105,8 @@ void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)
     dst->generator = strdup_or_null(src->generator);
     dst->claim_order = src->claim_order;
     dst->claim_symplectic = src->claim_symplectic;
+    dst->claim_order_sep = src->claim_order_sep;
+    dst->claim_order_nys = src->claim_order_nys;
     dst->generated_now = src->generated_now;
 }
 
@@ -356,6 +360,8 @@ char *vigen_tableau_to_lua(const vigen_tableau *t)
     if (t->claim_order >= 0) vigen_strbuf_printf(&sb, "  order = %d,\n", t->claim_order);
     if (t->claim_symplectic >= 0)
         vigen_strbuf_printf(&sb, "  symplectic = %s,\n", t->claim_symplectic ? "true" : "false");
+    if (t->claim_order_sep >= 0) vigen_strbuf_printf(&sb, "  order_separable = %d,\n", t->claim_order_sep);
+    if (t->claim_order_nys >= 0) vigen_strbuf_printf(&sb, "  order_nystrom = %d,\n", t->claim_order_nys);
     vigen_strbuf_printf(&sb, "  s = %ld,\n", (long)t->s);
     append_vector(&sb, "c", t->c_text, t->s);
     append_matrix(&sb, "A", t->A_text, t->s);

@@ -180,7 +180,16 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         json_tri(out, rep->claim_symplectic_status);
         fprintf(out, ", \"separable_only\": %s, \"within_data\": %s}", rep->claim_symplectic_separable ? "true" : "false",
                 rep->claim_symplectic_within_data ? "true" : "false");
+        first = 0;
     }
+    for (int f = 0; f < 2; f++)
+        if (rep->claim_order_family[f] >= 0) {
+            fprintf(out, "%s\"%s\": {\"claimed\": %d, \"holds\": ", first ? "" : ", ",
+                    f ? "order_nystrom" : "order_separable", rep->claim_order_family[f]);
+            json_tri(out, rep->claim_order_family_status[f]);
+            fputc('}', out);
+            first = 0;
+        }
     fputs("},\n \"problems\": [", out);
     for (slong k = 0; k < rep->nproblems; k++) {
         const vigen_check_problem *p = rep->problems + k;

@@ -290,7 +290,8 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
 
     vigen_report_figures_text(out, rep);
 
-    if (rep->claim_order >= 0 || rep->claim_symplectic >= 0) {
+    if (rep->claim_order >= 0 || rep->claim_symplectic >= 0 || rep->claim_order_family[0] >= 0 ||
+        rep->claim_order_family[1] >= 0) {
         fputs("claims       ", out);
         if (rep->claim_order >= 0)
             fprintf(out, " order = %d: %s%s%s%s;", rep->claim_order,
@@ -306,6 +307,10 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                     rep->claim_symplectic_within_data ? " " : "",
                     rep->claim_symplectic_within_data ? within_words : "",
                     rep->claim_symplectic_separable ? " (for separable H)" : "");
+        for (int f = 0; f < 2; f++)
+            if (rep->claim_order_family[f] >= 0)
+                fprintf(out, " %s = %d: %s;", f ? "order_nystrom" : "order_separable", rep->claim_order_family[f],
+                        tri_word_data(rep->claim_order_family_status[f], "holds", "FALSE", 0));
         fputc('\n', out);
     }
     if (rep->against_checked && rep->against_stages > 0) {

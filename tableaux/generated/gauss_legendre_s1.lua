@@ -12,6 +12,8 @@ return {
   digits = 50,
   order = 2,
   symplectic = true,
+  order_separable = 2,
+  order_nystrom = 2,
   s = 1,
   c = { "0.50000000000000000000000000000000000000000000000000" },
   A = {

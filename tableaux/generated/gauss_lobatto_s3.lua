@@ -12,6 +12,8 @@ return {
   digits = 50,
   order = 4,
   symplectic = true,
+  order_separable = 4,
+  order_nystrom = 4,
   s = 3,
   c = { "0", "0.50000000000000000000000000000000000000000000000000", "1" },
   A = {

@@ -12,6 +12,8 @@ return {
   digits = 50,
   order = 1,
   symplectic = true,
+  order_separable = 1,
+  order_nystrom = 1,
   s = 1,
   c = { "1" },
   A = {

@@ -12,6 +12,8 @@ return {
   digits = 50,
   order = 2,
   symplectic = true,
+  order_separable = 2,
+  order_nystrom = 2,
   s = 2,
   c = { "0", "1" },
   A = {

@@ -12,6 +12,8 @@ return {
   digits = 50,
   order = 3,
   symplectic = true,
+  order_separable = 3,
+  order_nystrom = 3,
   s = 2,
   c = { "0.33333333333333333333333333333333333333333333333333", "1" },
   A = {

@@ -335,6 +335,14 @@ sed 's/^  s = 6,$/  s = 6,\n  order = 13,/' "$src/tableaux/generated/gauss_legen
 run 1 "$work/g6_13.lua"
 grep_out "claim order = 13 is false: the bushy tree of order 13 fails"
 
+# claims of the order for separable and Nystrom H: Gauss s = 2 has order 4
+# for every H (Hairer, Lubich & Wanner, GNI sec. II.1.3)
+sed 's/^  b = /  order_separable = 4, order_nystrom = 4,\n  b = /' "$src/tableaux/published/gauss_2.lua" >"$work/g2_fam.lua"
+run 0 "$work/g2_fam.lua" --json
+json "d['claims']['order_separable']['holds'] is True and d['claims']['order_nystrom']['holds'] is True"
+sed 's/^  b = /  order_separable = 3,\n  b = /' "$src/tableaux/published/gauss_2.lua" >"$work/g2_sep3.lua"
+run 1 "$work/g2_sep3.lua"
+grep_out "claim order_separable = 3 is false: the order for separable H is 4"
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"
   exit 1
