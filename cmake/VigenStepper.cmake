@@ -2,7 +2,7 @@
 # generated into a tableau first) into a stepper library at build time.
 # Included by vigenConfig.cmake (find_package(vigen)).
 #
-#   vigen_add_stepper(TARGET <target> TABLEAU <file.lua> NAME <name>
+#   vigen_add_stepper(TARGET <target> TABLEAU <file.lua or method name> NAME <name>
 #                     [REAL double|long-double|float128]
 #                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT] [DIM <n>] [BATCH])
 #   vigen_add_stepper(TARGET <target> SPEC <spec.lua> [DIGITS <n>] NAME <name> ...)
@@ -21,7 +21,9 @@
 # linked to vigen::runtime.  A program then does
 #   target_link_libraries(app PRIVATE <target>)
 # and `#include "<name>.h"`.  TABLEAU and SPEC are relative to the current
-# source directory; exactly one of them is given.  NAME must be a C
+# source directory; exactly one of them is given.  A TABLEAU that is no file
+# there but a method name (gauss_2, generated/gauss_legendre_s3; `vigen
+# list`) is resolved by vigen as every command resolves names.  NAME must be a C
 # identifier (it prefixes every emitted symbol) and not a C keyword (the list: src/emit/c_keywords.def in the vigen sources);
 # REAL defaults to double.  ALLOW_INEXACT passes --allow-inexact (round the
 # decimal entries as written when they have too few digits for REAL).  DIM
@@ -97,6 +99,13 @@ function(vigen_add_stepper)
       VERBATIM)
   else()
     get_filename_component(tableau "${VAS_TABLEAU}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    # TABLEAU may name a method of vigen's library (vigen list) instead of a
+    # file: vigen resolves the name when it emits, and the rule reruns when
+    # vigen (and so its library) changes
+    if(NOT EXISTS "${tableau}" AND VAS_TABLEAU MATCHES "^((published|generated)/)?[A-Za-z0-9_]+$")
+      set(tableau "${VAS_TABLEAU}")
+      set(tableau_is_name TRUE)
+    endif()
   endif()
 
   set(extra)
@@ -112,7 +121,11 @@ function(vigen_add_stepper)
     endif()
     list(APPEND extra --dim ${VAS_DIM})
   endif()
-  set(deps "${tableau}" vigen::vigen)
+  if(tableau_is_name)
+    set(deps vigen::vigen)
+  else()
+    set(deps "${tableau}" vigen::vigen)
+  endif()
   if(vigen_TEMPLATE_DIR)
     # every variant's templates (templates/<variant>/*.in)
     file(GLOB templates "${vigen_TEMPLATE_DIR}/*/*.in")

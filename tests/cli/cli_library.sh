@@ -5,8 +5,9 @@
 # VI.4; Stormer-Verlet 2; the splitting methods the order their papers
 # state); names resolve in the current directory, then VIGEN_PATH, then the
 # library (published before generated); an installed vigen (the build
-# installed into a moved prefix) knows the installed library; unknown names
-# get a did-you-mean hint and exit 2.
+# installed into a moved prefix) knows the installed library, and its
+# vigen_add_stepper takes names; unknown names get a did-you-mean hint and
+# exit 2.
 set -u
 VIGEN=$(cd "$(dirname "$1")" && pwd)/$(basename "$1")
 SRC=$(cd "$2" && pwd)
@@ -90,6 +91,30 @@ if [ -f "$BUILD/CMakeCache.txt" ] && cmake --install "$BUILD" --prefix "$T/prefi
   [ "$n" = "$want" ] || bad "installed list has $n methods, the library $want"
   "$T/moved/bin/vigen" show gauss_legendre_s3 > inst_show.txt 2>&1 || bad "installed show by name: $(cat inst_show.txt)"
   grep -q "moved/.*tableaux/generated/" <("$T/moved/bin/vigen" list --json) || bad "installed list does not read the installed files"
+  # vigen_add_stepper takes a method name in place of a file
+  mkdir -p "$T/proj"
+  cat > "$T/proj/CMakeLists.txt" <<'CM'
+cmake_minimum_required(VERSION 3.16)
+project(by_name C)
+find_package(vigen REQUIRED)
+vigen_add_stepper(TARGET g2 TABLEAU gauss_2 NAME g2)
+vigen_add_stepper(TARGET g3 TABLEAU generated/gauss_legendre_s3 NAME g3)
+add_executable(by_name main.c)
+target_link_libraries(by_name PRIVATE g2 g3)
+CM
+  cat > "$T/proj/main.c" <<'C'
+#include <stdio.h>
+#include "g2.h"
+#include "g3.h"
+int main(void) { printf("%d %d %zu\n", G2_ORDER, G3_ORDER, g2_dim()); return 0; }
+C
+  if cmake -S "$T/proj" -B "$T/proj/build" -DCMAKE_PREFIX_PATH="$T/moved" > proj.log 2>&1 &&
+     cmake --build "$T/proj/build" >> proj.log 2>&1; then
+    # Gauss s = 2 and s = 3: orders 4 and 6 (Hairer, Lubich & Wanner, GNI II.1.3)
+    [ "$("$T/proj/build/by_name")" = "4 6 0" ] || bad "vigen_add_stepper by name: $("$T/proj/build/by_name")"
+  else
+    bad "vigen_add_stepper with method names: $(tail -8 proj.log)"
+  fi
 else
   bad "cmake --install failed: $(tail -5 install.log)"
 fi
