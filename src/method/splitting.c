@@ -73,8 +73,7 @@ static char **texts_alloc(slong n)
     return t;
 }
 
-static int splitting_tableau(vigen_tableau *t, const vigen_splitting *sp, const vigen_tableau *info,
-                             const char *path, vigen_error *err)
+static int splitting_tableau(vigen_tableau *t, const vigen_splitting *sp, const char *path, vigen_error *err)
 {
     /* merge consecutive substeps of one kind */
     slong n = 0;
@@ -92,7 +91,7 @@ static int splitting_tableau(vigen_tableau *t, const vigen_splitting *sp, const 
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'splitting' needs both kicks and drifts (it has only %ss)", path,
                              drift[0] ? "drift" : "kick");
     /* stamps: a kick the drift time before it, a drift the kick time before it */
-    char **stamp = texts_alloc(n), **before = texts_alloc(n);
+    char **stamp = texts_alloc(n);
     slong nd = 0, nk = 0;
     char **drifts = texts_alloc(n), **kicks = texts_alloc(n);
     for (slong k = 0; k < n; k++) {
@@ -101,7 +100,6 @@ static int splitting_tableau(vigen_tableau *t, const vigen_splitting *sp, const 
         else kicks[nk++] = coef[k];
     }
     char *total_kicks = sum_text(kicks, nk), *total_drifts = sum_text(drifts, nd);
-    free(before);
     if (rc == VIGEN_OK) {
         /* b = bt holds only if both kinds add up to the same total */
         arb_t x, y;
@@ -157,7 +155,6 @@ static int splitting_tableau(vigen_tableau *t, const vigen_splitting *sp, const 
     free(kicks);
     free(total_kicks);
     free(total_drifts);
-    (void)info;
     return rc;
 }
 
@@ -184,7 +181,7 @@ int vigen_method_splitting_read(void **state, vigen_sandbox *sb, const char *pat
     int rc = vigen_splitting_from_table(&sp, &info, sb, path, err);
     vigen_sandbox_free(sb);
     if (rc == VIGEN_OK) {
-        rc = splitting_tableau(&t, &sp, &info, path, err);
+        rc = splitting_tableau(&t, &sp, path, err);
         vigen_splitting_clear(&sp);
     }
     if (rc == VIGEN_OK) {
