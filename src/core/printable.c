@@ -43,28 +43,43 @@ static int hidden(unsigned long cp)
            (cp >= 0x2028 && cp <= 0x202E) || (cp >= 0x2066 && cp <= 0x2069);
 }
 
+/* Writes the escape of one byte (width 2) or code point (width 4), \xHH or
+ * \uHHHH, into out; returns its length.  Written by hand: this runs for every
+ * byte a file prints, and printf per byte made printing long strings slow. */
+static size_t hex_escape(char *out, char kind, unsigned long value, int width)
+{
+    static const char digits[] = "0123456789abcdef";
+    out[0] = '\\';
+    out[1] = kind;
+    for (int k = 0; k < width; k++) out[2 + k] = digits[(value >> (4 * (width - 1 - k))) & 0xF];
+    return (size_t)width + 2;
+}
+
 void vigen_printable_append(vigen_strbuf *sb, const char *text, size_t len)
 {
     vigen_strbuf_append(sb, "");
-    size_t i = 0;
+    size_t i = 0, run = 0;   /* text[run, i) is shown as it is */
     while (i < len) {
         unsigned long cp;
         int n = vigen_utf8_decode(text + i, len - i, &cp);
         unsigned char c = (unsigned char)text[i];
-        if (n == 0) {
-            vigen_strbuf_printf(sb, "\\x%02x", (unsigned)c);
-            i++;
-            continue;
+        char esc[8];
+        size_t esc_len = 0;
+        if (n == 0) esc_len = hex_escape(esc, 'x', c, 2), n = 1;
+        else if (c == '\0') esc_len = 2, memcpy(esc, "\\0", 2);
+        else if (c == '\n') esc_len = 2, memcpy(esc, "\\n", 2);
+        else if (c == '\r') esc_len = 2, memcpy(esc, "\\r", 2);
+        else if (c == '\t') esc_len = 2, memcpy(esc, "\\t", 2);
+        else if (c < 0x20 || c == 0x7F) esc_len = hex_escape(esc, 'x', c, 2);
+        else if (hidden(cp)) esc_len = hex_escape(esc, 'u', cp, 4);
+        if (esc_len > 0) {
+            vigen_strbuf_appendn(sb, text + run, i - run);
+            vigen_strbuf_appendn(sb, esc, esc_len);
+            run = i + (size_t)n;
         }
-        if (c == '\0') vigen_strbuf_append(sb, "\\0");
-        else if (c == '\n') vigen_strbuf_append(sb, "\\n");
-        else if (c == '\r') vigen_strbuf_append(sb, "\\r");
-        else if (c == '\t') vigen_strbuf_append(sb, "\\t");
-        else if (c < 0x20 || c == 0x7F) vigen_strbuf_printf(sb, "\\x%02x", (unsigned)c);
-        else if (hidden(cp)) vigen_strbuf_printf(sb, "\\u%04lx", cp);
-        else vigen_strbuf_appendn(sb, text + i, (size_t)n);
         i += (size_t)n;
     }
+    vigen_strbuf_appendn(sb, text + run, len - run);
 }
 
 char *vigen_printable(const char *text)

@@ -327,6 +327,18 @@ typedef struct {
     vigen_error err;
 } integrand_ctx;
 
+/* The budget of integrand evaluations of one certified quadrature: ample for
+ * the analytic basis functions it is meant for (a few thousand suffice at
+ * hundreds of digits); a function it cannot certify within it is reported.
+ * Fuzzing builds use a smaller budget, so that the fuzzer spends its time on
+ * new inputs rather than on one integrand that will not converge: the code
+ * path is the same. */
+#ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
+enum { QUADRATURE_EVALS_PER_BIT = 8, QUADRATURE_EVALS_BASE = 2000 };
+#else
+enum { QUADRATURE_EVALS_PER_BIT = 200, QUADRATURE_EVALS_BASE = 100000 };
+#endif
+
 /* acb_calc_integrate integrand: order 1 asks for a holomorphy check. */
 static int integrand(acb_ptr res, const acb_t z, void *param, slong order, slong prec)
 {
@@ -400,7 +412,7 @@ int vigen_basis_integral(arb_t res, vigen_basis *B, slong i, const arb_t x, slon
         mag_set_ui_2exp_si(tol, 1, -prec);
         acb_calc_integrate_opt_t opt;
         acb_calc_integrate_opt_init(opt);
-        opt->eval_limit = 200 * prec + 100000;
+        opt->eval_limit = QUADRATURE_EVALS_PER_BIT * prec + QUADRATURE_EVALS_BASE;
         int status = acb_calc_integrate(r, integrand, &ctx, a, b, prec, tol, opt, prec);
         int rc = VIGEN_OK;
         if (ctx.failed) {
