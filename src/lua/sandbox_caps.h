@@ -19,6 +19,10 @@
 
 #define BYTES_PER_INSTRUCTION 32
 
+/* print escapes every byte (UTF-8 decoding, a table of escapes) and writes
+ * it: about the cost of one VM instruction per byte, and so charged. */
+#define PRINTED_BYTES_PER_INSTRUCTION 1
+
 struct vigen_sandbox {
     lua_State *L;
     size_t memory_limit, memory_used;

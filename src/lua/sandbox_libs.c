@@ -332,7 +332,7 @@ static int stderr_print(lua_State *L)
     for (int i = 1; i <= n; i++) {
         size_t len;
         const char *s = luaL_tolstring(L, i, &len);
-        vigen_sandbox_charge(L, len / BYTES_PER_INSTRUCTION);
+        vigen_sandbox_charge(L, len / PRINTED_BYTES_PER_INSTRUCTION);
         /* no Lua call between the allocation and the free: nothing can
          * raise past the buffer */
         vigen_strbuf sb;
