@@ -182,6 +182,8 @@ typedef struct {
 typedef struct {
     char *entry;                 /* "b[1]", "A[2][1]" */
     char *text;                  /* the decimal as written */
+    char *expression;            /* the entry's text when the decimal is inside an expression
+                                    ("0.5*sqrt(3)"); NULL for a bare decimal */
     slong digits;                /* its significant digits */
     char *radius;                /* half a unit in its last digit ("0.05") */
     char *fraction;              /* its exact value ("1/2") */

@@ -65,8 +65,16 @@ int vigen_tableau_load(vigen_tableau *t, const char *path, const vigen_sandbox_l
 /* (Re)computes the balls from the entry texts at precision prec. */
 int vigen_tableau_evaluate(vigen_tableau *t, slong prec, vigen_error *err);
 
-/* Evaluates one entry text: rounded decimal (half-ulp ball) or exact expression. */
+/* Evaluates one entry text.  Every decimal in an entry was rounded, bare
+ * ("0.2113248654") or inside an expression ("0.5*sqrt(3)"): it stands for the
+ * ball of half a unit in its last digit ("0.5" is 0.5 +/- 0.05).  Integers,
+ * fractions and the rest of an expression are exact. */
 int vigen_tableau_entry_eval(arb_t res, const char *text, slong prec, vigen_error *err);
+
+/* 1 when the entry text holds a decimal, bare or inside an expression (its
+ * value is then a ball, not exact); 0 for an exact expression (or a text
+ * that does not parse). */
+int vigen_tableau_entry_is_rounded(const char *text);
 
 /* Fills every *_text from the balls with `digits` certified significant digits
  * (entries that are exactly zero become "0"; balls containing zero become

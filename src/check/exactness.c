@@ -8,7 +8,10 @@
 #include "core/expr.h"
 #include "check/check_internal.h"
 
-static int text_exact(char **texts, slong k) { return texts != NULL && texts[k] != NULL && !vigen_decimal_is_rounded(texts[k]); }
+static int text_exact(char **texts, slong k)
+{
+    return texts != NULL && texts[k] != NULL && !vigen_tableau_entry_is_rounded(texts[k]);
+}
 
 /* Entries in Q or in one Q(sqrt d) make holds provable (see proved_zero in decide.c).
  * With D a common denominator of every a and b of the entries a + b sqrt(d),
@@ -127,7 +130,7 @@ void chk_exactness_init(exactness *x, const vigen_tableau *t)
     for (int l = 0; l < 6; l++)
         for (slong k = 0; lists[l] && k < lens[l]; k++) {
             if (lists[l][k] == NULL) continue;
-            if (vigen_decimal_is_rounded(lists[l][k])) x->any_rounded = 1;
+            if (vigen_tableau_entry_is_rounded(lists[l][k])) x->any_rounded = 1;
             else x->any_exact = 1;
         }
     algebraic_init(x, lists, lens);

@@ -110,7 +110,45 @@ static double entries_digits(const vigen_tableau *t)
     return d;
 }
 
-/* Short decimals that look exact: a rounded decimal with at most
+/* The text without surrounding blanks, a fresh string. */
+static char *trimmed(const char *x)
+{
+    while (*x == ' ' || *x == '\t') x++;
+    size_t len = strlen(x);
+    while (len > 0 && (x[len - 1] == ' ' || x[len - 1] == '\t')) len--;
+    char *r = malloc(len + 1);
+    if (r == NULL) abort();
+    memcpy(r, x, len);
+    r[len] = '\0';
+    return r;
+}
+
+/* The decimals of an entry, bare or inside an expression: returns the most
+ * significant digits of one of them (0: none), and with shortest the one
+ * with the fewest (a fresh string). */
+static slong entry_decimals(const char *x, char **shortest)
+{
+    if (shortest) *shortest = NULL;
+    if (x == NULL) return 0;
+    if (vigen_decimal_is_rounded(x)) {
+        if (shortest) *shortest = trimmed(x);
+        return vigen_decimal_significant_digits(x);
+    }
+    vigen_expr *e = NULL;
+    vigen_error err;
+    vigen_error_init(&err);
+    slong most = 0;
+    if (vigen_expr_parse(&e, x, 0, &err) == VIGEN_OK) {
+        most = vigen_expr_longest_decimal_digits(e);
+        if (most > 0 && shortest) *shortest = vigen_expr_shortest_decimal(e);
+    }
+    vigen_expr_free(e);
+    vigen_error_clear(&err);
+    return most;
+}
+
+/* Short decimals that look exact: a rounded decimal (bare, or inside an
+ * expression: "0.5*sqrt(3)") with at most
  * CHK_NOTE_SHORT_DIGITS significant digits in a file whose longest
  * decimal has at least CHK_NOTE_LONG_DIGITS.  Three digits is where
  * the rule for rounded data stops deciding on an entry alone (5 10^-3 of
@@ -132,24 +170,28 @@ void chk_collect_notes(vigen_check_report *rep, const vigen_tableau *t)
     int matrix[6] = {0, 1, 0, 1, 0, 0};
     slong longest = 0;
     for (int l = 0; l < 6; l++)
-        for (slong k = 0; lists[l] && k < lens[l]; k++)
-            if (lists[l][k] && vigen_decimal_is_rounded(lists[l][k])) {
-                slong d = vigen_decimal_significant_digits(lists[l][k]);
-                if (d > longest) longest = d;
-            }
+        for (slong k = 0; lists[l] && k < lens[l]; k++) {
+            slong d = entry_decimals(lists[l][k], NULL);
+            if (d > longest) longest = d;
+        }
     if (longest < CHK_NOTE_LONG_DIGITS) return;
     slong alloc = 0;
     for (int l = 0; l < 6; l++)
         for (slong k = 0; lists[l] && k < lens[l]; k++) {
             const char *x = lists[l][k];
-            if (x == NULL || !vigen_decimal_is_rounded(x)) continue;
-            slong d = vigen_decimal_significant_digits(x);
-            if (d > CHK_NOTE_SHORT_DIGITS) continue;
-            char *fraction = vigen_decimal_exact_fraction(x), *radius = vigen_decimal_half_unit(x);
+            char *lit = NULL;
+            if (x == NULL || entry_decimals(x, &lit) == 0 || lit == NULL) {
+                free(lit);
+                continue;
+            }
+            slong d = vigen_decimal_significant_digits(lit);
+            char *fraction = d <= CHK_NOTE_SHORT_DIGITS ? vigen_decimal_exact_fraction(lit) : NULL;
+            char *radius = fraction ? vigen_decimal_half_unit(lit) : NULL;
             if (fraction == NULL || radius == NULL ||
-                (strcmp(fraction, "0") == 0 && (strchr(x, 'e') != NULL || strchr(x, 'E') != NULL))) {
+                (strcmp(fraction, "0") == 0 && (strchr(lit, 'e') != NULL || strchr(lit, 'E') != NULL))) {
                 free(fraction);
                 free(radius);
+                free(lit);
                 continue;
             }
             if (rep->nnotes == alloc) {
@@ -159,20 +201,19 @@ void chk_collect_notes(vigen_check_report *rep, const vigen_tableau *t)
             vigen_check_note *n = rep->notes + rep->nnotes++;
             n->entry = matrix[l] ? vigen_strdup_printf("%s[%ld][%ld]", names[l], (long)(k / s + 1), (long)(k % s + 1))
                                  : vigen_strdup_printf("%s[%ld]", names[l], (long)(k + 1));
-            /* the text without surrounding blanks */
-            const char *a = x;
-            while (*a == ' ' || *a == '\t') a++;
-            size_t len = strlen(a);
-            while (len > 0 && (a[len - 1] == ' ' || a[len - 1] == '\t')) len--;
-            n->text = malloc(len + 1);
-            memcpy(n->text, a, len);
-            n->text[len] = '\0';
+            n->text = lit;
+            n->expression = vigen_decimal_is_rounded(x) ? NULL : trimmed(x);
             n->digits = d;
             n->radius = radius;
             n->fraction = fraction;
-            n->message = vigen_strdup_printf("%s = \"%s\" is read as %s +/- %s (%ld significant digit%s); if it is "
-                                             "exact, write \"%s\"", n->entry, n->text, n->text, radius, (long)d,
-                                             d == 1 ? "" : "s", fraction);
+            if (n->expression)
+                n->message = vigen_strdup_printf("%s = \"%s\": %s is read as %s +/- %s (%ld significant digit%s); if "
+                                                 "it is exact, write %s", n->entry, n->expression, lit, lit, radius,
+                                                 (long)d, d == 1 ? "" : "s", fraction);
+            else
+                n->message = vigen_strdup_printf("%s = \"%s\" is read as %s +/- %s (%ld significant digit%s); if it "
+                                                 "is exact, write \"%s\"", n->entry, lit, lit, radius, (long)d,
+                                                 d == 1 ? "" : "s", fraction);
         }
 }
 

@@ -68,6 +68,7 @@ void chk_notes_clear(vigen_check_report *rep)
         vigen_check_note *n = rep->notes + k;
         free(n->entry);
         free(n->text);
+        free(n->expression);
         free(n->radius);
         free(n->fraction);
         free(n->message);

@@ -9,7 +9,8 @@
  *   primary := number | 'pi' | 't' | func '(' expr ')' | '(' expr ')'
  *   number  := digits ['.' digits] [('e'|'E') ['+'|'-'] digits]  |  '.' digits [...]
  *   func    := sqrt | exp | log | sin | cos | tan     -- the rows of functions.def
- * Numbers are exact: "0.1" is 1/10, "2.5e-3" is 1/400.  Identifiers other than
+ * Numbers are exact: "0.1" is 1/10, "2.5e-3" is 1/400 (tableau entries read
+ * their decimals rounded instead: vigen_expr_round_decimals).  Identifiers other than
  * pi, t and the functions are errors.  The variable t is allowed only when the
  * caller says so (basis functions); nodes and tableau entries are constants.
  * Powers: an exponent that is an exact integer (after evaluation of a constant
@@ -65,6 +66,20 @@ int vigen_expr_parse(vigen_expr **out, const char *text, int allow_t, vigen_erro
 void vigen_expr_free(vigen_expr *e);
 
 int vigen_expr_depends_on_t(const vigen_expr *e);
+
+/* Decimal literals: numbers written with a point or an exponent ("0.5",
+ * "2e-3").  vigen_expr_round_decimals makes every later evaluation read each
+ * of them as the ball of half a unit in its last digit ("0.5" is 0.5 +/-
+ * 0.05), as a bare decimal tableau entry is read, and the exact conversions
+ * (vigen_expr_to_fmpq, _to_quadratic) then decline the expression; it
+ * returns the number of decimal literals.  vigen_expr_shortest_decimal: the
+ * literal with the fewest significant digits, a fresh string, or NULL when
+ * there is none; vigen_expr_longest_decimal_digits: the most significant
+ * digits of a literal (0 without one). */
+int vigen_expr_round_decimals(vigen_expr *e);
+int vigen_expr_decimal_count(const vigen_expr *e);
+char *vigen_expr_shortest_decimal(const vigen_expr *e);
+slong vigen_expr_longest_decimal_digits(const vigen_expr *e);
 const char *vigen_expr_text(const vigen_expr *e);   /* the text it was parsed from */
 
 /* Real evaluation; t may be NULL when the expression has no t.  Returns VIGEN_OK,

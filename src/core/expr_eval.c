@@ -21,10 +21,23 @@ static int domain_error(const expr_arb_ctx *c, const node *n, const char *what, 
 /* ------------------------------------------------------------------------ */
 /* Real evaluation                                                            */
 
+/* res += [0 +/- 10^unit / 2]: a rounded decimal literal */
+static void add_half_unit(arb_t res, const fmpz_t unit, slong prec)
+{
+    arb_t r;
+    arb_init(r);
+    arb_set_ui(r, 10);
+    arb_pow_fmpz(r, r, unit, prec);
+    arb_mul_2exp_si(r, r, -1);
+    arb_add_error(res, r);
+    arb_clear(r);
+}
+
 static void num_eval_arb(arb_t res, const node *n, slong prec)
 {
     if (n->q_exact) {
         arb_set_fmpq(res, n->q, prec);
+        if (n->rounded) add_half_unit(res, n->unit, prec);
         return;
     }
     /* m * 10^e with a huge |e|: round 10^|e| and multiply or divide once. */
@@ -43,6 +56,7 @@ static void num_eval_arb(arb_t res, const node *n, slong prec)
     }
     fmpz_clear(ae);
     arb_clear(p);
+    if (n->rounded) add_half_unit(res, n->unit, prec);
 }
 
 int expr_eval_arb_node(arb_t res, const node *n, const expr_arb_ctx *c)

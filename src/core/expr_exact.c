@@ -230,7 +230,7 @@ static int quad_node(expr_quad *res, const node *n, int allow_sqrt)
     int ok = 1;
     switch (n->kind) {
     case N_NUM:
-        if (!n->q_exact) return 0;
+        if (!n->q_exact || n->rounded) return 0;
         fmpq_set(res->a, n->q);
         fmpq_zero(res->b);
         fmpz_one(res->d);

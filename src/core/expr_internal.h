@@ -43,6 +43,11 @@ typedef struct node {
     fmpz_t m, e;
     fmpq_t q;
     int q_exact;
+    /* N_NUM written with a point or an exponent: unit = the exponent of its
+     * last digit; rounded: read as the ball of half that unit (tableau
+     * entries, vigen_expr_round_decimals) instead of exactly */
+    int decimal, rounded;
+    fmpz_t unit;
     /* N_POW: int_exp when the exponent is a constant exact integer k */
     int int_exp;
     fmpz_t k;

@@ -57,6 +57,7 @@ static node *node_new(int kind, size_t start, size_t end)
     fmpz_init(n->e);
     fmpq_init(n->q);
     fmpz_init(n->k);
+    fmpz_init(n->unit);
     return n;
 }
 
@@ -69,6 +70,7 @@ static void node_free(node *n)
     fmpz_clear(n->e);
     fmpq_clear(n->q);
     fmpz_clear(n->k);
+    fmpz_clear(n->unit);
     free(n);
 }
 
@@ -302,6 +304,9 @@ static void number_value(node *n, const char *s, size_t start, size_t end)
     }
     free(digits);
     fmpz_sub_si(n->e, n->e, frac);
+    n->decimal = memchr(s + start, '.', len) != NULL || memchr(s + start, 'e', len) != NULL ||
+                 memchr(s + start, 'E', len) != NULL;
+    fmpz_set(n->unit, n->e);
     if (fmpz_is_zero(n->m)) fmpz_zero(n->e);
 
     n->q_exact = fmpz_cmp_si(n->e, EXPR_MAX_FMPQ_EXP) <= 0 && fmpz_cmp_si(n->e, -EXPR_MAX_FMPQ_EXP) >= 0;

@@ -56,14 +56,10 @@ static char *product_text(const char *x, const char *y)
     return vigen_strdup_printf("(%s)*(%s)", x, y);
 }
 
-/* the value of an exact expression or decimal text at prec */
+/* the value of an entry text at prec, read as every tableau entry is */
 static int eval_text(arb_t res, const char *text, slong prec, vigen_error *err)
 {
-    vigen_expr *e = NULL;
-    int rc = vigen_expr_parse(&e, text, 0, err);
-    if (rc == VIGEN_OK) rc = vigen_expr_eval_arb(res, e, NULL, prec, err);
-    vigen_expr_free(e);
-    return rc;
+    return vigen_tableau_entry_eval(res, text, prec, err);
 }
 
 static char **texts_alloc(slong n)

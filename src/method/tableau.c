@@ -113,7 +113,29 @@ void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)
 int vigen_tableau_entry_eval(arb_t res, const char *text, slong prec, vigen_error *err)
 {
     if (vigen_decimal_parse_rounded(res, text, prec)) return VIGEN_OK;
-    return vigen_expr_eval_string(res, text, prec, err);
+    vigen_expr *e = NULL;
+    int rc = vigen_expr_parse(&e, text, 0, err);
+    if (rc != VIGEN_OK) {
+        arb_indeterminate(res);
+        return rc;
+    }
+    vigen_expr_round_decimals(e);
+    rc = vigen_expr_eval_arb(res, e, NULL, prec, err);
+    vigen_expr_free(e);
+    return rc;
+}
+
+int vigen_tableau_entry_is_rounded(const char *text)
+{
+    if (text == NULL) return 0;
+    if (vigen_decimal_is_rounded(text)) return 1;
+    vigen_expr *e = NULL;
+    vigen_error err;
+    vigen_error_init(&err);
+    int rounded = vigen_expr_parse(&e, text, 0, &err) == VIGEN_OK && vigen_expr_decimal_count(e) > 0;
+    vigen_expr_free(e);
+    vigen_error_clear(&err);
+    return rounded;
 }
 
 static int eval_texts(arb_ptr out, char **texts, slong n, slong prec, const char *key, vigen_error *err)

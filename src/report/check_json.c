@@ -90,6 +90,10 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         vigen_json_write_string(out, n->entry);
         fputs(", \"text\": ", out);
         vigen_json_write_string(out, n->text);
+        if (n->expression) {
+            fputs(", \"expression\": ", out);
+            vigen_json_write_string(out, n->expression);
+        }
         fprintf(out, ", \"significant_digits\": %ld, \"radius\": ", (long)n->digits);
         vigen_json_write_string(out, n->radius);
         fputs(", \"exact_value\": ", out);

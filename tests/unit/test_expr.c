@@ -989,8 +989,131 @@ static void test_function_table(void)
     acb_clear(tz); acb_clear(z); acb_clear(w);
 }
 
+/* ---- decimals read rounded (tableau entries) ---------------------------- */
+
+/* Parses text, reads its decimals rounded, evaluates at prec. */
+static int rounded_eval(arb_t res, const char *text, slong prec, int *ndec)
+{
+    vigen_error err;
+    vigen_expr *e = NULL;
+    vigen_error_init(&err);
+    int rc = vigen_expr_parse(&e, text, 0, &err);
+    if (rc == VIGEN_OK) {
+        *ndec = vigen_expr_round_decimals(e);
+        rc = vigen_expr_eval_arb(res, e, NULL, prec, &err);
+    }
+    vigen_expr_free(e);
+    vigen_error_clear(&err);
+    return rc;
+}
+
+/* 1 when the ball res contains lo and hi and is at most widen times as wide
+ * as hi - lo: the interval of the rounded value, and not much more */
+static int encloses_interval(const arb_t res, const arb_t lo, const arb_t hi, double widen)
+{
+    arb_t span;
+    arb_init(span);
+    arb_sub(span, hi, lo, 256);
+    arb_t w;
+    arb_init(w);
+    arb_set_d(w, widen);
+    arb_mul(span, span, w, 256);
+    arb_clear(w);
+    arf_t width;
+    arf_init(width);
+    arf_set_mag(width, arb_radref(res));
+    arf_mul_2exp_si(width, width, 1);
+    int ok = arb_contains(res, lo) && arb_contains(res, hi) && arf_cmp(width, arb_midref(span)) <= 0;
+    arf_clear(width);
+    arb_clear(span);
+    return ok;
+}
+
+static void test_rounded_decimals(void)
+{
+    slong prec = 256;
+    arb_t v, lo, hi, r3;
+    arb_init(v);
+    arb_init(lo);
+    arb_init(hi);
+    arb_init(r3);
+    int nd = -1;
+    /* "0.5*sqrt(3)": 0.5 stands for [0.45, 0.55], so the value for
+     * [0.45 sqrt 3, 0.55 sqrt 3], and nothing much wider */
+    CHECK(rounded_eval(v, "0.5*sqrt(3)", prec, &nd) == VIGEN_OK && nd == 1);
+    arb_sqrt_ui(r3, 3, prec);
+    arb_set_ui(lo, 45);
+    arb_div_ui(lo, lo, 100, prec);
+    arb_mul(lo, lo, r3, prec);
+    arb_set_ui(hi, 55);
+    arb_div_ui(hi, hi, 100, prec);
+    arb_mul(hi, hi, r3, prec);
+    CHECK_MSG(encloses_interval(v, lo, hi, 1.000001), "0.5*sqrt(3) rounded is not [0.45, 0.55] sqrt 3");
+    /* the unit is that of the last digit written: "0.500" is 0.5 +/- 0.0005 */
+    CHECK(rounded_eval(v, "1 - 0.500", prec, &nd) == VIGEN_OK && nd == 1);
+    arb_set_str(lo, "0.4995", prec);
+    arb_set_str(hi, "0.5005", prec);
+    CHECK(encloses_interval(v, lo, hi, 1.000001));
+    /* an exponent without a point is a decimal too: "25e-3" is 0.025 +/- 0.0005 */
+    CHECK(rounded_eval(v, "25e-3 + 1/4", prec, &nd) == VIGEN_OK && nd == 1);
+    arb_set_str(lo, "0.2745", prec);
+    arb_set_str(hi, "0.2755", prec);
+    CHECK(encloses_interval(v, lo, hi, 1.000001));
+    /* a written zero keeps its unit: "0.000" is 0 +/- 0.0005 */
+    CHECK(rounded_eval(v, "0.000 + 1", prec, &nd) == VIGEN_OK && nd == 1);
+    arb_set_str(lo, "0.9995", prec);
+    arb_set_str(hi, "1.0005", prec);
+    CHECK(encloses_interval(v, lo, hi, 1.000001));
+    /* integers and fractions stay exact */
+    CHECK(rounded_eval(v, "1/4 - 3/2", prec, &nd) == VIGEN_OK && nd == 0);
+    CHECK(arb_is_exact(v));
+    arb_set_si(lo, -5);
+    arb_div_ui(lo, lo, 4, prec);
+    CHECK(arb_equal(v, lo));
+    /* a decimal exponent is no longer an exact integer power: (-2)^2.0 needs
+     * a positive base, where (-2)^2 is 4 */
+    CHECK(rounded_eval(v, "(-2)^2.0", prec, &nd) != VIGEN_OK && nd == 1);
+    CHECK(rounded_eval(v, "(-2)^2", prec, &nd) == VIGEN_OK && nd == 0 && arb_equal_si(v, 4));
+
+    /* the exact conversions decline rounded decimals, and accept them unread */
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_expr *e = NULL;
+    fmpq_t a, b;
+    fmpz_t d;
+    fmpq_init(a);
+    fmpq_init(b);
+    fmpz_init(d);
+    CHECK(vigen_expr_parse(&e, "0.25 + sqrt(12)/2", 0, &err) == VIGEN_OK);
+    CHECK(vigen_expr_decimal_count(e) == 1);
+    CHECK(vigen_expr_to_quadratic(a, b, d, e) == 1 && fmpz_equal_si(d, 3));   /* 1/4 + sqrt(3) */
+    vigen_expr_round_decimals(e);
+    CHECK(vigen_expr_to_quadratic(a, b, d, e) == 0);
+    CHECK(vigen_expr_to_fmpq(a, e) == 0);
+    vigen_expr_free(e);
+    /* the shortest and the longest literal */
+    CHECK(vigen_expr_parse(&e, "0.1234567891 * 2 - 0.50 + 1e-3", 0, &err) == VIGEN_OK);
+    char *shortest = vigen_expr_shortest_decimal(e);
+    CHECK(shortest != NULL && strcmp(shortest, "1e-3") == 0);
+    free(shortest);
+    CHECK(vigen_expr_longest_decimal_digits(e) == 10);
+    vigen_expr_free(e);
+    CHECK(vigen_expr_parse(&e, "sqrt(3)/6", 0, &err) == VIGEN_OK);
+    CHECK(vigen_expr_shortest_decimal(e) == NULL && vigen_expr_longest_decimal_digits(e) == 0);
+    vigen_expr_free(e);
+    vigen_error_clear(&err);
+    fmpq_clear(a);
+    fmpq_clear(b);
+    fmpz_clear(d);
+    arb_clear(v);
+    arb_clear(lo);
+    arb_clear(hi);
+    arb_clear(r3);
+}
+
 int main(void)
 {
+    test_rounded_decimals();
     test_function_table();
     test_quadratic();
     test_latex();
