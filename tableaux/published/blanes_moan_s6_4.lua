@@ -2,145 +2,34 @@
 -- Blanes-Moan symmetric 6-stage fourth-order splitting method: drift a1, kick
 -- b1, drift a2, kick b2, drift a3, kick b3, drift a4, kick b3, drift a3, kick
 -- b2, drift a2, kick b1, drift a1 (flow of the kinetic part T with the a_i,
--- potential part V with the b_i; exchanging the roles gives another
--- fourth-order method). As a PRK tableau it has s = 12 stages (7 drifts and 6
--- kicks per step; s = drifts + kicks - 1).
+-- potential part V with the b_i). As a PRK tableau it has s = 12 stages (7
+-- drifts and 6 kicks per step; s = drifts + kicks - 1).
 -- S. Blanes, P. C. Moan, "Practical symplectic partitioned Runge-Kutta and
 -- Runge-Kutta-Nystrom methods", J. Comput. Appl. Math. 142 (2002) 313-330,
 -- Table 2 (PRK method S6 of order 4, six stages).
 --
--- Coefficients given in the paper only as rounded decimals: a1 =
--- 0.0792036964311957, a2 = 0.353172906049774, a3 = -0.0420650803577195, a4 =
--- 1 - 2(a1+a2+a3), b1 = 0.209515106613362, b2 = -0.143851773179818, b3 = 1/2
--- - (b1+b2) (cross-checked with the Principia and other public
--- implementations).
---
--- Splitting method for separable H = T(p) + V(q) written as a PRK method with
--- b~ = b: the drift q += a h T'(p) and kick p -= b h V'(q) substeps are cut
--- into stages (one stage per pair of overlapping drift/kick pieces), so that
--- A_ij = w_j when the drift of stage j precedes the kick of stage i and A~_ij
--- = w_j when the kick of stage j precedes the drift of stage i, b = b~ = w.
--- The tableau satisfies b_i at_ij + b_j a_ji = b_i b_j exactly (symplectic
--- for every H); for separable H it is explicit and one PRK step equals one
--- step of the splitting scheme.
---
--- Every plain decimal is a ball (half a unit in its last digit) that contains
--- the value implied by the coefficients above, including their own rounding
--- (each printed coefficient taken as +-1/2 unit in its last digit); entries
--- combining several coefficients therefore carry fewer digits.
+-- Written as published: the free coefficients as the paper prints them
+-- (rounded decimals, cross-checked with the Principia and other public
+-- implementations) and the dependent ones by the paper's formulas a4 =
+-- 1 - 2(a1+a2+a3), b3 = 1/2 - (b1+b2). Every decimal, bare or inside those
+-- formulas, is read as the ball of half a unit in its last digit, so the
+-- dependent coefficients carry the radii of the printed ones; vigen converts
+-- the substeps exactly to a PRK tableau with bt = b (substeps - 1 stages),
+-- symplectic for every H and, for separable H, explicit and equal to the
+-- splitting.
+local a1, a2, a3 = "0.0792036964311957", "0.353172906049774", "-0.0420650803577195"
+local b1, b2 = "0.209515106613362", "-0.143851773179818"
+local a4 = "1 - 2*(" .. a1 .. " + " .. a2 .. " + (" .. a3 .. "))"
+local b3 = "1/2 - (" .. b1 .. " + (" .. b2 .. "))"
 return {
   name = "blanes_moan_s6_4",
-  s = 12,
   order = 4,
   symplectic = true,
   source = "S. Blanes, P. C. Moan, \"Practical symplectic partitioned Runge-Kutta and Runge-Kutta-Nystrom methods\", J. Comput. Appl. Math. 142 (2002) 313-330, Table 2 (PRK method S6 of order 4, six stages)",
-  description = "Blanes-Moan symmetric 6-stage fourth-order splitting method: drift a1, kick b1, drift a2, kick b2, drift a3, kick b3, drift a4, kick b3, drift a3, kick b2, drift a2, kick b1, drift a1 (flow of the kinetic part T with the a_i, potential part V with the b_i; exchanging the roles gives another fourth-order method). As a PRK tableau it has s = 12 stages (7 drifts and 6 kicks per step; s = drifts + kicks - 1). Coefficients given in the paper only as rounded decimals: a1 = 0.0792036964311957, a2 = 0.353172906049774, a3 = -0.0420650803577195, a4 = 1 - 2(a1+a2+a3), b1 = 0.209515106613362, b2 = -0.143851773179818, b3 = 1/2 - (b1+b2) (cross-checked with the Principia and other public implementations).",
-  c = {
-    "0.0792036964311957", "0.0792036964311957", "0.43237660248097", "0.43237660248097",
-    "0.39031152212325", "0.39031152212325", "0.60968847787675", "0.60968847787675",
-    "0.56762339751903", "0.56762339751903", "0.9207963035688043", "0.9207963035688043",
-  },
-  A = {
-    { "0.0792036964311957", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0" },
-    { "0.0792036964311957", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0" },
-    { -- row 3
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "0", "0", "0", "0", "0", "0",
-      "0", "0", "0",
-    },
-    { -- row 4
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "0", "0", "0", "0", "0", "0",
-      "0", "0", "0",
-    },
-    { -- row 5
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0", "0", "0", "0", "0", "0", "0",
-    },
-    { -- row 6
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0", "0", "0", "0", "0", "0", "0",
-    },
-    { -- row 7
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0", "0", "0", "0", "0",
-    },
-    { -- row 8
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0", "0", "0", "0", "0",
-    },
-    { -- row 9
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0", "0", "0",
-    },
-    { -- row 10
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0", "0", "0",
-    },
-    { -- row 11
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0.22286149586761", "0.13031141018217", "0",
-    },
-    { -- row 12
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0.22286149586761", "0.13031141018217", "0",
-    },
-  },
-  b = {
-    "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-    "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-    "-0.3667132690474", "0.22286149586761", "0.13031141018217", "0.0792036964311957",
-  },
-  ct = {
-    "0", "0.209515106613362", "0.209515106613362", "0.06566333343354", "0.06566333343354", "1/2",
-    "1/2", "0.93433666656646", "0.93433666656646", "0.790484893386638", "0.790484893386638", "1",
-  },
-  At = {
-    { "0", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0" },
-    { "0.0792036964311957", "0.13031141018217", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0" },
-    { "0.0792036964311957", "0.13031141018217", "0", "0", "0", "0", "0", "0", "0", "0", "0", "0" },
-    { -- row 4
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474", "0", "0",
-      "0", "0", "0", "0", "0", "0",
-    },
-    { -- row 5
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474", "0", "0",
-      "0", "0", "0", "0", "0", "0",
-    },
-    { -- row 6
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0", "0", "0", "0", "0", "0",
-    },
-    { -- row 7
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0", "0", "0", "0", "0", "0",
-    },
-    { -- row 8
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897", "0", "0", "0",
-      "0",
-    },
-    { -- row 9
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897", "0", "0", "0",
-      "0",
-    },
-    { -- row 10
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0.22286149586761", "0", "0",
-    },
-    { -- row 11
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0.22286149586761", "0", "0",
-    },
-    { -- row 12
-      "0.0792036964311957", "0.13031141018217", "0.22286149586761", "-0.3667132690474",
-      "0.3246481886897", "0.10968847787675", "0.10968847787675", "0.3246481886897",
-      "-0.3667132690474", "0.22286149586761", "0.13031141018217", "0.0792036964311957",
-    },
+  description = "Blanes-Moan symmetric 6-stage fourth-order splitting method: drift a1, kick b1, drift a2, kick b2, drift a3, kick b3, drift a4, kick b3, drift a3, kick b2, drift a2, kick b1, drift a1 (flow of the kinetic part T with the a_i, potential part V with the b_i). Coefficients printed in the paper as rounded decimals: a1 = 0.0792036964311957, a2 = 0.353172906049774, a3 = -0.0420650803577195, a4 = 1 - 2(a1+a2+a3), b1 = 0.209515106613362, b2 = -0.143851773179818, b3 = 1/2 - (b1+b2).",
+  splitting = {
+    { "drift", a1 }, { "kick", b1 }, { "drift", a2 }, { "kick", b2 }, { "drift", a3 }, { "kick", b3 },
+    { "drift", a4 },
+    { "kick", b3 }, { "drift", a3 }, { "kick", b2 }, { "drift", a2 }, { "kick", b1 }, { "drift", a1 },
   },
 }
