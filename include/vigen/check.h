@@ -334,6 +334,8 @@ typedef struct {
 
     slong nnotes;
     vigen_check_note *notes;     /* short decimals that look exact */
+    char *reducible;             /* stages that are one stage, or that do nothing: the cause and
+                                    what to change (one sentence), or NULL */
 
     int exit_code;               /* 0 consistent, every claim holds (within the precision of the
                                     data counts) and (--against) no entry differs or is

@@ -196,6 +196,9 @@ void chk_cond_enclose(arb_t out, const ctx_t *cx, const ctx_t *mx, const cond *c
 
 /* notes.c: the precision the literals ask for, notes on short decimals */
 void chk_collect_notes(vigen_check_report *rep, const vigen_tableau *t);
+/* Stages that are one stage (equal rows of A and At) or that do nothing
+ * (weight 0, used by no stage): rep->reducible (notes.c). */
+void chk_collect_reducible(vigen_check_report *rep, const vigen_tableau *t);
 slong chk_adequate_prec(const vigen_tableau *t);
 
 /* checks.c: one round of every check of checks.def */

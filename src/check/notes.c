@@ -226,3 +226,74 @@ slong chk_adequate_prec(const vigen_tableau *t)
     return p < 128 ? 128 : p;
 }
 
+
+/* Two entry texts with the same exact value (or the same text). */
+static int same_entry(const char *x, const char *y)
+{
+    if (x == NULL || y == NULL) return 0;
+    if (strcmp(x, y) == 0) return 1;
+    arb_t a, b;
+    arb_init(a);
+    arb_init(b);
+    vigen_error err;
+    vigen_error_init(&err);
+    int same = vigen_tableau_entry_eval(a, x, 128, &err) == VIGEN_OK &&
+               vigen_tableau_entry_eval(b, y, 128, &err) == VIGEN_OK && arb_is_exact(a) && arb_equal(a, b);
+    vigen_error_clear(&err);
+    arb_clear(a);
+    arb_clear(b);
+    return same;
+}
+
+static int zero_entry(const char *x)
+{
+    arb_t a;
+    arb_init(a);
+    vigen_error err;
+    vigen_error_init(&err);
+    int zero = x != NULL && vigen_tableau_entry_eval(a, x, 128, &err) == VIGEN_OK && arb_is_zero(a);
+    vigen_error_clear(&err);
+    arb_clear(a);
+    return zero;
+}
+
+/* A reducible tableau computes with fewer stages than it has, which makes
+ * conditions fail or degenerate for reasons the tableau's author should see
+ * named: two stages with equal rows of A and At have equal stage values (for
+ * time-independent H; their c only place them in time), and a stage of
+ * weight 0 in both parts that no stage uses does nothing. */
+void chk_collect_reducible(vigen_check_report *rep, const vigen_tableau *t)
+{
+    free(rep->reducible);
+    rep->reducible = NULL;
+    if (!chk_has_texts(t)) return;
+    slong s = t->s;
+    char **At = t->has_At ? t->At_text : t->A_text;
+    char **bt = t->has_At && t->has_bt ? t->bt_text : t->b_text;
+    for (slong i = 0; i < s; i++)
+        for (slong j = i + 1; j < s; j++) {
+            int rows = 1;
+            for (slong k = 0; k < s && rows; k++)
+                rows = same_entry(t->A_text[i * s + k], t->A_text[j * s + k]) &&
+                       same_entry(At[i * s + k], At[j * s + k]);
+            if (!rows) continue;
+            int same_c = same_entry(t->c_text[i], t->c_text[j]);
+            rep->reducible = vigen_strdup_printf(
+                "stages %ld and %ld have equal rows of A%s, so equal stage values: they are one stage, and the "
+                "method is a %ld-stage one with weight b[%ld] + b[%ld]%s; merge them (or check the rows for "
+                "a typo)", (long)(i + 1), (long)(j + 1), t->has_At ? " and At" : "", (long)(s - 1), (long)(i + 1),
+                (long)(j + 1),
+                same_c ? "" : " (their c differ, which places one stage at two times: the row sums are the "
+                              "times of the stage values)");
+            return;
+        }
+    for (slong j = 0; j < s; j++) {
+        int idle = zero_entry(t->b_text[j]) && zero_entry(bt[j]);
+        for (slong i = 0; i < s && idle; i++) idle = zero_entry(t->A_text[i * s + j]) && zero_entry(At[i * s + j]);
+        if (!idle) continue;
+        rep->reducible = vigen_strdup_printf("stage %ld has weight 0 and no stage uses it (column %ld of A%s is 0): "
+                                             "it does nothing; remove it (the method is a %ld-stage one)",
+                                             (long)(j + 1), (long)(j + 1), t->has_At ? " and At" : "", (long)(s - 1));
+        return;
+    }
+}

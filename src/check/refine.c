@@ -126,6 +126,7 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     rep->rounded_entries = ex.any_rounded;
     rep->exact_entries = ex.any_exact;
     chk_collect_notes(rep, t);
+    chk_collect_reducible(rep, t);
     /* the precision at which the data's radii, not the arithmetic, make the
      * balls of conditions on rounded entries: only there is a ball too wide
      * for the rule of rounded data a verdict on the data */

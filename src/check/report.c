@@ -76,6 +76,8 @@ void chk_notes_clear(vigen_check_report *rep)
     free(rep->notes);
     rep->notes = NULL;
     rep->nnotes = 0;
+    free(rep->reducible);
+    rep->reducible = NULL;
 }
 
 void vigen_check_report_clear(vigen_check_report *rep)

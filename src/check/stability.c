@@ -293,10 +293,28 @@ int chk_stability(chk_round *rd, vigen_error *err)
         for (int k = 0; k < ncand; k++) snap_rational(cand[k], cx->ex->den, 4 * s + 8, prec);
     arb_ptr roots = _arb_vec_init(4 * (2 * s + 4));
     slong nroots = 0;
-    int ok = 1, unstable0 = 0;
+    int ok = 1, unstable0 = 0, area = 0;
     for (int k = 0; k < ncand && ok; k++) {
         int sign0 = 1;
+        /* 1 - det R exactly 0 for every h omega (a condition met with
+         * equality, never a sign change): the step preserves area on the
+         * oscillator although the tableau is not symplectic, e.g. a
+         * reducible tableau whose reduced method is symplectic (Lobatto IIIB
+         * alone, c = (0, 1), is the implicit midpoint rule with its stage
+         * written twice) */
+        if (cand[k] == J3 && arb_poly_length(J3) == 0) {
+            area = 1;
+            continue;
+        }
         ok = positive_roots(roots, &nroots, cand[k], &sign0, prec, &st->reason);
+        if (!ok && cand[k] == J3 && arb_poly_length(J3) > 0) {
+            int all_zero = 1;
+            for (slong i = 0; i < arb_poly_length(J3); i++) all_zero &= arb_contains_zero(J3->coeffs + i);
+            if (all_zero)
+                st->reason = "1 - det R may vanish for every h omega (the step may preserve area on the oscillator "
+                             "although the tableau is not symplectic), which balls cannot show: give the entries "
+                             "exactly (fractions, sqrt) to decide it";
+        }
         /* D's sign does not matter (it cancels in D^2 and in G/D, E/D with the
          * sign of G and E right of 0); the others must start positive */
         if (ok && sign0 < 0 && cand[k] != D) unstable0 = 1;
@@ -309,7 +327,9 @@ int chk_stability(chk_round *rd, vigen_error *err)
     } else if (nroots == 0) {
         st->status = VIGEN_CHECK_STAB_UNBOUNDED;
         st->reason = rk && symplectic ? "a symplectic RK method: |r(ix)| = 1, and det(I + x^2 A^2) has no positive root"
-                                      : "no positive root of the stability polynomials";
+                     : area ? "det R = 1 for every h omega (exactly) and |tr R| < 2: no positive root of the "
+                              "stability polynomials"
+                            : "no positive root of the stability polynomials";
     } else {
         slong first = 0;
         for (slong k = 1; k < nroots; k++)
@@ -321,7 +341,8 @@ int chk_stability(chk_round *rd, vigen_error *err)
         else {
             st->status = VIGEN_CHECK_STAB_BOUNDED;
             arb_sqrt(st->x, roots + first, prec);
-            st->reason = "the first sign change of a stability polynomial";
+            st->reason = area ? "det R = 1 for every h omega (exactly); the first sign change of 2 -+ tr R"
+                              : "the first sign change of a stability polynomial";
         }
     }
     _arb_vec_clear(roots, 4 * (2 * s + 4));

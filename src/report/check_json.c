@@ -103,6 +103,10 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         fputc('}', out);
     }
     fputs(rep->nnotes ? "\n ],\n" : "],\n", out);
+    fputs(" \"reducible\": ", out);
+    if (rep->reducible) vigen_json_write_string(out, rep->reducible);
+    else fputs("null", out);
+    fputs(",\n", out);
     static const char *const sect_keys[] = {"rowsum", "symplectic", "order", "simplifying", "against"};
     fputs(" \"holding\": {", out);
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {

@@ -172,6 +172,11 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         put_shown(rep->notes[k].message, out);
         fputc('\n', out);
     }
+    if (rep->reducible) {
+        fputs("  note: ", out);
+        put_shown(rep->reducible, out);
+        fputc('\n', out);
+    }
     if (rep->nnotes > 10)
         fprintf(out, "  note: ... and %ld more short decimals (all of them with --json)\n", (long)(rep->nnotes - 10));
 

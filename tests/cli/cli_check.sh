@@ -176,6 +176,26 @@ sed -e 's|"0.5 - sqrt(3)/6"|"1/2 - sqrt(3)/6"|' -e 's|"0.2500000000000000000"|"1
 run 0 "$work/g2_expr_exact.lua" --json
 json "d['order'] == 4 and d['order_status'] == 'exact' and d['notes'] == []"
 
+# Singular cases name their cause and what to change.  Lobatto IIIB alone
+# with its Lobatto nodes c = (0, 1) has equal rows of A: one stage written
+# twice, the implicit midpoint rule; on the oscillator det R = 1 for every
+# h omega, so no stability polynomial may be reported as vanishing: the
+# interval is unbounded, as the direct computation finds.
+run 1 "$data/lobatto_iiib_alone_2.lua" --json
+json "d['stability']['status'] == 'unbounded' and 'det R = 1' in d['stability']['reason']"
+json "d['reducible'].startswith('stages 1 and 2 have equal rows of A') and 'merge them' in d['reducible']"
+[ "$(python3 "$data/stability_direct.py" "$data/lobatto_iiib_alone_2.lua" 20)" = unbounded ] || fail "lobatto_iiib_alone_2: direct computation"
+run 1 "$data/lobatto_iiib_alone_2.lua"
+grep_out "note: stages 1 and 2 have equal rows of A, so equal stage values: they are one stage"
+# a stage of weight 0 that no stage uses is named, and the method is what
+# remains: explicit Euler, order 1, unstable for every h omega
+run 0 "$data/zero_weight_stage.lua" --json
+json "d['order'] == 1 and d['stability_interval'] == 0 and
+      d['reducible'].startswith('stage 2 has weight 0 and no stage uses it') and 'remove it' in d['reducible']"
+# none of the library's methods is reducible
+run 0 "$pub/gauss_2.lua" --json
+json "d['reducible'] is None"
+
 # Lagrange at 4 equispaced nodes is collocation: (c, A, b) has B(4) and C(4)
 # exactly, B(5) fails (the 3/8 rule gives sum b c^4 = 11/54, not 1/5), so its
 # order alone is 4 (see the spec).  At 34 digits that is what is found; at 2
