@@ -250,6 +250,26 @@ typedef struct {
     arb_t sumsq[VIGEN_TREE_MAX_ORDER + 1];   /* sum of e(t)^2 over the family's trees of each order */
 } vigen_check_error_constant;
 
+/* The principal error of a splitting or composition method in the Lyndon
+ * basis of the free Lie algebra on A (the generator of the drifts, T) and B
+ * (the kicks, V), the form of the splitting literature (lie.c): the method is
+ * exp(h (A + B) + h^(p+1) sum_w coef_w P(w) + ...), the substeps' Lie
+ * operators multiplied in the order the flows are applied, P(w) the
+ * standard bracketing of the Lyndon word w (A < B); p the order for
+ * separable H. */
+#define VIGEN_LIE_MAX_DEGREE 10
+#define VIGEN_LIE_MAX_DEGREE_TEXT "10"
+typedef struct {
+    int computed;
+    const char *why;             /* when not computed (static) */
+    int degree;                  /* p + 1 */
+    slong nterms;                /* Lyndon words of that length */
+    char **words;                /* "AAB" */
+    char **brackets;             /* "[A,[A,B]]" */
+    arb_ptr coef;
+    arb_t norm;                  /* the 2-norm of coef */
+} vigen_check_lie_error;
+
 /* The linear stability interval on q'' = -omega^2 q (stability.c). */
 enum { VIGEN_CHECK_STAB_NONE = 0, VIGEN_CHECK_STAB_BOUNDED = 1, VIGEN_CHECK_STAB_UNBOUNDED = 2,
        VIGEN_CHECK_STAB_UNDECIDED = 3 };
@@ -308,6 +328,7 @@ typedef struct {
     vigen_check_theorem theorem;
     vigen_check_error_constant error_constant[VIGEN_CHECK_EC_FAMILIES];
     vigen_check_stability stability;
+    vigen_check_lie_error lie_error;
     vigen_check_cost cost;
 
     int claim_order;             /* -1 when the file states none */

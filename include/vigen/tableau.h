@@ -45,6 +45,14 @@ typedef struct {
     int claim_order_sep;         /* order_separable = p: the order for H = T(p) + V(q); -1 absent */
     int claim_order_nys;         /* order_nystrom = p: the order for H = p^T M^-1 p / 2 + V(q); -1 absent */
     int generated_now;           /* 1: made by the generator in this run (from a spec), not read */
+
+    /* A splitting or composition file: its substeps in order of application
+     * (substep_drift[k]: 1 drift q <- q + coef h dT/dp, 0 kick p <- p - coef
+     * h dV/dq; coefficient texts as entries), when the method is known as
+     * one; nsubsteps = 0 otherwise. */
+    slong nsubsteps;
+    int *substep_drift;
+    char **substep_coef;
 } vigen_tableau;
 
 /* Allocates an s-stage tableau with all balls zero and no texts. */
@@ -53,6 +61,9 @@ void vigen_tableau_clear(vigen_tableau *t);
 /* dst (uninitialised on entry) becomes a deep copy of src: texts, balls and
  * metadata. */
 void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src);
+/* Replaces t's substeps by copies of drift[0..n-1] and coef[0..n-1] (n = 0:
+ * none). */
+void vigen_tableau_set_substeps(vigen_tableau *t, slong n, const int *drift, char *const *coef);
 
 /* Reads a tableau file (run once in a fresh sandbox).  Messages name the file
  * and the entry ("gauss2.lua: A[2][1]: ..."): missing fields, wrong sizes, Lua

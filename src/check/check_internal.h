@@ -199,6 +199,10 @@ void chk_collect_notes(vigen_check_report *rep, const vigen_tableau *t);
 /* Stages that are one stage (equal rows of A and At) or that do nothing
  * (weight 0, used by no stage): rep->reducible (notes.c). */
 void chk_collect_reducible(vigen_check_report *rep, const vigen_tableau *t);
+/* The principal error of t's substeps in the Lyndon basis at degree p + 1
+ * (lie.c); le->computed = 0 with le->why when it does not apply. */
+int chk_lie_error(vigen_check_lie_error *le, const vigen_tableau *t, int p, slong prec, vigen_error *err);
+void chk_lie_error_clear(vigen_check_lie_error *le);
 slong chk_adequate_prec(const vigen_tableau *t);
 
 /* checks.c: one round of every check of checks.def */

@@ -110,7 +110,6 @@ static int acyclic(const arb_mat_struct *A, const arb_mat_struct *At, slong s, i
 
 int chk_figures(chk_round *rd, vigen_error *err)
 {
-    (void)err;
     vigen_check_report *rep = rd->rep;
     const ctx_t *cx = rd->cx;
     slong s = cx->s;
@@ -126,5 +125,8 @@ int chk_figures(chk_round *rd, vigen_error *err)
     c->fsal = f1;
     c->explicit_separable = acyclic(cx->A, cx->At, s, 1);
     c->explicit_general = acyclic(cx->A, cx->At, s, 0);
-    return VIGEN_OK;
+    /* a splitting's principal error as the splitting literature writes it */
+    const vigen_check_level *lv = &rep->orders[VIGEN_CHECK_SEPARABLE].level;
+    int p = !lv->capped && !lv->undecided ? lv->value : 0;
+    return chk_lie_error(&rep->lie_error, rd->t, p, cx->prec, err);
 }

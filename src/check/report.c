@@ -57,6 +57,7 @@ void vigen_check_report_init(vigen_check_report *rep)
         for (int n = 0; n <= VIGEN_TREE_MAX_ORDER; n++) arb_init(rep->error_constant[f].sumsq[n]);
     }
     arb_init(rep->stability.x);
+    arb_init(rep->lie_error.norm);
     rep->claim_order = -1;
     rep->claim_symplectic = -1;
     rep->claim_order_family[0] = rep->claim_order_family[1] = -1;
@@ -98,6 +99,8 @@ void vigen_check_report_clear(vigen_check_report *rep)
         for (int n = 0; n <= VIGEN_TREE_MAX_ORDER; n++) arb_clear(rep->error_constant[f].sumsq[n]);
     }
     arb_clear(rep->stability.x);
+    chk_lie_error_clear(&rep->lie_error);
+    arb_clear(rep->lie_error.norm);
     free(rep->path);
     free(rep->name);
     flint_free(rep->rational_denominator);

@@ -178,6 +178,7 @@ int vigen_method_splitting_read(void **state, vigen_sandbox *sb, const char *pat
     vigen_sandbox_free(sb);
     if (rc == VIGEN_OK) {
         rc = splitting_tableau(&t, &sp, path, err);
+        if (rc == VIGEN_OK) vigen_tableau_set_substeps(&t, sp.n, sp.drift, sp.coef);
         vigen_splitting_clear(&sp);
     }
     if (rc == VIGEN_OK) {
@@ -306,6 +307,23 @@ static void compose(vigen_tableau *t, const vigen_tableau *u, const vigen_compos
             t->bt_text[l * s + j] = product_text(co->gamma[l], bt[j]);
         }
     t->has_At = t->has_ct = t->has_bt = 1;
+    /* a composition of a splitting is a splitting: the base's substeps with
+     * each step's fraction */
+    if (u->nsubsteps > 0) {
+        slong n = u->nsubsteps, N = m * n;
+        int *drift = malloc(sizeof(int) * (size_t)N);
+        char **coef = texts_alloc(N);
+        if (drift == NULL) abort();
+        for (slong l = 0; l < m; l++)
+            for (slong k = 0; k < n; k++) {
+                drift[l * n + k] = u->substep_drift[k];
+                coef[l * n + k] = product_text(co->gamma[l], u->substep_coef[k]);
+            }
+        vigen_tableau_set_substeps(t, N, drift, coef);
+        for (slong k = 0; k < N; k++) free(coef[k]);
+        free(coef);
+        free(drift);
+    }
 }
 
 int vigen_method_composition_tableau(vigen_tableau *t, void *state, slong digits, vigen_error *err)

@@ -63,6 +63,8 @@ void vigen_tableau_clear(vigen_tableau *t)
     free(t->basis);
     free(t->nodes);
     free(t->generator);
+    texts_free(t->substep_coef, t->nsubsteps);
+    free(t->substep_drift);
     memset(t, 0, sizeof(*t));
 }
 
@@ -75,6 +77,21 @@ static char **texts_copy(char *const *src, slong n)
 }
 
 static char *strdup_or_null(const char *s) { return s ? vigen_strdup(s) : NULL; }
+
+void vigen_tableau_set_substeps(vigen_tableau *t, slong n, const int *drift, char *const *coef)
+{
+    texts_free(t->substep_coef, t->nsubsteps);
+    free(t->substep_drift);
+    t->nsubsteps = 0;
+    t->substep_drift = NULL;
+    t->substep_coef = NULL;
+    if (n <= 0 || drift == NULL || coef == NULL) return;
+    t->substep_drift = malloc(sizeof(int) * (size_t)n);
+    if (t->substep_drift == NULL) abort();
+    memcpy(t->substep_drift, drift, sizeof(int) * (size_t)n);
+    t->substep_coef = texts_copy(coef, n);
+    t->nsubsteps = n;
+}
 
 void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)
 {
@@ -108,6 +125,7 @@ void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)
     dst->claim_order_sep = src->claim_order_sep;
     dst->claim_order_nys = src->claim_order_nys;
     dst->generated_now = src->generated_now;
+    vigen_tableau_set_substeps(dst, src->nsubsteps, src->substep_drift, src->substep_coef);
 }
 
 int vigen_tableau_entry_eval(arb_t res, const char *text, slong prec, vigen_error *err)

@@ -67,6 +67,18 @@ void vigen_report_figures_text(FILE *out, const vigen_check_report *rep)
             fprintf(out, "not computed: the order is not decided below the orders evaluated (%d; --max-order)\n",
                     rep->max_order);
     }
+    const vigen_check_lie_error *le = &rep->lie_error;
+    if (le->computed) {
+        fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A drifts, B kicks, in order), 2-norm ",
+                le->degree);
+        put_figure(out, le->norm);
+        fputc('\n', out);
+        for (slong k = 0; k < le->nterms; k++) {
+            fprintf(out, "  %-28s ", le->brackets[k]);
+            put_figure(out, le->coef + k);
+            fputc('\n', out);
+        }
+    }
     const vigen_check_stability *st = &rep->stability;
     fputs("stability     on q'' = -omega^2 q: ", out);
     if (st->status == VIGEN_CHECK_STAB_UNBOUNDED) fputs("stable for every h omega", out);
@@ -121,9 +133,26 @@ void vigen_report_figures_json(FILE *out, const vigen_check_report *rep)
         fprintf(out, ", \"ball\": \"%s\"}", b);
         free(b);
     }
+    const vigen_check_lie_error *le = &rep->lie_error;
+    fputs("},\n \"lie_error\": ", out);
+    if (!le->computed) fputs("null", out);
+    else {
+        fprintf(out, "{\"degree\": %d, \"norm\": ", le->degree);
+        json_number(out, le->norm);
+        fputs(", \"terms\": [", out);
+        for (slong k = 0; k < le->nterms; k++) {
+            fprintf(out, "%s{\"word\": \"%s\", \"bracket\": \"%s\", \"coefficient\": ", k ? ", " : "", le->words[k],
+                    le->brackets[k]);
+            json_number(out, le->coef + k);
+            char *b = vigen_ball_json_str(le->coef + k, 20);
+            fprintf(out, ", \"ball\": \"%s\"}", b);
+            free(b);
+        }
+        fputs("]}", out);
+    }
     const vigen_check_stability *st = &rep->stability;
     static const char *const words[] = {"none", "bounded", "unbounded", "undecided"};
-    fputs("},\n \"stability_interval\": ", out);
+    fputs(",\n \"stability_interval\": ", out);
     if (st->status == VIGEN_CHECK_STAB_BOUNDED) json_number(out, st->x);
     else fputs("null", out);
     fprintf(out, ", \"stability\": {\"status\": \"%s\"", words[st->status]);

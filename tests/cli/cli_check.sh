@@ -196,6 +196,40 @@ json "d['order'] == 1 and d['stability_interval'] == 0 and
 run 0 "$pub/gauss_2.lua" --json
 json "d['reducible'] is None"
 
+# The principal error of a splitting in the Lyndon basis (A drifts, B kicks,
+# Lie operators in order of application).  Published values: the symmetric
+# BCH formula for drift 1/2, kick 1, drift 1/2 gives -1/24 [A,[A,B]] +
+# 1/12 [[A,B],B] at h^3 (Yoshida, Phys. Lett. A 150 (1990); HLW GNI
+# sec. III.4), the kick-drift-kick step the same with A and B exchanged
+# ([B,[B,A]] = [[A,B],B]), and exp(hA) exp(hB) = exp(h(A + B) + h^2/2 [A,B]
+# + ...) for drift then kick (the BCH formula).
+lie() {   # lie FILE PYTHON-EXPRESSION-ON-{bracket: coefficient}
+  run 0 "$pub/$1.lua" --json
+  json "(lambda c: $2)({t['bracket']: t['coefficient'] for t in d['lie_error']['terms']})"
+}
+lie stormer_verlet_position "d['lie_error']['degree'] == 3 and abs(c['[A,[A,B]]'] + 1/24) < 1e-15 and abs(c['[[A,B],B]'] - 1/12) < 1e-15"
+lie stormer_verlet_velocity "abs(c['[A,[A,B]]'] - 1/12) < 1e-15 and abs(c['[[A,B],B]'] + 1/24) < 1e-15"
+lie symplectic_euler_q_first "d['lie_error']['degree'] == 2 and c == {'[A,B]': 0.5}"
+lie symplectic_euler_p_first "c == {'[A,B]': -0.5}"
+# higher orders against an independent expansion on random matrices
+# (tests/data/check/bch_direct.py: power series in h with matrix
+# coefficients, no free algebra), and a perturbed coefficient is caught
+x1="(1/(2-2**(1/3)))"
+Y4="k:$x1/2,d:$x1,k:1/2-$x1/2,d:1-2*$x1,k:1/2-$x1/2,d:$x1,k:$x1/2"
+"$vigen" check "$pub/yoshida_4.lua" --json >"$work/y4.json"
+python3 "$data/bch_direct.py" "$work/y4.json" "$Y4" >/dev/null || fail "yoshida_4: Lie-basis error against the direct expansion"
+python3 "$data/bch_direct.py" "$work/y4.json" "${Y4/d:1-2/d:1.000001-2}" >/dev/null && fail "bch_direct.py accepts a perturbed method"
+w1=-1.1776799841788710069464156809643157346392692526346
+w2=0.23557321335935813368479318297853460168646808210340
+w3=0.78451361047755726381949763386634987577682441745149
+Y6=""
+for w in $w3 $w2 $w1 "1-2*($w1+$w2+$w3)" $w1 $w2 $w3; do Y6="$Y6,d:($w)/2,k:($w),d:($w)/2"; done
+"$vigen" check "$pub/yoshida_6.lua" --json >"$work/y6.json"
+python3 "$data/bch_direct.py" "$work/y6.json" "${Y6#,}" >/dev/null || fail "yoshida_6 (a composition): Lie-basis error against the direct expansion"
+# not a splitting: no Lie-basis figure
+run 0 "$pub/gauss_2.lua" --json
+json "d['lie_error'] is None"
+
 # Lagrange at 4 equispaced nodes is collocation: (c, A, b) has B(4) and C(4)
 # exactly, B(5) fails (the 3/8 rule gives sum b c^4 = 11/54, not 1/5), so its
 # order alone is 4 (see the spec).  At 34 digits that is what is found; at 2

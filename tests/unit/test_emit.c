@@ -459,7 +459,7 @@ static void test_audit(void)
     /* symplectic tableaux, exact, with 50 digits, and with 6 digits (holding
      * only within the precision of the data): silence */
     const char *const good[] = { "tests/data/emit/gauss2.lua", "tests/data/emit/yoshida4.lua",
-                                 "tableaux/generated/gauss_legendre_s4.lua", "tableaux/published/yoshida_6.lua",
+                                 "tableaux/generated/gauss_legendre_s4.lua", "tests/data/published_prk/yoshida_6.lua",
                                  "tests/data/check/gauss2_6digits.lua" };
     for (size_t k = 0; k < sizeof good / sizeof good[0]; k++) {
         CHECK_MSG(audit(good[k], &failures) == 0 && failures == 0, "%s: audit warned: %s", good[k], audit_text.data);
@@ -545,7 +545,7 @@ static void test_inexact(void)
     vigen_strbuf_clear(&audit_text);
     vigen_strbuf_init(&audit_text);
     vigen_strbuf_append(&audit_text, "");
-    if (vigen_tableau_load(&t, "tableaux/published/blanes_moan_s6_4.lua", NULL, &err) == VIGEN_OK) {
+    if (vigen_tableau_load(&t, "tests/data/published_prk/blanes_moan_s6_4.lua", NULL, &err) == VIGEN_OK) {
         vigen_emit_options bo = { "bm", VIGEN_REAL_DOUBLE, "blanes_moan_s6_4.lua", 0, NULL, NULL, 0, 0 };
         CHECK(vigen_emit_render(&t, &bo, &h, &c, &id, &err) == VIGEN_E_INEXACT);
         m = err.message ? err.message : "";
