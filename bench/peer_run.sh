@@ -20,6 +20,7 @@ VIGEN=$(realpath "${1:?usage: peer_run.sh VIGEN [BUILD_DIR]}")
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 OUT=${2:-/tmp/vigen-bench-peer}
 SCALE=${PEER_STEPS_SCALE:-1}
+rm -rf "$OUT/obj"
 mkdir -p "$OUT/obj"
 
 if [ ! -f /usr/include/boost/numeric/odeint.hpp ]; then
