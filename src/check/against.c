@@ -56,7 +56,9 @@ static void compare_entry(vigen_check_report *rep, ctx_t *cx, const char *mat, s
     arb_set(p->value, x);
     arb_set(p->expected, y);
     slong digits = vigen_ball_digits_to_separate(x, y, cx->prec);
-    char *a = vigen_ball_str(x, digits), *b = vigen_ball_str(y, digits);
+    /* a difference: digits enough that the two sides differ in the text */
+    char *a = st == FAILS ? vigen_ball_str_apart(x, y, cx->prec) : vigen_ball_str(x, digits);
+    char *b = st == FAILS ? vigen_ball_str_apart(y, x, cx->prec) : vigen_ball_str(y, digits);
     char *name = j >= 0 ? vigen_strdup_printf("%s[%ld][%ld]", mat, (long)(i + 1), (long)(j + 1))
                         : vigen_strdup_printf("%s[%ld]", mat, (long)(i + 1));
     if (st == FAILS) {

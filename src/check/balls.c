@@ -10,20 +10,26 @@
 /* Digits enough to see the difference between x and y (8 .. 45). */
 slong vigen_ball_digits_to_separate(const arb_t x, const arb_t y, slong prec)
 {
+    /* from the binary exponents of the midpoints, so that a relative
+     * difference far below the range of doubles is measured too */
     arb_t d;
     arb_init(d);
     arb_sub(d, x, y, prec);
-    double dd = fabs(arf_get_d(arb_midref(d), ARF_RND_NEAR));
-    double yy = fabs(arf_get_d(arb_midref(y), ARF_RND_NEAR));
-    double xx = fabs(arf_get_d(arb_midref(x), ARF_RND_NEAR));
+    const arf_struct *dm = arb_midref(d), *xm = arb_midref(x), *ym = arb_midref(y);
+    slong n = 8;
+    if (!arf_is_zero(dm) && arf_is_finite(dm) && arf_is_finite(xm) && arf_is_finite(ym) &&
+        !(arf_is_zero(xm) && arf_is_zero(ym))) {
+        slong ed = arf_abs_bound_lt_2exp_si(dm);
+        slong ex = arf_is_zero(xm) ? WORD_MIN : arf_abs_bound_lt_2exp_si(xm);
+        slong ey = arf_is_zero(ym) ? WORD_MIN : arf_abs_bound_lt_2exp_si(ym);
+        slong es = ex > ey ? ex : ey;
+        if (es > ed + 16) {
+            double digits = ceil((double)(es - ed) * 0.30102999566398120) + 4;
+            n = digits > VIGEN_BALL_MAX_SEPARATING_DIGITS ? VIGEN_BALL_MAX_SEPARATING_DIGITS : (slong)digits;
+        }
+    }
     arb_clear(d);
-    double scale = yy > xx ? yy : xx;
-    if (scale == 0.0 || dd == 0.0 || !isfinite(scale) || !isfinite(dd)) return 8;
-    double rel = dd / scale;
-    if (rel >= 1e-5) return 8;
-    if (rel < 1e-40) return 45;
-    slong n = (slong)ceil(-log10(rel)) + 4;
-    return n > 45 ? 45 : n;
+    return n;
 }
 
 /* d significant digits of x, rounded down (up = 0) or up (up = 1). */
@@ -48,12 +54,13 @@ static char *arf_text(const arf_t x, slong d, int up)
 
 /* The interval [lo, hi] containing x, rounded outward, with enough digits to
  * show its width (3 .. digits). */
-static char *interval_str(const arb_t x, slong digits)
+static char *interval_str(const arb_t x, slong digits, slong min_digits)
 {
     slong acc = arb_rel_accuracy_bits(x);
     slong d = acc > 0 ? (slong)(acc * 0.30103) + 2 : 3;
     if (d < 3) d = 3;
     if (d > digits && digits >= 3) d = digits;
+    if (min_digits > d) d = min_digits;
     arf_t lo, hi;
     arf_init(lo);
     arf_init(hi);
@@ -75,11 +82,21 @@ char *vigen_ball_str(const arb_t x, slong digits)
 {
     if (!arb_is_finite(x)) return vigen_strdup("[not finite]");
     int narrow = arb_is_exact(x) || arb_rel_accuracy_bits(x) >= (slong)(digits * 3.33);
-    if (!narrow) return interval_str(x, digits);
+    if (!narrow) return interval_str(x, digits, 0);
     char *s = arb_get_str(x, digits, ARB_STR_NO_RADIUS);
     char *r = vigen_strdup(s);
     flint_free(s);
     return r;
+}
+
+char *vigen_ball_str_apart(const arb_t x, const arb_t y, slong prec)
+{
+    slong digits = vigen_ball_digits_to_separate(x, y, prec);
+    if (!arb_is_finite(x)) return vigen_strdup("[not finite]");
+    int narrow = arb_is_exact(x) || arb_rel_accuracy_bits(x) >= (slong)(digits * 3.33);
+    /* bounds with more digits only where the two values are close */
+    if (!narrow) return interval_str(x, digits, digits > 8 ? digits : 0);
+    return vigen_ball_str(x, digits);
 }
 
 /* For JSON: arb's "[mid +/- rad]" with the midpoint always shown. */

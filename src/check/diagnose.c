@@ -357,7 +357,10 @@ int chk_diagnosis(chk_round *r, vigen_error *err)
         chk_cond_parts(p->value, p->expected, cx, c, NULL);
         if (c->type == C_SYMP) arb_set(p->value, c->r);   /* the enclosure decided on (expected 0) */
         slong digits = vigen_ball_digits_to_separate(p->value, p->expected, cx->prec);
-        char *v = vigen_ball_str(p->value, digits), *e = vigen_ball_str(p->expected, digits);
+        /* a failure: digits enough that the two sides differ in the text */
+        char *v = p->undecided ? vigen_ball_str(p->value, digits) : vigen_ball_str_apart(p->value, p->expected, cx->prec);
+        char *e = p->undecided ? vigen_ball_str(p->expected, digits)
+                               : vigen_ball_str_apart(p->expected, p->value, cx->prec);
         char *d = vigen_ball_str(c->r, 6);
         const char *verdict = !p->undecided ? ""
                               : c->too_short ? "undecided, the data are too short to decide: "

@@ -33,12 +33,6 @@ static void print_level_words(FILE *out, const vigen_check_level *L)
                 L->too_short ? ": the data are too short to decide" : " at this precision");
 }
 
-static void print_ball(FILE *out, const arb_t x, slong digits)
-{
-    char *s = vigen_ball_str(x, digits);
-    fputs(s, out);
-    free(s);
-}
 
 static void print_bad_tree(FILE *out, const vigen_check_orders *o, const char *indent)
 {
@@ -49,14 +43,14 @@ static void print_bad_tree(FILE *out, const vigen_check_orders *o, const char *i
     if (tree == NULL) return;
     fprintf(out, "%s%s tree: %s (order %d): sum bhat_i Phi_i = ", indent, undecided ? "first undecided" : "first failing",
             tree, L->value + 1);
-    slong digits = vigen_ball_digits_to_separate(undecided ? o->undecided_value : o->fail_value,
-                                      undecided ? o->undecided_expected : o->fail_expected, 128);
-    print_ball(out, undecided ? o->undecided_value : o->fail_value, digits);
-    fputs(", 1/gamma = ", out);
-    print_ball(out, undecided ? o->undecided_expected : o->fail_expected, digits);
+    arb_srcptr dv = undecided ? o->undecided_value : o->fail_value, de = undecided ? o->undecided_expected : o->fail_expected;
+    /* as many digits as tell the two sides apart in the text */
+    char *vs = vigen_ball_str_apart(dv, de, 128), *es = vigen_ball_str_apart(de, dv, 128);
+    fprintf(out, "%s, 1/gamma = %s", vs, es);
+    free(vs);
+    free(es);
     arb_t d;
     arb_init(d);
-    arb_srcptr dv = undecided ? o->undecided_value : o->fail_value, de = undecided ? o->undecided_expected : o->fail_expected;
     arb_sub(d, dv, de, FLINT_MAX(arb_bits(dv), arb_bits(de)) + 64);
     char *ds = vigen_ball_str(d, 6);
     fprintf(out, " (defect %s%s)\n", ds[0] == '[' ? "in " : "", ds);

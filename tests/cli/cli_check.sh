@@ -230,6 +230,22 @@ python3 "$data/bch_direct.py" "$work/y6.json" "${Y6#,}" >/dev/null || fail "yosh
 run 0 "$pub/gauss_2.lua" --json
 json "d['lie_error'] is None"
 
+# Every numeric difference is printed with digits enough that its two sides
+# differ in the text: b = 1/2 +- 10^-60 moves sum b c by -10^-60/sqrt(3)
+# from 1/2 (order 2 fails by 5.77e-61), which 45 digits cannot show.
+cat >"$work/g2_b_1e60.lua" <<'LUA'
+return { name = "g2_b_1e60", s = 2,
+  c  = { "1/2 - sqrt(3)/6", "1/2 + sqrt(3)/6" },
+  A  = { { "1/4", "1/4 - sqrt(3)/6" }, { "1/4 + sqrt(3)/6", "1/4" } },
+  b  = { "1/2 + 1/10^60", "1/2 - 1/10^60" } }
+LUA
+run 0 "$work/g2_b_1e60.lua"
+line=$(grep -m1 "first failing tree: b\[b\]" "$work/stdout")
+lhs=$(sed 's/.*sum bhat_i Phi_i = \([^,]*\), 1\/gamma = .*/\1/' <<<"$line")
+rhs=$(sed 's/.*1\/gamma = \([^ ]*\) .*/\1/' <<<"$line")
+[ -n "$lhs" ] && [ "$lhs" != "$rhs" ] && python3 -c "import sys; from fractions import Fraction as F; sys.exit(0 if F('$lhs') < F('$rhs') else 1)" \
+  || fail "the two sides of the failing condition print alike: $line"
+
 # Lagrange at 4 equispaced nodes is collocation: (c, A, b) has B(4) and C(4)
 # exactly, B(5) fails (the 3/8 rule gives sum b c^4 = 11/54, not 1/5), so its
 # order alone is 4 (see the spec).  At 34 digits that is what is found; at 2
