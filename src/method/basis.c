@@ -330,13 +330,14 @@ typedef struct {
 /* The budget of integrand evaluations of one certified quadrature: ample for
  * the analytic basis functions it is meant for (a few thousand suffice at
  * hundreds of digits); a function it cannot certify within it is reported.
- * Fuzzing builds use a smaller budget, so that the fuzzer spends its time on
- * new inputs rather than on one integrand that will not converge: the code
- * path is the same. */
+ * Fuzzing builds use a smaller budget (and Gauss-Legendre rules of at most 64
+ * points, whose nodes cost much at high precision), so that the fuzzer
+ * spends its time on new inputs rather than on one integrand that will not
+ * converge: the code path is the same. */
 #ifdef FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION
-enum { QUADRATURE_EVALS_PER_BIT = 8, QUADRATURE_EVALS_BASE = 2000 };
+enum { QUADRATURE_EVALS_PER_BIT = 8, QUADRATURE_EVALS_BASE = 2000, QUADRATURE_DEG_LIMIT = 64 };
 #else
-enum { QUADRATURE_EVALS_PER_BIT = 200, QUADRATURE_EVALS_BASE = 100000 };
+enum { QUADRATURE_EVALS_PER_BIT = 200, QUADRATURE_EVALS_BASE = 100000, QUADRATURE_DEG_LIMIT = 0 /* arb's default */ };
 #endif
 
 /* acb_calc_integrate integrand: order 1 asks for a holomorphy check. */
@@ -413,6 +414,7 @@ int vigen_basis_integral(arb_t res, vigen_basis *B, slong i, const arb_t x, slon
         acb_calc_integrate_opt_t opt;
         acb_calc_integrate_opt_init(opt);
         opt->eval_limit = QUADRATURE_EVALS_PER_BIT * prec + QUADRATURE_EVALS_BASE;
+        if (QUADRATURE_DEG_LIMIT > 0) opt->deg_limit = QUADRATURE_DEG_LIMIT;   /* the Gauss-Legendre degree */
         int status = acb_calc_integrate(r, integrand, &ctx, a, b, prec, tol, opt, prec);
         int rc = VIGEN_OK;
         if (ctx.failed) {

@@ -105,6 +105,14 @@ cat >"$work/hostile_num_real_power.lua" <<'LUA'
 return { name = "hostile_num_real_power", nodes = gauss_legendre(2), basis = { "-t", "t^111783.5" } }
 LUA
 limit=5 run real-power 0 generate "$work/hostile_num_real_power.lua" -q -o - -- "hostile_num_real_power"
+# a product of powers of t, t^62652 * (-t) (found by the spec fuzz harness:
+# not a power as written, so quadrature at rising precision up to the cap,
+# 10 s): a product of powers of one linear base has the closed form of the
+# combined power, and the ill-conditioned method is refused at once
+cat >"$work/hostile_num_power_product.lua" <<'LUA'
+return { name = "hostile_num_power_product", nodes = gauss_legendre(3), basis = { "---0-t", "t^62652*---t", "55" } }
+LUA
+limit=5 run power-product 3 generate "$work/hostile_num_power_product.lua" -q -o out.lua -- "is not certified" "the cap"
 # 100,000 nodes (FLINT aborted allocating the matrices)
 run many-nodes 2 generate "$specs/hostile_num_many_nodes.lua" -o out.lua -- \
   "hostile_num_many_nodes.lua" "nodes has 100000 entries" "at most 256"

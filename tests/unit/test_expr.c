@@ -665,8 +665,9 @@ static void test_closed_form_integrals(void)
         "-(cos(3*pi*t - 1) * 2)", "sin(pi*(t - 1/2))", "exp(2*t + log(3))",
         "(t/3 - 1)^2000", "2*(1/2 + 5*t)^1500",      /* powers too high to expand into polynomials */
         "(t + 1)^(1/3)", "3*(2*t + 1/2)^(5/2)", "(1 + t)^(-2)",   /* real powers of a positive base */
+        "t^1500*t", "t^700*(-t)^3", "(2*t + 1)^(5/2)*(4*t + 2)", "(t + 1)^(1/3)*(t + 1)^2",   /* products of powers of one base */
     };
-    static const char *const outside[] = {"(t - 1)^(1/2)", "(t - 1/5)^(1/3)", "t^(-1)", "t^(-3/2)", "t*cos(pi*t)", "cos(t^2)", "sin(pi*t)^2", "1/(1 + t)", "cos(0*t + 1) * t * exp(t)"};
+    static const char *const outside[] = {"(t - 1)^(1/2)", "(t - 1/5)^(1/3)", "t^(-1)", "t^(-3/2)", "t*cos(pi*t)", "t*(t + 1)^(1/2)", "(t + 1)^(1/2)*(t - 1)^(1/2)", "cos(t^2)", "sin(pi*t)^2", "1/(1 + t)", "cos(0*t + 1) * t * exp(t)"};
     slong prec = 256;
     arb_t x, closed;
     acb_t a, b, quad;
