@@ -119,8 +119,11 @@ typedef struct {
     const arb_mat_struct *M[2];
     arb_srcptr bh[2];
     slong nstore;
-    arb_ptr W, prod, ones, y, phi;
-    double *Wa, *proda, *ya, *phia, *Ma[2], *bha[2];
+    arb_ptr *W;                  /* per stored tree u of order <= P - 2: w(u) = M_u Phi(u), or NULL
+                                    until needed (orders_w) */
+    double *Wa;                  /* the same on |entries|, once W[u] is set */
+    arb_ptr prod, ones, y, phi, wphi;
+    double *proda, *ya, *phia, *wphia, *Ma[2], *bha[2];
     ulong *sigma;                /* per stored tree: its symmetry */
     unsigned char *nys;          /* per stored tree: a Nystrom tree */
     arb_t val[2], r, inv, e;
@@ -132,6 +135,42 @@ typedef struct {
 } orders_state;
 
 enum { PASS_ALL, PASS_REPRESENTATIVES, PASS_REST };
+
+/* Sets w(id) = M_c ph, ph = Phi of its forest, and its size from pha (NULL:
+ * the empty forest). */
+static void orders_w_set(orders_state *st, slong id, int c, arb_srcptr ph, const double *pha)
+{
+    slong s = st->s;
+    st->W[id] = _arb_vec_init(s);
+    for (slong i = 0; i < s; i++) {
+        arb_dot(st->W[id] + i, NULL, 0, arb_mat_entry(st->M[c], i, 0), 1, ph, 1, s, st->prec);
+        st->Wa[id * s + i] = 0;
+        for (slong j = 0; j < s; j++) st->Wa[id * s + i] += st->Ma[c][i * s + j] * (pha ? pha[j] : 1);
+    }
+}
+
+/* w(u), computed from its children when the walk over its order did not
+ * (a tree whose conditions were all skipped); scratch row by order. */
+static arb_srcptr orders_w(orders_state *st, slong u)
+{
+    if (st->W[u] != NULL) return st->W[u];
+    slong s = st->s;
+    const vigen_tree *t = st->ts.trees + u;
+    const slong *ch = vigen_treeset_children(&st->ts, u);
+    arb_ptr ph = st->wphi + t->order * s;
+    double *pha = st->wphia + t->order * s;
+    _arb_vec_set(ph, st->ones, s);
+    for (slong i = 0; i < s; i++) pha[i] = 1;
+    for (int q = 0; q < t->nchildren; q++) {
+        arb_srcptr w = orders_w(st, ch[q]);
+        for (slong i = 0; i < s; i++) {
+            arb_mul(ph + i, ph + i, w + i, st->prec);
+            pha[i] *= st->Wa[ch[q] * s + i];
+        }
+    }
+    orders_w_set(st, u, t->colour, ph, pha);
+    return st->W[u];
+}
 
 /* The smallest family that holds a tree: the lower-order conditions its
  * rerootings rest on are those of this family. */
@@ -187,8 +226,9 @@ static void orders_condition(orders_state *st, int n, int c, const slong *ids, i
 /* One walk over the trees of order n (the forests of order n - 1, each with
  * a black and a white root): PASS_ALL decides every condition;
  * PASS_REPRESENTATIVES those the reduction keeps, counting the others into
- * st->skipped; PASS_REST those it skipped.  The vectors W of the trees of
- * order n are computed by the first two. */
+ * st->skipped; PASS_REST those it skipped.  The vectors w of the trees of
+ * order n whose forest product is computed are kept; the others are computed
+ * when needed. */
 static void orders_walk(orders_state *st, int n, int pass)
 {
     slong s = st->s, prec = st->prec;
@@ -216,8 +256,7 @@ static void orders_walk(orders_state *st, int n, int pass)
                     st->skipped[c == VIGEN_TREE_BLACK ? VIGEN_CHECK_A_ALONE : VIGEN_CHECK_AT_ALONE]++;
             }
         }
-        int store = pass != PASS_REST && n <= P - 2;
-        if (!eval[0] && !eval[1] && !store) continue;
+        if (!eval[0] && !eval[1]) continue;
         double vabs[2] = {0, 0};
         if (k == 1 && ts->trees[ids[0]].order > P - 2) {
             /* a single child u of order P - 1: y . Phi(u), y = bhat^T M_u */
@@ -225,8 +264,10 @@ static void orders_walk(orders_state *st, int n, int pass)
             const vigen_tree *tu = ts->trees + u;
             const slong *ch = vigen_treeset_children(ts, u);
             _arb_vec_set(st->phi, st->ones, s);
-            for (int q = 0; q < tu->nchildren; q++)
-                for (slong i = 0; i < s; i++) arb_mul(st->phi + i, st->phi + i, st->W + ch[q] * s + i, prec);
+            for (int q = 0; q < tu->nchildren; q++) {
+                arb_srcptr w = orders_w(st, ch[q]);
+                for (slong i = 0; i < s; i++) arb_mul(st->phi + i, st->phi + i, w + i, prec);
+            }
             for (int c = 0; c < 2; c++)
                 if (eval[c]) arb_dot(st->val[c], NULL, 0, st->y + (2 * c + tu->colour) * s, 1, st->phi, 1, s, prec);
             for (slong i = 0; i < s; i++) {
@@ -236,7 +277,7 @@ static void orders_walk(orders_state *st, int n, int pass)
             }
         } else {
             for (int d = valid; d < k; d++) {
-                arb_srcptr wd = st->W + ids[d] * s;
+                arb_srcptr wd = orders_w(st, ids[d]);
                 if (d == 0) _arb_vec_set(st->prod, wd, s);
                 else
                     for (slong i = 0; i < s; i++) arb_mul(st->prod + d * s + i, st->prod + (d - 1) * s + i, wd + i, prec);
@@ -250,17 +291,12 @@ static void orders_walk(orders_state *st, int n, int pass)
                 if (eval[c]) arb_dot(st->val[c], NULL, 0, st->bh[c], 1, ph, 1, s, prec);
             for (slong i = 0; i < s; i++)
                 for (int c = 0; c < 2; c++) vabs[c] += st->bha[c][i] * (pha ? pha[i] : 1);
-            if (store)
+            if (n <= P - 2)
                 for (int c = 0; c < 2; c++) {
                     slong id = ts->start[n] + 2 * it.index + c;
-                    for (slong i = 0; i < s; i++) {
-                        arb_dot(st->W + id * s + i, NULL, 0, arb_mat_entry(st->M[c], i, 0), 1, ph, 1, s, prec);
-                        st->Wa[id * s + i] = 0;
-                        for (slong j = 0; j < s; j++) st->Wa[id * s + i] += st->Ma[c][i * s + j] * (pha ? pha[j] : 1);
-                    }
+                    if (st->W[id] == NULL) orders_w_set(st, id, c, ph, pha);
                 }
         }
-        if (!eval[0] && !eval[1]) continue;
         ulong gamma = vigen_forest_tree_gamma(ts, ids, k);
         arb_one(st->inv);
         arb_div_ui(st->inv, st->inv, gamma, prec);
@@ -299,8 +335,12 @@ static void orders_complete(orders_state *st, int n)
 
 static void orders_state_clear(orders_state *st)
 {
-    slong nw = (st->nstore > 0 ? st->nstore : 1) * st->s;
+    for (slong u = 0; u < st->nstore; u++)
+        if (st->W[u] != NULL) _arb_vec_clear(st->W[u], st->s);
+    flint_free(st->W);
     flint_free(st->Wa);
+    flint_free(st->wphia);
+    _arb_vec_clear(st->wphi, (st->P + 1) * st->s);
     flint_free(st->proda);
     flint_free(st->ya);
     flint_free(st->phia);
@@ -314,7 +354,6 @@ static void orders_state_clear(orders_state *st)
     arb_clear(st->r);
     arb_clear(st->inv);
     arb_clear(st->e);
-    _arb_vec_clear(st->W, nw);
     _arb_vec_clear(st->prod, st->P * st->s);
     _arb_vec_clear(st->ones, st->s);
     _arb_vec_clear(st->y, 4 * st->s);
@@ -341,7 +380,9 @@ static int orders_state_init(orders_state *st, chk_round *rd, vigen_error *err)
     st->bh[1] = cx->bt;
     st->nstore = P >= 3 ? st->ts.start[P - 1] : 0;
     slong nw = (st->nstore > 0 ? st->nstore : 1) * s;
-    st->W = _arb_vec_init(nw);
+    st->W = flint_calloc((size_t)(st->nstore > 0 ? st->nstore : 1), sizeof(arb_ptr));
+    st->wphi = _arb_vec_init((P + 1) * s);
+    st->wphia = flint_calloc((size_t)((P + 1) * s), sizeof(double));
     st->prod = _arb_vec_init(P * s);
     st->ones = _arb_vec_init(s);
     st->y = _arb_vec_init(4 * s);
