@@ -11,8 +11,10 @@
  *    weights, for Lobatto IIIA-IIIB s = 3 (Hairer, Wanner II, Tables IV.5.7
  *    and IV.5.9; symplectic, GNI Thm VI.4.6) and for the midpoint rule taken
  *    three times with step 1/3 (a symplectic RK method: a composition of
- *    symplectic maps), and its failure for RK4 (not symplectic); the density
- *    identity 1/gamma(u o v) + 1/gamma(v o u) = 1/(gamma(u) gamma(v));
+ *    symplectic maps); it fails for RK4 and for Lobatto IIIA used for both
+ *    parts (not symplectic), and for roots of one colour on Lobatto
+ *    IIIA-IIIB (IIIA alone is not symplectic); the density identity
+ *    1/gamma(u o v) + 1/gamma(v o u) = 1/(gamma(u) gamma(v));
  *  - the classes of rerootings, computed here by brute force on every tree
  *    up to order 8 (every vertex of the free tree as root, the component of
  *    allowed edges): each class keeps one tree, or two when its two
@@ -198,14 +200,14 @@ static void test_identity(void)
 static int cmp_str(const void *a, const void *b) { return strcmp(*(char *const *)a, *(char *const *)b); }
 
 /* canonical string of the branch at x away from `from` in an unrooted tree */
-static char *branch_str(int n, const int adj[][C_MAX], const int *deg, const int *colour, int x, int from)
+static char *branch_str(int adj[][C_MAX], const int *deg, const int *colour, int x, int from)
 {
     char *kids[C_MAX];
     int k = 0;
     size_t len = 4;
     for (int e = 0; e < deg[x]; e++)
         if (adj[x][e] != from) {
-            kids[k] = branch_str(n, adj, deg, colour, adj[x][e], x);
+            kids[k] = branch_str(adj, deg, colour, adj[x][e], x);
             len += strlen(kids[k++]) + 1;
         }
     qsort(kids, (size_t)k, sizeof(char *), cmp_str);
@@ -222,7 +224,7 @@ static char *branch_str(int n, const int adj[][C_MAX], const int *deg, const int
     return s;
 }
 
-static int branch_size(const int adj[][C_MAX], const int *deg, int x, int from)
+static int branch_size(int adj[][C_MAX], const int *deg, int x, int from)
 {
     int m = 1;
     for (int e = 0; e < deg[x]; e++)
@@ -315,7 +317,7 @@ static void test_classes(int mono)
             kmax[x] = 0;
             heavy_id[x] = -1;
             for (int e = 0; e < deg[x]; e++) {
-                char *b = branch_str(n, adj, deg, colour, adj[x][e], x);
+                char *b = branch_str(adj, deg, colour, adj[x][e], x);
                 ids[k++] = lookup(tab, ts.n, b);
                 free(b);
                 int sz = branch_size(adj, deg, adj[x][e], x);
@@ -332,7 +334,7 @@ static void test_classes(int mono)
             int ok = 0;
             for (int e = 0; e < deg[x]; e++) {
                 int y = adj[x][e];
-                char *b = branch_str(n, adj, deg, colour, y, x);
+                char *b = branch_str(adj, deg, colour, y, x);
                 int heavy = lookup(tab, ts.n, b) == heavy_id[x];
                 free(b);
                 if (heavy && red.edge[colour[x]][colour[y]] && 2 * branch_size(adj, deg, y, x) > n && kmax[y] < kmax[x])
