@@ -156,6 +156,10 @@ typedef struct {
     char *fail_tree, *undecided_tree;
     arb_t fail_value, fail_expected;            /* sum bhat_i Phi_i(t) and 1/gamma(t) */
     arb_t undecided_value, undecided_expected;
+    /* Of hold: the conditions not evaluated because they follow from the
+     * evaluated ones by symplecticity (docs/analysis.md, "One condition per
+     * class of rerooted trees"); count - inferred were evaluated. */
+    slong inferred[VIGEN_TREE_MAX_ORDER + 1];
 } vigen_check_orders;
 
 /* Sections of the report, for the statistics of holding conditions. */

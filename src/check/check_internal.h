@@ -209,4 +209,19 @@ slong chk_adequate_prec(const vigen_tableau *t);
 int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,
                   const exactness *ex_against, int P, vigen_error *err);
 
+/* reduction.c: order conditions that follow from others by symplecticity.
+ * For trees u, v whose roots are joined by an edge of the kind edge[colour of
+ * u's root][colour of v's root] allows, u o v (v grafted onto u's root) and
+ * v o u satisfy Phi(u o v) + Phi(v o u) = Phi(u) Phi(v), as 1/gamma does:
+ * when the conditions of lower order hold, the two residuals are opposite.
+ * A tree is skipped when its root has a child v of order > n/2 across such
+ * an edge; following skips ends at an evaluated tree of the same class. */
+typedef struct {
+    int on;                      /* some edge allows rerooting */
+    int edge[2][2];              /* [root colour][child colour] */
+    int within_data;             /* the symplecticity used holds within the precision of the data */
+} chk_reduction;
+void chk_reduction_init(chk_reduction *red, const vigen_check_report *rep, const ctx_t *cx);
+int chk_reduction_skips(const chk_reduction *red, const vigen_treeset *ts, int n, int colour, const slong *ids, int k);
+
 #endif

@@ -145,9 +145,10 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         json_bad_tree(out, o, rep->prec);
         fputs(", \"per_order\": [", out);
         for (int n = 1; n <= o->evaluated_to; n++)
-            fprintf(out, "%s{\"order\": %d, \"conditions\": %ld, \"hold\": %ld, \"fail\": %ld, \"undecided\": %ld}",
+            fprintf(out, "%s{\"order\": %d, \"conditions\": %ld, \"hold\": %ld, \"fail\": %ld, \"undecided\": %ld, "
+                         "\"evaluated\": %ld, \"from_symplecticity\": %ld}",
                     n > 1 ? ", " : "", n, (long)o->count[n], (long)o->hold[n], (long)o->fail[n],
-                    (long)o->undecided[n]);
+                    (long)o->undecided[n], (long)(o->count[n] - o->inferred[n]), (long)o->inferred[n]);
         fputs("]}", out);
     }
     fputs("},\n \"simplifying\": {", out);

@@ -228,6 +228,15 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "  (orders %d..%d not evaluated: every family already fails)\n", g->evaluated_to + 1,
                 rep->max_order);
     fputs("  (x/y: conditions holding / conditions of that family)\n", out);
+    long total = 0, inferred = 0;
+    for (int n = 1; n <= g->evaluated_to; n++) {
+        total += (long)g->count[n];
+        inferred += (long)g->inferred[n];
+    }
+    if (inferred > 0)
+        fprintf(out, "  (%ld of the %ld conditions follow from the %ld evaluated by symplecticity: a tree and its "
+                     "rerooting have opposite residuals; counted as holding%s)\n",
+                inferred, total, total - inferred, rep->symplectic_within_data ? " within the precision of the data" : "");
 
     for (int f = 1; f < VIGEN_CHECK_FAMILIES; f++) {
         const vigen_check_orders *o = &rep->orders[f];
