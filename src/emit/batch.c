@@ -153,6 +153,7 @@ void vigen_emit_batch_code(vigen_slots *S, const prk_coefs *K, const char *name)
      * stage and v */
     vigen_slots_textf(S, "BATCH_NARRAYS", "%ld", 8 + (X->mode != EMIT_EXPLICIT_NONE ? X->nx : 4 * (long)K->s + 1));
     implicit_blocks(S, K, name);
+    vigen_emit_sub_batch(S, K, name);
     vigen_slot *xp = vigen_slots_lines(S, "BATCH_X_POINTERS");
     vigen_slot *sw = vigen_slots_lines(S, "BATCH_FSAL_SWAPS");
     vigen_slot *ops = vigen_slots_lines(S, "BATCH_OPS"), *mops = vigen_slots_lines(S, "BATCH_MECH_OPS");
