@@ -127,42 +127,9 @@ typedef struct {
     const char *N, *R, *SFX;
 } sub_target;
 
-static void loop_open(vigen_slot *L, const sub_target *T)
-{
-    if (T->batch) {
-        vigen_slot_line(L, "for (size_t c = 0; c < n; c++)");
-        vigen_slot_line(L, "    for (size_t j = 0; j < W; j++) {");
-        vigen_slot_line(L, "        const size_t k = c * W + j;");
-    } else {
-        vigen_slot_line(L, "for (size_t k = 0; k < n; k++) {");
-    }
-}
-
-static void loop_close(vigen_slot *L, const sub_target *T) { vigen_slot_line(L, T->batch ? "    }" : "}"); }
-
-/* One substep on component k of x ("q" or "p") by d: compensated or not,
- * the start value kept in xs on its first write, finiteness folded in on
- * its last. */
-static void update(vigen_slot *L, const sub_target *T, const char *x, const char *d, int first, int last)
-{
-    const char *in = T->batch ? "        " : "    ";
-    if (first) {
-        vigen_slot_line(L, "%s{", in);
-        vigen_slot_line(L, "%s    const %s x = %s[k];", in, T->R, x);
-        vigen_slot_line(L, "%s    %ss[k] = x;", in, x);
-        vigen_slot_line(L, "%s    %s[k] = kahan ? vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]) : x + %s;", in, x, T->SFX, d,
-                        x, x, d);
-        vigen_slot_line(L, "%s}", in);
-    } else {
-        vigen_slot_line(L, "%s%s[k] = kahan ? vigen_twosum_next%s(%s[k], %s, c%s[k], &c%s[k]) : %s[k] + %s;", in, x,
-                        T->SFX, x, d, x, x, x, d);
-    }
-    if (last && T->batch) vigen_slot_line(L, "%snfl[j] = %s_nf_add(nfl[j], %s[k]);", in, T->N, x);
-    else if (last) vigen_slot_line(L, "%snf = %s_nf_add(nf, %s[k]);", in, T->N, x);
-}
-
-/* The force of the kick at substep k into dst. */
-static void force(vigen_slot *L, const sub_target *T, const sub_coefs *U, slong k, const char *dst, const char *ind)
+/* The force of the kick at substep k, at the positions qa, into dst. */
+static void force(vigen_slot *L, const sub_target *T, const sub_coefs *U, slong k, const char *qa, const char *dst,
+                  const char *ind)
 {
     const char *tm = U->time[k] == XTIME_T0 ? "t0" : U->time[k] == XTIME_T1 ? "t1" : NULL;
     char *tc = NULL;
@@ -174,16 +141,35 @@ static void force(vigen_slot *L, const sub_target *T, const sub_coefs *U, slong 
         tm = tc;
     }
     if (T->batch) {
-        vigen_slot_line(L, "%s%s_bforce(b, %s, q, %s);", ind, T->N, tm, dst);
+        vigen_slot_line(L, "%s%s_bforce(b, %s, %s, %s);", ind, T->N, tm, qa, dst);
         vigen_slot_line(L, "%sb->stats.dHdq_evals += W;", ind);
     } else {
-        vigen_slot_line(L, "%s%s_force(w, %s, q, %s);", ind, T->N, tm, dst);
+        vigen_slot_line(L, "%s%s_force(w, %s, %s, %s);", ind, T->N, tm, qa, dst);
         vigen_slot_line(L, "%sw->stats.dHdq_evals++;", ind);
     }
     free(tc);
 }
 
-/* The step: h times each coefficient, then the passes. */
+/* The final value of component k of x ("q" or "p"): its increment d over
+ * the step added to the start value, compensated or not, the start value
+ * kept in xs, finiteness folded in. */
+static void commit(vigen_slot *L, const sub_target *T, const char *in, const char *x, const char *d)
+{
+    vigen_slot_line(L, "%sconst %s x%s = %s[k];", in, T->R, x, x);
+    vigen_slot_line(L, "%s%ss[k] = x%s;", in, x, x);
+    vigen_slot_line(L, "%s%s[k] = kahan ? vigen_twosum_next%s(x%s, %s, c%s0[k], &c%s[k]) : x%s + %s;", in, x, T->SFX, x,
+                    d, x, x, x, d);
+    if (T->batch) vigen_slot_line(L, "%snfl[j] = %s_nf_add(nfl[j], %s[k]);", in, T->N, x);
+    else vigen_slot_line(L, "%snf = %s_nf_add(nf, %s[k]);", in, T->N, x);
+}
+
+/* The step.  Each component's increments over the step, dq and dp, are
+ * summed in plain arithmetic (they are O(h)) in Dq and Dp between passes;
+ * the positions a force needs before the last drift are q + dq in Qt.  The
+ * last substep of each kind adds the whole increment to the start value,
+ * compensated (the update of q and p that the compensation is for: small
+ * increments into a large value, over many steps), and writes the user's
+ * array: q and p are written once per step. */
 static void sub_lines(vigen_slot *L, const sub_target *T, const sub_coefs *U)
 {
     const slong m = U->m;
@@ -200,47 +186,76 @@ static void sub_lines(vigen_slot *L, const sub_target *T, const sub_coefs *U)
             lastp = k;
         }
     }
-    const char *im = T->batch ? "imw[k] * p[k]" : "(unit ? p[k] : im[k] * p[k])";
+    /* scratch arrays, only those this step uses */
+    const int need_dq = firstq != lastq, need_dp = firstp != lastp;
+    const char *scratch = T->batch ? "b->sub" : "w->fdwork";
+    const char *len = T->batch ? "nw" : "n";
+    if (need_dq) vigen_slot_line(L, "%s *restrict const Dq = %s;", T->R, scratch);
+    if (need_dp) vigen_slot_line(L, "%s *restrict const Dp = %s + %s;", T->R, scratch, len);
+    if (need_dq) vigen_slot_line(L, "%s *restrict const Qt = %s + 2 * %s;", T->R, scratch, len);
+    const char *in = T->batch ? "        " : "    ";
     for (slong k = 0; k < m; k++) {
-        char d[64];
-        if (U->drift[k]) {
-            /* a leading drift has a pass of its own; the others join the
-             * pass of the kick before them */
-            if (k > 0) continue;
-            snprintf(d, sizeof d, "h%ld * %s", (long)k + 1, im);
-            loop_open(L, T);
-            update(L, T, "q", d, k == firstq, k == lastq);
-            loop_close(L, T);
-            continue;
-        }
-        /* the force: the cached one of the last step (first same as last),
-         * or a fresh one; with first same as last every later kick uses F1 */
+        char d[96], v[64];
+        if (U->drift[k] && k > 0) continue;   /* in the pass of the kick before it */
         const char *f = U->fsal && k > 0 ? "F1" : "F0";
-        if (U->fsal && k == 0 && T->batch) {
-            vigen_slot_line(L, "if (b->nstale == 0) {");
-            vigen_slot_line(L, "    b->stats.fsal_reuses += W;");
-            vigen_slot_line(L, "} else {");
-            vigen_slot_line(L, "    double *const fx = b->nstale < W ? b->ft : F0;");
-            force(L, T, U, k, "fx", "    ");
-            vigen_slot_line(L, "    if (fx != F0) %s_batch_merge(b, fx, F0);", T->N);
-            vigen_slot_line(L, "}");
-        } else if (U->fsal && k == 0) {
-            vigen_slot_line(L, "if (w->fsal) {");
-            vigen_slot_line(L, "    w->stats.fsal_reuses++;");
-            vigen_slot_line(L, "} else {");
-            force(L, T, U, k, "F0", "    ");
-            vigen_slot_line(L, "}");
+        if (!U->drift[k]) {
+            /* the force at the positions after the drifts before k: the
+             * final q once the last drift is done, else Qt (or q itself
+             * before any drift) */
+            const char *qa = k == 0 || lastq < k ? "q" : "Qt";
+            if (U->fsal && k == 0 && T->batch) {
+                vigen_slot_line(L, "if (b->nstale == 0) {");
+                vigen_slot_line(L, "    b->stats.fsal_reuses += W;");
+                vigen_slot_line(L, "} else {");
+                vigen_slot_line(L, "    double *const fx = b->nstale < W ? b->ft : F0;");
+                force(L, T, U, k, qa, "fx", "    ");
+                vigen_slot_line(L, "    if (fx != F0) %s_batch_merge(b, fx, F0);", T->N);
+                vigen_slot_line(L, "}");
+            } else if (U->fsal && k == 0) {
+                vigen_slot_line(L, "if (w->fsal) {");
+                vigen_slot_line(L, "    w->stats.fsal_reuses++;");
+                vigen_slot_line(L, "} else {");
+                force(L, T, U, k, qa, "F0", "    ");
+                vigen_slot_line(L, "}");
+            } else {
+                force(L, T, U, k, qa, f, "");
+            }
+        }
+        if (T->batch) {
+            vigen_slot_line(L, "for (size_t c = 0; c < n; c++)");
+            vigen_slot_line(L, "    for (size_t j = 0; j < W; j++) {");
+            vigen_slot_line(L, "        const size_t k = c * W + j;");
         } else {
-            force(L, T, U, k, f, "");
+            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) {");
         }
-        snprintf(d, sizeof d, "h%ld * %s[k]", (long)k + 1, f);
-        loop_open(L, T);
-        update(L, T, "p", d, k == firstp, k == lastp);
-        if (k + 1 < m) {
-            snprintf(d, sizeof d, "h%ld * %s", (long)k + 2, im);
-            update(L, T, "q", d, k + 1 == firstq, k + 1 == lastq);
+        const char *pv = "p[k]";   /* the momentum the drift uses */
+        if (!U->drift[k]) {
+            if (k == firstp) snprintf(d, sizeof d, "h%ld * %s[k]", (long)k + 1, f);
+            else snprintf(d, sizeof d, "Dp[k] + h%ld * %s[k]", (long)k + 1, f);
+            vigen_slot_line(L, "%sconst %s dp = %s;", in, T->R, d);
+            if (k == lastp) {
+                commit(L, T, in, "p", "dp");
+            } else {
+                vigen_slot_line(L, "%sDp[k] = dp;", in);
+                if (k + 1 < m) vigen_slot_line(L, "%sconst %s pt = p[k] + dp;", in, T->R);
+                pv = "pt";
+            }
         }
-        loop_close(L, T);
+        const slong j = U->drift[k] ? k : k + 1;   /* the drift of this pass */
+        if (j < m) {
+            if (T->batch) snprintf(v, sizeof v, "imw[k] * %s", pv);
+            else snprintf(v, sizeof v, "(unit ? %s : im[k] * %s)", pv, pv);
+            if (j == firstq) snprintf(d, sizeof d, "h%ld * %s", (long)j + 1, v);
+            else snprintf(d, sizeof d, "Dq[k] + h%ld * %s", (long)j + 1, v);
+            vigen_slot_line(L, "%sconst %s dq = %s;", in, T->R, d);
+            if (j == lastq) {
+                commit(L, T, in, "q", "dq");
+            } else {
+                vigen_slot_line(L, "%sDq[k] = dq;", in);
+                vigen_slot_line(L, "%sQt[k] = q[k] + dq;", in);
+            }
+        }
+        vigen_slot_line(L, T->batch ? "    }" : "}");
     }
 }
 
