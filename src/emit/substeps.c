@@ -1,6 +1,6 @@
 /* substeps.c — the PRK variant's explicit step of a mechanical problem for
  * a tableau that comes from a splitting or composition file: the substeps
- * applied in place, in order.
+ * applied in order.
  *
  * The tableau keeps its substeps (vigen_tableau.substep_*): drifts
  * q <- q + a h M^-1 p and kicks p <- p + b h f(t, q).  Consecutive substeps
@@ -15,14 +15,15 @@
  * explicit step.  A step that starts and ends with a kick at t0 and t1
  * reuses the last force of one step as the first of the next.
  *
- * Compensation: each component of q and p is updated with the runtime's
- * vigen_twosum_next, its compensation carried through the substeps and
- * from step to step (the first write of a step reads the workspace's
- * compensation, the others the step's own, which the step's end takes over
- * when the new state is finite).  Finiteness is checked on the last write
- * of each component only: a non-finite value in q or p is never made finite
- * again by later substeps (x + d stays NaN or infinite), and a non-finite
- * force makes p so at its kick.
+ * Compensation: the increments of each component over the step are summed
+ * in plain arithmetic (they are O(h), so their rounding is far below an
+ * ulp of q or p) and added to q and p once, by the last substep of each
+ * kind, with the runtime's vigen_twosum_next and the compensation carried
+ * from step to step (read from the workspace's, written to the step's own,
+ * which the step's end takes over when the new state is finite), as the
+ * PRK paths add h sum b_i F_i.  Finiteness is checked at those writes
+ * only: a non-finite force or position makes the increments non-finite for
+ * good (d + x stays NaN or infinite).
  *
  * The same lines are written for the scalar stepper (loops over n) and for
  * the batched one (loops over n components times W trajectories, the same
