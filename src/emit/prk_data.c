@@ -109,6 +109,7 @@ int vigen_emit_prk_round(prk_coefs *K, emit_ctx *E)
     /* the substeps, when the step is explicit for separable H (and so for
      * a mechanical problem); their force buffers are work arrays 0 and 1 */
     if (rc == VIGEN_OK && K->X.mode != EMIT_EXPLICIT_NONE) rc = vigen_emit_sub_round(&K->U, E);
+    if (rc == VIGEN_OK && K->U.m > 0 && K->X.nx < (K->U.fsal ? 2 : 1)) vigen_emit_sub_clear(&K->U);
     return rc;
 }
 

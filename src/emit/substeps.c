@@ -244,7 +244,7 @@ static void sub_lines(vigen_slot *L, const sub_target *T, const sub_coefs *U)
         }
         const slong j = U->drift[k] ? k : k + 1;   /* the drift of this pass */
         if (j < m) {
-            if (T->batch) snprintf(v, sizeof v, "imw[k] * %s", pv);
+            if (T->batch) snprintf(v, sizeof v, "(imw[k] * %s)", pv);
             else snprintf(v, sizeof v, "(unit ? %s : im[k] * %s)", pv, pv);
             if (j == firstq) snprintf(d, sizeof d, "h%ld * %s", (long)j + 1, v);
             else snprintf(d, sizeof d, "Dq[k] + h%ld * %s", (long)j + 1, v);
