@@ -150,9 +150,11 @@ void vigen_emit_batch_code(vigen_slots *S, const prk_coefs *K, const char *name)
     const emit_explicit *X = &K->X;
     /* arrays of n W doubles: cq, cp, cqn, cpn, qs, ps, imw, ft, and the work
      * arrays of the explicit step or, for the implicit one, Q, G, Go, FT per
-     * stage and v */
-    vigen_slots_textf(S, "BATCH_NARRAYS", "%ld", 8 + (X->mode != EMIT_EXPLICIT_NONE ? X->nx : 4 * (long)K->s + 1));
+     * stage and v; 3 for the substeps of a splitting */
+    vigen_slots_textf(S, "BATCH_NARRAYS", "%ld",
+                      8 + (X->mode != EMIT_EXPLICIT_NONE ? X->nx : 4 * (long)K->s + 1) + (K->U.m > 0 ? 3 : 0));
     implicit_blocks(S, K, name);
+    vigen_emit_sub_batch(S, K, name);
     vigen_slot *xp = vigen_slots_lines(S, "BATCH_X_POINTERS");
     vigen_slot *sw = vigen_slots_lines(S, "BATCH_FSAL_SWAPS");
     vigen_slot *ops = vigen_slots_lines(S, "BATCH_OPS"), *mops = vigen_slots_lines(S, "BATCH_MECH_OPS");

@@ -19,12 +19,25 @@ typedef struct {
                         the force at the step's start joins the extrapolation */
 } nys_coefs;
 
+/* The substeps of a splitting or composition tableau (substeps.c), merged
+ * and rounded: m = 0 when the tableau has none (or only one kind). */
+typedef struct {
+    slong m;
+    int *drift;      /* 1 drift q += coef h M^-1 p, 0 kick p += coef h f */
+    char **coef;     /* literals, never an exact zero */
+    int *time;       /* kicks: XTIME_T0, XTIME_T1 or XTIME_C at stamp */
+    char **stamp;    /* kicks at XTIME_C: the literal c of t0 + c h */
+    int fsal;        /* starts and ends with a kick, at t0 and t1 */
+    long nforce;     /* force evaluations per step */
+} sub_coefs;
+
 typedef struct {
     slong s;
     char **c, **b, **bt, **a, **at, **inv;
     int lagrange;
     emit_explicit X;
     nys_coefs Y;
+    sub_coefs U;
 } prk_coefs;
 
 int vigen_emit_prk_round(prk_coefs *K, emit_ctx *E);
@@ -36,6 +49,13 @@ void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, i
 int vigen_emit_nys_round(nys_coefs *Y, emit_ctx *E);
 void vigen_emit_nys_clear(nys_coefs *Y, slong s);
 void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *name, int real);
+/* substeps.c: rounds K->U (after the explicit plan), clears it, writes the
+ * scalar step's slots (SUBSTEPS, SUB_*) and the batched one's
+ * (BATCH_SUB_OPS). */
+int vigen_emit_sub_round(sub_coefs *U, emit_ctx *E);
+void vigen_emit_sub_clear(sub_coefs *U);
+void vigen_emit_sub_code(vigen_slots *S, const prk_coefs *K, const char *name, int real);
+void vigen_emit_sub_batch(vigen_slots *S, const prk_coefs *K, const char *name);
 /* prk_code.c helpers shared with nystrom.c */
 char *vigen_emit_times(const char *coef, const char *x);
 char *vigen_emit_lin(char *const *coefs, slong n, const char *pre, const char *post);

@@ -38,6 +38,7 @@ void vigen_emit_prk_clear(prk_coefs *K)
     strv_free(K->inv, s * s);
     vigen_emit_explicit_clear(&K->X);
     vigen_emit_nys_clear(&K->Y, s);
+    vigen_emit_sub_clear(&K->U);
     memset(K, 0, sizeof *K);
 }
 
@@ -65,8 +66,8 @@ static int round_mat(char **out, emit_ctx *E, const arb_mat_t m, int part)
 }
 
 /* The order of the roundings is the order of the messages: c, b, bt, A, At,
- * the extrapolation weights, the explicit structure, then the Nystrom
- * coefficients. */
+ * the extrapolation weights, the explicit structure, the Nystrom
+ * coefficients, then the substeps. */
 int vigen_emit_prk_round(prk_coefs *K, emit_ctx *E)
 {
     slong s = E->s;
@@ -105,6 +106,10 @@ int vigen_emit_prk_round(prk_coefs *K, emit_ctx *E)
     }
     if (rc == VIGEN_OK) rc = vigen_emit_plan(&K->X, E);
     if (rc == VIGEN_OK) rc = vigen_emit_nys_round(&K->Y, E);
+    /* the substeps, when the step is explicit for separable H (and so for
+     * a mechanical problem); their force buffers are work arrays 0 and 1 */
+    if (rc == VIGEN_OK && K->X.mode != EMIT_EXPLICIT_NONE) rc = vigen_emit_sub_round(&K->U, E);
+    if (rc == VIGEN_OK && K->U.m > 0 && K->X.nx < (K->U.fsal ? 2 : 1)) vigen_emit_sub_clear(&K->U);
     return rc;
 }
 
@@ -204,6 +209,7 @@ int vigen_emit_prk_slots(vigen_slots *S, emit_ctx *E, const vigen_emit_options *
         vigen_emit_prk_texts(S, E, opt, ident);
         vigen_emit_prk_code(S, &K, ident, opt->real);
         vigen_emit_nys_code(S, &K, ident, opt->real);
+        vigen_emit_sub_code(S, &K, ident, opt->real);
         vigen_slots_flag(S, "STATIC_DIM", opt->dim > 0);
         vigen_slots_textf(S, "DIM", "%zu", opt->dim);
         if (opt->batch) vigen_emit_batch_code(S, &K, ident);

@@ -29,6 +29,8 @@
  *     scalar stepper (its compensation and cached force dropped);
  *   - t + h not finite for one trajectory: VIGEN_EINVAL for it only; h not
  *     finite or a NULL array: VIGEN_EINVAL, nothing changed;
+ *   - with unequal masses (M^-1 = diag(1, 0.75)) the explicit batches
+ *     still give the scalar bits, trajectory by trajectory;
  *   - the implicit batch refuses a general H and the Newton solver (NULL);
  *     --batch with another real type is refused with a message. */
 #include <math.h>
@@ -282,6 +284,41 @@ static void check_args(const stepper *S)
     CHECK(S->balloc_mech(&mb, 0, NULL) == NULL);
 }
 
+/* Unequal masses (M^-1 = diag(1, 0.75)): the batch multiplies by M^-1 in
+ * every drift, the scalar stepper too (its copy for M = I is not taken), and
+ * every trajectory still has the scalar bits. */
+static void check_masses(const stepper *S, int kahan)
+{
+    static const double im[2] = { 1, 0.75 };
+    const double h = 2 * PI / NSTEPS;
+    vigen_solver_options opt;
+    vigen_solver_options_default(&opt);
+    opt.kahan = kahan;
+    double t[W], q[2 * W], p[2 * W], ta[W], qa[2 * W], pa[2 * W];
+    int status[W];
+    initial_aos(ta, qa, pa);
+    memcpy(t, ta, sizeof t);
+    to_soa(q, qa);
+    to_soa(p, pa);
+    vigen_mechanical_batch mb = { .dim = 2, .force = kep_force_b, .inv_mass = im };
+    void *b = S->balloc_mech(&mb, W, &opt);
+    CHECK(b != NULL);
+    if (b == NULL) return;
+    for (int j = 0; j < W; j++) status[j] = VIGEN_SUCCESS;
+    for (int k = 0; k < NSTEPS; k++) S->bstep(b, t, q, p, h, status);
+    S->bfree(b);
+    for (int j = 0; j < W; j++) {
+        vigen_mechanical m = { .dim = 2, .force = kep_force, .inv_mass = im };
+        void *w = S->alloc_mech(&m, &opt);
+        int st = VIGEN_SUCCESS;
+        for (int k = 0; k < NSTEPS && st == VIGEN_SUCCESS; k++) st = S->type->step(w, ta + j, qa + 2 * j, pa + 2 * j, h);
+        S->type->free(w);
+        CHECK_MSG(st == status[j] && memcmp(&t[j], &ta[j], sizeof(double)) == 0 && lane_equal(q, qa, j) &&
+                      lane_equal(p, pa, j), "%s, unequal masses, kahan %d: trajectory %d: batch q %.17g %.17g, "
+                  "scalar q %.17g %.17g", S->name, kahan, j, q[j], q[W + j], qa[2 * j], qa[2 * j + 1]);
+    }
+}
+
 int main(void)
 {
     const stepper S[4] = { STEPPER(eb_verlet, 1, 1), STEPPER(eb_yoshida, 3, 1), STEPPER(eb_gauss2, 0, 0),
@@ -307,6 +344,8 @@ int main(void)
     /* the scalar stepper of the file emitted without --batch gives the same bits */
     compare(&S[0], &ens_verlet_type, 0, 1, NULL, -1, -1, 0);
     for (int s = 0; s < 4; s++) check_args(&S[s]);
+    for (int s = 0; s < 4; s += s == 1 ? 2 : 1)
+        for (int kahan = 0; kahan < 2; kahan++) check_masses(&S[s], kahan);
     /* the implicit batch: mechanical problems by fixed point only */
     vigen_hamiltonian_batch gb = { .dim = 2, .dHdq = kep_dHdq_b, .dHdp = kep_dHdp_b };
     vigen_mechanical_batch mb = { .dim = 2, .force = kep_force_b };

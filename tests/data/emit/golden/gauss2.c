@@ -97,6 +97,7 @@ struct gauss2_workspace {
     int history;                    /* Fo, Go and hprev are valid */
     double t_next, q_next0, p_next0;   /* what the last step returned */
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
+    int unit;                       /* mechanical problem with M = I: no multiplication by M^-1 */
     int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain;
                                        3, 4, 5 the same for a mechanical problem */
 #ifdef VIGEN_CHECK_PROBLEM
@@ -248,7 +249,11 @@ gauss2_workspace *gauss2_alloc_mechanical(const vigen_mechanical *sys, const vig
     w->mech.inv_mass = w->im;
     w->sys.dim = sys->dim;
     w->sys.ctx = sys->ctx;
-    for (size_t k = 0; k < sys->dim; k++) w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+    w->unit = 1;
+    for (size_t k = 0; k < sys->dim; k++) {
+        w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+        w->unit &= w->im[k] == 1;
+    }
 #ifdef VIGEN_CHECK_PROBLEM
     w->check_status = -1;          /* checked at the first step: alloc has no state */
 #endif

@@ -99,6 +99,7 @@ struct verlet_workspace {
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
     double *x[4];              /* explicit path: stage values and gradients */
     int fsal;                       /* cached first-same-as-last gradients valid */
+    int unit;                       /* mechanical problem with M = I: no multiplication by M^-1 */
     int path;                       /* 0 implicit, 1 explicit compensated, 2 explicit plain;
                                        3, 4, 5 the same for a mechanical problem */
 #ifdef VIGEN_CHECK_PROBLEM
@@ -251,7 +252,11 @@ verlet_workspace *verlet_alloc_mechanical(const vigen_mechanical *sys, const vig
     w->mech.inv_mass = w->im;
     w->sys.dim = sys->dim;
     w->sys.ctx = sys->ctx;
-    for (size_t k = 0; k < sys->dim; k++) w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+    w->unit = 1;
+    for (size_t k = 0; k < sys->dim; k++) {
+        w->im[k] = sys->inv_mass ? sys->inv_mass[k] : 1;
+        w->unit &= w->im[k] == 1;
+    }
 #ifdef VIGEN_CHECK_PROBLEM
     w->check_status = -1;          /* checked at the first step: alloc has no state */
 #endif
