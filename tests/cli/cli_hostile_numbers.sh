@@ -113,6 +113,17 @@ cat >"$work/hostile_num_power_product.lua" <<'LUA'
 return { name = "hostile_num_power_product", nodes = gauss_legendre(3), basis = { "---0-t", "t^62652*---t", "55" } }
 LUA
 limit=5 run power-product 3 generate "$work/hostile_num_power_product.lua" -q -o out.lua -- "is not certified" "the cap"
+# a basis function of super-exponential range, -(5.3e-45)^((3.3e-38)^(-t))
+# (found by the spec fuzz harness): its integrals need ever more precision,
+# about 24 s of bounded work up to the precision cap; the wall-clock cap ends
+# it when asked, with its message, exit 3 and no output file
+cat >"$work/hostile_num_super_exponential.lua" <<'LUA'
+return { name = "hostile_num_super_exponential", nodes = gauss_legendre(3),
+         basis = { "2--0-t", "-53336626031e-55^ --------------333333333333626031e-55^ -----------------t", "5" } }
+LUA
+limit=5 run super-exponential 3 generate "$work/hostile_num_super_exponential.lua" --max-seconds 2 -q -o out.lua -- \
+  "the time cap of 2 s was reached" "--max-seconds"
+[ -e "$work/out/out.lua" ] && fail "super-exponential: an output file was left"
 # 100,000 nodes (FLINT aborted allocating the matrices)
 run many-nodes 2 generate "$specs/hostile_num_many_nodes.lua" -o out.lua -- \
   "hostile_num_many_nodes.lua" "nodes has 100000 entries" "at most 256"

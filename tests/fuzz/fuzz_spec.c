@@ -9,10 +9,19 @@
 #include "method/vocabulary.h"
 #include "vigen/tableau.h"
 #include "fuzz_common.h"
+#include "vigen/limits.h"
+
+enum { FUZZ_SPEC_MAX_PREC = 2048 };
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_quiet();
+    /* a small precision cap, like the small instruction and memory caps
+     * below: an integrand that needs hundreds of digits to certify (a basis
+     * function of super-exponential range) is refused at the cap within the
+     * time of one execution; at the default cap such inputs take up to the
+     * wall-clock cap (--max-seconds) and end with the cap's message */
+    vigen_prec_limit_set(FUZZ_SPEC_MAX_PREC);
     char *text = fuzz_cstring(data, size);
     vigen_sandbox_limits limits = {.memory_limit = 8u << 20, .instruction_limit = 200000};
     vigen_error err;
