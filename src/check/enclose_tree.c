@@ -177,8 +177,8 @@ static void triple_addmul(chk_tree_encl *te, mag_ptr z[3], slong kz, const mag_s
 static void forward(chk_tree_encl *te)
 {
     slong s = te->s;
-    mag_t zero, p0, p1, p2;
-    mag_init(zero);
+    mag_t p0, p1, p2;
+    mag_ptr p12 = _mag_vec_init(s);
     mag_init(p0);
     mag_init(p1);
     mag_init(p2);
@@ -195,7 +195,6 @@ static void forward(chk_tree_encl *te)
         for (int w = te->v[v].child; w >= 0; w = te->v[w].sibling) {
             for (slong i = 0; i < s; i++) {
                 arb_mul(te->phip[v] + i, te->phip[v] + i, te->wp[w] + i, te->prec);
-                arb_mul(te->phig[v] + i, te->phig[v] + i, te->wg[w] + i, CHK_TREE_GRAD_PREC);
                 /* product of triples: (p0, p1, p2) * (w0, w1, w2) */
                 mag_set(p0, z[0] + i);
                 mag_set(p1, z[1] + i);
@@ -206,6 +205,7 @@ static void forward(chk_tree_encl *te)
                 triple_addmul(te, z, i, p0, p1, p2, te->wa[w][0] + i, te->wa[w][1] + i, te->wa[w][2] + i);
             }
         }
+        for (slong i = 0; i < s; i++) arb_set_round(te->phig[v] + i, te->phip[v] + i, CHK_TREE_GRAD_PREC);
         if (v == 0) break;
         int c = te->v[v].colour;
         mag_ptr y[3];
@@ -213,15 +213,22 @@ static void forward(chk_tree_encl *te)
             y[o] = te->wa[v][o];
             for (slong i = 0; i < s; i++) mag_zero(y[o] + i);
         }
+        for (slong j = 0; j < s; j++) mag_add(p12 + j, z[1] + j, z[2] + j);
         for (slong i = 0; i < s; i++) {
             arb_dot(te->wp[v] + i, NULL, 0, arb_mat_entry(te->Mp[c], i, 0), 1, te->phip[v], 1, s, te->prec);
-            arb_dot(te->wg[v] + i, NULL, 0, arb_mat_entry(te->Mg[c], i, 0), 1, te->phig[v], 1, s, CHK_TREE_GRAD_PREC);
-            for (slong j = 0; j < s; j++)
-                triple_addmul(te, y, i, te->Mabs[c] + i * s + j, te->Mrad[c] + i * s + j, zero, z[0] + j, z[1] + j,
-                              z[2] + j);
+            arb_set_round(te->wg[v] + i, te->wp[v] + i, CHK_TREE_GRAD_PREC);
+            /* (|m|, r, 0) * (p0, p1, p2): |m| p0, |m| p1 + r p0, |m| p2 + r (p1 + p2) */
+            for (slong j = 0; j < s; j++) {
+                const mag_struct *m = te->Mabs[c] + i * s + j, *r = te->Mrad[c] + i * s + j;
+                mag_addmul(y[0] + i, m, z[0] + j);
+                mag_addmul(y[1] + i, m, z[1] + j);
+                mag_addmul(y[1] + i, r, z[0] + j);
+                mag_addmul(y[2] + i, m, z[2] + j);
+                mag_addmul(y[2] + i, r, p12 + j);
+            }
         }
     }
-    mag_clear(zero);
+    _mag_vec_clear(p12, s);
     mag_clear(p0);
     mag_clear(p1);
     mag_clear(p2);
