@@ -231,7 +231,9 @@ int chk_reduction_skips(const chk_reduction *red, const vigen_treeset *ts, int n
 typedef struct chk_tree_encl chk_tree_encl;
 chk_tree_encl *chk_tree_encl_new(const ctx_t *cx);
 void chk_tree_encl_free(chk_tree_encl *te);
-void chk_tree_enclose(arb_t out, chk_tree_encl *te, const vigen_treeset *ts, int colour, const slong *ids, int k,
-                      const arb_t inv);
+/* exclusion_only: the caller needs the enclosure only if it may exclude 0;
+ * returns 0 without it when it certainly contains 0, 1 when out is set. */
+int chk_tree_enclose(arb_t out, chk_tree_encl *te, const vigen_treeset *ts, int colour, const slong *ids, int k,
+                     const arb_t inv, int exclusion_only);
 
 #endif

@@ -172,9 +172,25 @@ static void triple_addmul(chk_tree_encl *te, mag_ptr z[3], slong kz, const mag_s
 }
 
 /* Phi(v) = prod over children w of w(w), and for a vertex below the root
- * w(v) = M_colour Phi(v): at prec, at the gradient's precision, and as
- * triples (children have larger numbers: walked from the last vertex). */
-static void forward(chk_tree_encl *te)
+ * w(v) = M_colour Phi(v), at the midpoints at prec (children have larger
+ * numbers: walked from the last vertex). */
+static void forward_mid(chk_tree_encl *te)
+{
+    slong s = te->s;
+    for (int v = te->nv - 1; v >= 0; v--) {
+        for (slong i = 0; i < s; i++) arb_one(te->phip[v] + i);
+        for (int w = te->v[v].child; w >= 0; w = te->v[w].sibling)
+            for (slong i = 0; i < s; i++) arb_mul(te->phip[v] + i, te->phip[v] + i, te->wp[w] + i, te->prec);
+        if (v == 0) break;
+        int c = te->v[v].colour;
+        for (slong i = 0; i < s; i++)
+            arb_dot(te->wp[v] + i, NULL, 0, arb_mat_entry(te->Mp[c], i, 0), 1, te->phip[v], 1, s, te->prec);
+    }
+}
+
+/* The same at the gradient's precision (rounded from forward_mid) and as
+ * triples on |mid| + eps rad. */
+static void forward_abs(chk_tree_encl *te)
 {
     slong s = te->s;
     mag_t p0, p1, p2;
@@ -184,17 +200,15 @@ static void forward(chk_tree_encl *te)
     mag_init(p2);
     for (int v = te->nv - 1; v >= 0; v--) {
         for (slong i = 0; i < s; i++) {
-            arb_one(te->phip[v] + i);
-            arb_one(te->phig[v] + i);
             mag_one(te->phia[v][0] + i);
             mag_zero(te->phia[v][1] + i);
             mag_zero(te->phia[v][2] + i);
+            arb_set_round(te->phig[v] + i, te->phip[v] + i, CHK_TREE_GRAD_PREC);
         }
         mag_ptr z[3];
         for (int o = 0; o < 3; o++) z[o] = te->phia[v][o];
         for (int w = te->v[v].child; w >= 0; w = te->v[w].sibling) {
             for (slong i = 0; i < s; i++) {
-                arb_mul(te->phip[v] + i, te->phip[v] + i, te->wp[w] + i, te->prec);
                 /* product of triples: (p0, p1, p2) * (w0, w1, w2) */
                 mag_set(p0, z[0] + i);
                 mag_set(p1, z[1] + i);
@@ -205,7 +219,6 @@ static void forward(chk_tree_encl *te)
                 triple_addmul(te, z, i, p0, p1, p2, te->wa[w][0] + i, te->wa[w][1] + i, te->wa[w][2] + i);
             }
         }
-        for (slong i = 0; i < s; i++) arb_set_round(te->phig[v] + i, te->phip[v] + i, CHK_TREE_GRAD_PREC);
         if (v == 0) break;
         int c = te->v[v].colour;
         mag_ptr y[3];
@@ -215,7 +228,6 @@ static void forward(chk_tree_encl *te)
         }
         for (slong j = 0; j < s; j++) mag_add(p12 + j, z[1] + j, z[2] + j);
         for (slong i = 0; i < s; i++) {
-            arb_dot(te->wp[v] + i, NULL, 0, arb_mat_entry(te->Mp[c], i, 0), 1, te->phip[v], 1, s, te->prec);
             arb_set_round(te->wg[v] + i, te->wp[v] + i, CHK_TREE_GRAD_PREC);
             /* (|m|, r, 0) * (p0, p1, p2): |m| p0, |m| p1 + r p0, |m| p2 + r (p1 + p2) */
             for (slong j = 0; j < s; j++) {
@@ -270,17 +282,39 @@ static void first_order(chk_tree_encl *te, mag_t tol, arb_srcptr g, const mag_st
     }
 }
 
-void chk_tree_enclose(arb_t out, chk_tree_encl *te, const vigen_treeset *ts, int colour, const slong *ids, int k,
-                      const arb_t inv)
+/* 1 when |r(mid)| <= sum_i |Phi_i(mid)| rad(bhat_i), certainly: that sum is
+ * the part of the first-order term that comes from bhat (dr/dbhat_i = Phi_i,
+ * no cancellation with other entries), so the enclosure contains 0. */
+static int contains_zero_surely(chk_tree_encl *te, const arb_t rmid, int colour)
+{
+    mag_t tb, lo;
+    mag_init(tb);
+    mag_init(lo);
+    for (slong i = 0; i < te->s; i++) {
+        arb_get_mag_lower(lo, te->phip[0] + i);
+        mag_mul_lower(lo, lo, te->brad[colour] + i);
+        mag_add_lower(tb, tb, lo);
+    }
+    arb_get_mag(lo, rmid);
+    int surely = mag_cmp(lo, tb) <= 0;
+    mag_clear(tb);
+    mag_clear(lo);
+    return surely;
+}
+
+int chk_tree_enclose(arb_t out, chk_tree_encl *te, const vigen_treeset *ts, int colour, const slong *ids, int k,
+                     const arb_t inv, int exclusion_only)
 {
     slong s = te->s;
     te->nv = 0;
     vertices_add(te, ts, -1, colour, ids, k);
-    forward(te);
-    backward(te, colour);
+    forward_mid(te);
     /* r(mid) = bhat . Phi - 1/gamma */
     arb_neg(te->tmp, inv);
     arb_dot(out, te->tmp, 0, te->bp[colour], 1, te->phip[0], 1, s, te->prec);
+    if (exclusion_only && contains_zero_surely(te, out, colour)) return 0;
+    forward_abs(te);
+    backward(te, colour);
     mag_t tol;
     mag_init(tol);
     for (int sl = 0; sl < 2; sl++) {
@@ -308,4 +342,5 @@ void chk_tree_enclose(arb_t out, chk_tree_encl *te, const vigen_treeset *ts, int
     for (int o = 0; o < 3; o++) mag_clear(acc + o);
     mag_clear(zero);
     mag_clear(tol);
+    return 1;
 }

@@ -195,12 +195,23 @@ static void orders_condition(orders_state *st, int n, int c, const slong *ids, i
     arb_sub(st->r, st->val[c], st->inv, prec);
     /* a monochromatic tree involves one part only */
     int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
+    /* the scale: sum of |terms| + 1/gamma, rounded up generously */
+    mag_t sc;
+    mag_init(sc);
+    mag_set_d(sc, (vabs + 1.0 / (double)gamma) * (1 + 1e-9));
     /* a ball containing 0 on rounded data: plain ball arithmetic may
-     * overestimate the range; both enclosures hold, so their intersection */
+     * overestimate the range; both enclosures hold, so their intersection.
+     * When the plain ball already holds within the data, only an enclosure
+     * that may exclude 0 can change the verdict. */
     if (!exact && st->meanvalue && arb_is_finite(st->r) && arb_contains_zero(st->r)) {
         if (st->te == NULL) st->te = chk_tree_encl_new(cx);
-        chk_tree_enclose(st->tight, st->te, &st->ts, c, ids, k, st->inv);
-        if (arb_is_finite(st->tight) && arb_intersection(st->r, st->r, st->tight, prec))
+        mag_t thr;
+        mag_init(thr);
+        mag_mul_2exp_si(thr, sc, -VIGEN_CHECK_DATA_BITS);
+        int tight = mag_cmp(arb_radref(st->r), thr) <= 0;
+        mag_clear(thr);
+        if (chk_tree_enclose(st->tight, st->te, &st->ts, c, ids, k, st->inv, tight) && arb_is_finite(st->tight) &&
+            arb_intersection(st->r, st->r, st->tight, prec))
             arb_add(st->val[c], st->r, st->inv, prec);
     }
     /* the principal error coefficient (Phi - 1/gamma)/sigma, squared */
@@ -217,10 +228,6 @@ static void orders_condition(orders_state *st, int n, int c, const slong *ids, i
                     rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n], st->e, prec);
     }
     chk_ctx_shape(cx, n, gamma, n, pos / 2, c);   /* b Phi has n factors; 1/gamma */
-    /* the scale: sum of |terms| + 1/gamma, rounded up generously */
-    mag_t sc;
-    mag_init(sc);
-    mag_set_d(sc, (vabs + 1.0 / (double)gamma) * (1 + 1e-9));
     int v = chk_decide(cx, st->r, exact, sc);
     mag_clear(sc);
     int data = v == HOLDS ? cx->last_within : cx->last_short;
