@@ -224,4 +224,16 @@ typedef struct {
 void chk_reduction_init(chk_reduction *red, const vigen_check_report *rep, const ctx_t *cx);
 int chk_reduction_skips(const chk_reduction *red, const vigen_treeset *ts, int n, int colour, const slong *ids, int k);
 
+/* enclose_tree.c: the enclosure of a tree condition r = bhat . Phi - 1/gamma
+ * (colour, forest ids[0..k-1]; inv = 1/gamma) over the balls of the entries
+ * by the mean-value form r(mid) +- (sum_u |dr/du| rad_u + second-order
+ * remainder); for rounded data, where plain ball arithmetic overestimates. */
+typedef struct chk_tree_encl chk_tree_encl;
+chk_tree_encl *chk_tree_encl_new(const ctx_t *cx);
+void chk_tree_encl_free(chk_tree_encl *te);
+/* exclusion_only: the caller needs the enclosure only if it may exclude 0;
+ * returns 0 without it when it certainly contains 0, 1 when out is set. */
+int chk_tree_enclose(arb_t out, chk_tree_encl *te, const vigen_treeset *ts, int colour, const slong *ids, int k,
+                     const arb_t inv, int exclusion_only);
+
 #endif

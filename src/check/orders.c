@@ -129,6 +129,9 @@ typedef struct {
     arb_t val[2], r, inv, e;
     int need_ec;                 /* an error constant may need this order */
     chk_reduction red;
+    int meanvalue;               /* tighten conditions on rounded data (enclose_tree.c) */
+    chk_tree_encl *te;           /* created at the first such condition */
+    arb_t tight;
     int clean[VIGEN_CHECK_FAMILIES];         /* no failing or undecided condition below this order */
     slong skipped[VIGEN_CHECK_FAMILIES];     /* conditions of this order not evaluated */
     slong bad_pos[VIGEN_CHECK_FAMILIES][2];  /* positions of the first failing, undecided tree of this order */
@@ -190,6 +193,27 @@ static void orders_condition(orders_state *st, int n, int c, const slong *ids, i
     ctx_t *cx = st->cx;
     slong prec = st->prec;
     arb_sub(st->r, st->val[c], st->inv, prec);
+    /* a monochromatic tree involves one part only */
+    int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
+    /* the scale: sum of |terms| + 1/gamma, rounded up generously */
+    mag_t sc;
+    mag_init(sc);
+    mag_set_d(sc, (vabs + 1.0 / (double)gamma) * (1 + 1e-9));
+    /* a ball containing 0 on rounded data: plain ball arithmetic may
+     * overestimate the range; both enclosures hold, so their intersection.
+     * When the plain ball already holds within the data, only an enclosure
+     * that may exclude 0 can change the verdict. */
+    if (!exact && st->meanvalue && arb_is_finite(st->r) && arb_contains_zero(st->r)) {
+        if (st->te == NULL) st->te = chk_tree_encl_new(cx);
+        mag_t thr;
+        mag_init(thr);
+        mag_mul_2exp_si(thr, sc, -VIGEN_CHECK_DATA_BITS);
+        int tight = mag_cmp(arb_radref(st->r), thr) <= 0;
+        mag_clear(thr);
+        if (chk_tree_enclose(st->tight, st->te, &st->ts, c, ids, k, st->inv, tight) && arb_is_finite(st->tight) &&
+            arb_intersection(st->r, st->r, st->tight, prec))
+            arb_add(st->val[c], st->r, st->inv, prec);
+    }
     /* the principal error coefficient (Phi - 1/gamma)/sigma, squared */
     if (st->need_ec) {
         arb_div_ui(st->e, st->r, sg, prec);
@@ -203,13 +227,7 @@ static void orders_condition(orders_state *st, int n, int c, const slong *ids, i
             arb_add(rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n],
                     rep->error_constant[VIGEN_CHECK_EC_NYSTROM].sumsq[n], st->e, prec);
     }
-    /* a monochromatic tree involves one part only */
-    int exact = (flags & VIGEN_TREE_MONO) ? cx->ex->part[c] : cx->ex->part[0] && cx->ex->part[1];
     chk_ctx_shape(cx, n, gamma, n, pos / 2, c);   /* b Phi has n factors; 1/gamma */
-    /* the scale: sum of |terms| + 1/gamma, rounded up generously */
-    mag_t sc;
-    mag_init(sc);
-    mag_set_d(sc, (vabs + 1.0 / (double)gamma) * (1 + 1e-9));
     int v = chk_decide(cx, st->r, exact, sc);
     mag_clear(sc);
     int data = v == HOLDS ? cx->last_within : cx->last_short;
@@ -358,6 +376,8 @@ static void orders_state_clear(orders_state *st)
     _arb_vec_clear(st->ones, st->s);
     _arb_vec_clear(st->y, 4 * st->s);
     _arb_vec_clear(st->phi, st->s);
+    arb_clear(st->tight);
+    chk_tree_encl_free(st->te);
     vigen_treeset_clear(&st->ts);
 }
 
@@ -427,6 +447,10 @@ static int orders_state_init(orders_state *st, chk_round *rd, vigen_error *err)
         st->nys[u] = forest_nystrom(&st->ts, st->nys, tu->colour, vigen_treeset_children(&st->ts, u), tu->nchildren);
     }
     chk_reduction_init(&st->red, rd->rep, cx);
+    arb_init(st->tight);
+    /* plain ball arithmetic only: for comparing verdicts with and without */
+    const char *off = getenv("VIGEN_CHECK_NO_MEANVALUE");
+    st->meanvalue = off == NULL || *off == '\0' || *off == '0';
     return VIGEN_OK;
 }
 

@@ -508,6 +508,26 @@ run 1 "$work/g6_13.lua" --max-order 12
 grep_out "claim order = 13 is false: the bushy tree of order 13 fails"
 grep_out "^order         12 or more within the precision of the data"
 
+# Gauss s = 6 printed with 75 digits, every entry of A misrounded on sides
+# chosen so that plain ball arithmetic gives every condition up to order 8 a
+# ball containing 0 (gauss6_misrounded75.lua: how it was made).  The script
+# proves in exact rationals, without vigen, that the tall tree of order 5
+# fails for every tableau inside the balls (r(mid) against sum |dr/du| rad_u
+# plus the second-order remainder on |entries|); the checker, enclosing the
+# conditions by the same mean-value form, reports that tree as the first
+# failing one (order 4), where plain ball arithmetic said order 8 or more.
+g6m=$data/gauss6_misrounded75.lua
+[ "$(python3 "$data/gauss6_misrounded.py" verify "$g6m" | cut -d' ' -f1-3)" = "fails 5 b[b[b[b[b]]]]" ] ||
+  fail "gauss6_misrounded75: the exact computation does not find the tall tree of order 5 failing"
+run 0 "$g6m" --json
+json "d['order'] == 4 and d['order_status'] == 'within_data' and d['orders']['A']['level']['value'] == 4 and
+      d['orders']['general']['per_order'][4]['fail'] > 0 and
+      all(r['fail'] == 0 for r in d['orders']['general']['per_order'][:4])"
+run 0 "$g6m"
+grep_out "first failing tree: b\[b\[b\[b\[b\]\]\]\] (order 5)"
+VIGEN_CHECK_NO_MEANVALUE=1 run 0 "$g6m" --json
+json "d['order'] == 8 and d['order_status'] == 'at_least_within_data'"
+
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"
   exit 1
