@@ -19,7 +19,7 @@ static void error_constants(vigen_check_report *rep, slong prec)
         e->order = p;
         e->available = !o->level.capped && !o->level.undecided && p + 1 <= o->evaluated_to;
         e->ntrees = e->available ? o->count[p + 1] : 0;
-        if (e->available) arb_sqrt(e->value, e->sumsq[p + 1], prec);
+        if (e->available) arb_sqrtpos(e->value, e->sumsq[p + 1], prec);   /* a sum of squares of balls may reach below 0 */
         else arb_indeterminate(e->value);
     }
 }

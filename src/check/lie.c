@@ -192,7 +192,7 @@ int chk_lie_error(vigen_check_lie_error *le, const vigen_tableau *t, int p, slon
         le->computed = 1;
         arb_zero(le->norm);
         for (slong k = 0; k < le->nterms; k++) arb_addmul(le->norm, le->coef + k, le->coef + k, prec);
-        arb_sqrt(le->norm, le->norm, prec);
+        arb_sqrtpos(le->norm, le->norm, prec);
     }
     arb_clear(c);
     arb_clear(ck);
