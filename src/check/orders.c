@@ -8,6 +8,9 @@
 #include <string.h>
 #include "check/check_internal.h"
 
+/* the highest order whose conditions get the mean-value enclosure */
+enum { CHK_MEANVALUE_MAX_ORDER = 8 };
+
 static void orders_reset(vigen_check_orders *o)
 {
     free(o->fail_tree);
@@ -203,7 +206,9 @@ static void orders_condition(orders_state *st, int n, int c, const slong *ids, i
      * overestimate the range; both enclosures hold, so their intersection.
      * When the plain ball already holds within the data, only an enclosure
      * that may exclude 0 can change the verdict. */
-    if (!exact && st->meanvalue && arb_is_finite(st->r) && arb_contains_zero(st->r)) {
+    /* up to the default --max-order: beyond it the conditions are millions
+     * (order 12: 10^7 trees) and each enclosure walks its tree */
+    if (!exact && st->meanvalue && n <= CHK_MEANVALUE_MAX_ORDER && arb_is_finite(st->r) && arb_contains_zero(st->r)) {
         if (st->te == NULL) st->te = chk_tree_encl_new(cx);
         mag_t thr;
         mag_init(thr);
