@@ -1,6 +1,6 @@
 /* template.c — the template engine (slot declaration, inline and block
- * slots, flag sections; see template.h), the slot sets it renders with, and
- * the one lookup of the templates directory. */
+ * slots, flag sections, included files; see template.h), the slot sets it
+ * renders with, and the one lookup of the templates directory. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -112,8 +112,13 @@ void vigen_slot_line(vigen_slot *slot, const char *fmt, ...)
 
 static const char decl_opener[] = "/* vigen-template slots:";
 
+/* Included files nest at most this deep: deeper is taken for a cycle. */
+enum { MAX_INCLUDE_DEPTH = 8 };
+
 typedef struct {
     const char *file;
+    const char *dir;     /* the folder includes resolve in; NULL: no includes (text rendering) */
+    int depth;           /* of includes above this file */
     const vigen_slots *slots;
     char **declared;     /* names in the declaration */
     long *decl_used;     /* line of the first use, 0: unused */
@@ -214,6 +219,62 @@ static int section_mark(const char *line, size_t len, char *name, size_t cap, in
     return 0;
 }
 
+/* Whether a line is only an include mark, `@include FILE@` (blanks around
+ * allowed); *name, *n: the FILE between the marks. */
+static int include_mark(const char *line, size_t len, const char **name, size_t *n)
+{
+    size_t a = 0, b = len;
+    while (a < b && (line[a] == ' ' || line[a] == '\t')) a++;
+    while (b > a && (line[b - 1] == ' ' || line[b - 1] == '\t')) b--;
+    if (b - a < 11 || memcmp(line + a, "@include ", 9) != 0 || line[b - 1] != '@') return 0;
+    *name = line + a + 9;
+    *n = b - 1 - (a + 9);
+    return 1;
+}
+
+/* A file name of the template's own folder: [A-Za-z0-9_][A-Za-z0-9_.-]*, so
+ * that no name (no "/", no leading ".") reaches outside that folder. */
+static int valid_include(const char *s, size_t n)
+{
+    if (n == 0 || s[0] == '.' || s[0] == '-') return 0;
+    for (size_t k = 0; k < n; k++)
+        if (!((s[k] >= 'a' && s[k] <= 'z') || (s[k] >= 'A' && s[k] <= 'Z') || (s[k] >= '0' && s[k] <= '9') ||
+              s[k] == '_' || s[k] == '.' || s[k] == '-'))
+            return 0;
+    return 1;
+}
+
+static int render_path(char **out, const char *path, int depth, const vigen_slots *slots, unsigned char *declared,
+                       vigen_error *err);
+
+/* An include line: the named file of the template's folder, rendered as a
+ * template of its own (its declaration, its contract) with the same slots;
+ * its output stands for the line.  Rendered and checked in a section that
+ * is off too (out NULL), like every other line. */
+static int render_include(vigen_strbuf *out, render_ctx *R, long lineno, const char *name, size_t n,
+                          unsigned char *declared)
+{
+    char *shown = vigen_strdup_printf("%.*s", (int)n, name);
+    int rc = VIGEN_OK;
+    if (R->dir == NULL)
+        rc = fail(R, lineno, "@include %s@: only a template file can include another (of its folder)", shown);
+    else if (!valid_include(name, n))
+        rc = fail(R, lineno,
+                  "malformed mark '@include %s@' (a file of the template's own folder: [A-Za-z0-9_][A-Za-z0-9_.-]*)",
+                  shown);
+    else if (R->depth >= MAX_INCLUDE_DEPTH)
+        rc = fail(R, lineno, "@include %s@: includes nested deeper than 8 (does a file include itself?)", shown);
+    if (rc == VIGEN_OK) {
+        char *path = vigen_strdup_printf("%s/%s", R->dir, shown), *text = NULL;
+        rc = render_path(&text, path, R->depth + 1, R->slots, declared, R->err);
+        if (rc == VIGEN_OK && out) vigen_strbuf_append(out, text);
+        free(text);
+        free(path);
+    }
+    free(shown);
+    return rc;
+}
+
 static int valid_name(const char *s)
 {
     if (!is_name_start(*s)) return 0;
@@ -270,11 +331,11 @@ static int render_line(vigen_strbuf *out, render_ctx *R, long lineno, const char
     return VIGEN_OK;
 }
 
-int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
-                          unsigned char *declared, vigen_error *err)
+static int render_text(char **out, const char *text, const char *file, const char *dir, int includes,
+                       const vigen_slots *slots, unsigned char *declared, vigen_error *err)
 {
     *out = NULL;
-    render_ctx R = { file, slots, NULL, NULL, 0, err };
+    render_ctx R = { file, dir, includes, slots, NULL, NULL, 0, err };
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
     vigen_strbuf_append(&sb, "");
@@ -293,8 +354,12 @@ int vigen_template_render(char **out, const char *text, const char *file, const 
         size_t len = nl ? (size_t)(nl - p) : strlen(p);
         char name[64];
         int negate = 0;
+        const char *inc;
+        size_t ninc;
         int mark = section_mark(p, len, name, sizeof name, &negate);
-        if (mark == 1) {
+        if (mark == 0 && include_mark(p, len, &inc, &ninc)) {
+            rc = render_include(active[depth] ? &sb : NULL, &R, lineno, inc, ninc, declared);
+        } else if (mark == 1) {
             const vigen_slot *v;
             if (!valid_name(name)) rc = fail(&R, lineno, "malformed mark '@if %s@' (a flag name in [A-Z][A-Z0-9_]*)", name);
             else if (depth == MAXDEPTH) rc = fail(&R, lineno, "sections nested deeper than %s", "32");
@@ -343,10 +408,16 @@ int vigen_template_render(char **out, const char *text, const char *file, const 
     return VIGEN_OK;
 }
 
+int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
+                          unsigned char *declared, vigen_error *err)
+{
+    return render_text(out, text, file, NULL, 0, slots, declared, err);
+}
+
 /* A template that cannot be read is a broken installation, whatever the
  * input: hence VIGEN_E_TEMPLATE (exit status 3), not an input error. */
-int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, unsigned char *declared,
-                               vigen_error *err)
+static int render_path(char **out, const char *path, int depth, const vigen_slots *slots, unsigned char *declared,
+                       vigen_error *err)
 {
     *out = NULL;
     char *text = NULL;
@@ -361,9 +432,18 @@ int vigen_template_render_file(char **out, const char *path, const vigen_slots *
         return VIGEN_E_TEMPLATE;
     }
     if (rc != VIGEN_OK) return rc;
-    rc = vigen_template_render(out, text, path, slots, declared, err);
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? vigen_strdup_printf("%.*s", (int)(slash - path), path) : vigen_strdup(".");
+    rc = render_text(out, text, path, dir, depth, slots, declared, err);
+    free(dir);
     free(text);
     return rc;
+}
+
+int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, unsigned char *declared,
+                               vigen_error *err)
+{
+    return render_path(out, path, 0, slots, declared, err);
 }
 
 /* ------------------------------------------------------- template lookup */

@@ -18,6 +18,15 @@
  *                   alone on a line (blanks around allowed): the lines up to
  *                   @else@ or @end@ are kept when flag NAME is on (off with
  *                   "!"); sections nest.
+ *   @include FILE@  alone on a line (blanks around allowed): replaced by the
+ *                   rendering of FILE, a template of its own (declaration
+ *                   and contract) in the same folder as the including file,
+ *                   with the same slots.  FILE is [A-Za-z0-9_][A-Za-z0-9_.-]*
+ *                   (no "/", no leading "."), so that it cannot name a file
+ *                   outside that folder; includes nest at most 8 deep.  Only
+ *                   a template read from a file (vigen_template_render_file)
+ *                   can include: in text rendered from memory the line is an
+ *                   error.
  *
  * Every other character is copied as it is.  The contract is checked both
  * ways, on every line (those of sections that are off too): a mark naming a
@@ -77,9 +86,11 @@ const vigen_slot *vigen_slots_find(const vigen_slots *s, const char *name);
 int vigen_template_render(char **out, const char *text, const char *file, const vigen_slots *slots,
                           unsigned char *declared, vigen_error *err);
 
-/* Like vigen_template_render but reads the template from path.  A template
- * that cannot be read is VIGEN_E_TEMPLATE too (a broken installation): the
- * message names the path and says to reinstall or set VIGEN_TEMPLATE_DIR. */
+/* Like vigen_template_render but reads the template from path, and resolves
+ * its @include lines in path's folder.  A template (or included file) that
+ * cannot be read is VIGEN_E_TEMPLATE too (a broken installation): the
+ * message names the path and says to reinstall or set VIGEN_TEMPLATE_DIR;
+ * the declarations of included files are collected in declared as well. */
 int vigen_template_render_file(char **out, const char *path, const vigen_slots *slots, unsigned char *declared,
                                vigen_error *err);
 

@@ -145,18 +145,23 @@ check '[ $? -eq 0 ] && [ ! -s "$T/err.txt" ]' "true order claim: no warning"
 # A template that breaks the slot contract: exit 3, one line naming the
 # template file, the line and the slot; nothing written.
 mkdir -p "$T/tpl/prk"
-cp "$SRC/templates/prk/stepper.h.in" "$T/tpl/prk/"
+cp "$SRC"/templates/prk/*.in "$T/tpl/prk/"
 sed 's|^#include <float.h>$|#include <float.h> /* @ORDRE@ */|' "$SRC/templates/prk/stepper.c.in" >"$T/tpl/prk/stepper.c.in"
 line=$(grep -n "@ORDRE@" "$T/tpl/prk/stepper.c.in" | cut -d: -f1)
 VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
 check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: template $T/tpl/prk/stepper.c.in:$line: slot ORDRE is used but not declared" "$T/err.txt"' "template breaking the slot contract: refused, file, line and slot named (not the input)"
 # A slot the builder supplies that neither template declares any more.
 sed -e '1s/ ORDER / /' -e 's/_ORDER @ORDER@$/_ORDER -1/' "$SRC/templates/prk/stepper.h.in" >"$T/tpl/prk/stepper.h.in"
-sed -e '2s/ ORDER / /' -e 's/@STAGES@, @ORDER@,/@STAGES@, -1,/' "$SRC/templates/prk/stepper.c.in" >"$T/tpl/prk/stepper.c.in"
+sed -e '1,/\*\//s/ ORDER / /' -e 's/@STAGES@, @ORDER@,/@STAGES@, -1,/' "$SRC/templates/prk/stepper.c.in" >"$T/tpl/prk/stepper.c.in"
 VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
 check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: variant prk: its slot builder supplies slot ORDER, but no template of the variant declares it" "$T/err.txt"' "a supplied slot no template declares: refused, slot and variant named"
 # A missing template is a broken installation: exit 3, the path and what to
-# do, not blamed on the input.
+# do, not blamed on the input; so is a missing file that stepper.c.in
+# includes.
+cp "$SRC/templates/prk/stepper.h.in" "$SRC/templates/prk/stepper.c.in" "$T/tpl/prk/"
+rm "$T/tpl/prk/state.c.in"
+VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
+check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: template $T/tpl/prk/state.c.in: cannot open: .*reinstall vigen, or set VIGEN_TEMPLATE_DIR" "$T/err.txt"' "missing included template: exit 3, path and remedy"
 rm "$T/tpl/prk/stepper.c.in"
 VIGEN_TEMPLATE_DIR="$T/tpl" "$VIGEN" emit "$SRC/tests/data/emit/gauss2.lua" --name bad -o "$T" 2>"$T/err.txt"
 check '[ $? -eq 3 ] && [ ! -f "$T/bad.c" ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] && grep -q "^vigen emit: template $T/tpl/prk/stepper.c.in: cannot open: .*reinstall vigen, or set VIGEN_TEMPLATE_DIR" "$T/err.txt"' "missing template: exit 3, path and remedy, no input prefix"

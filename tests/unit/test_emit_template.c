@@ -10,11 +10,15 @@
  * VIGEN_E_TEMPLATE naming the slot and the variant; a template that cannot be
  * read is VIGEN_E_TEMPLATE (a broken installation, not bad input); the
  * variant is chosen by its name in variants.def and an unknown name is
- * refused with the list of variants; the real types are parsed by name. */
+ * refused with the list of variants; the real types are parsed by name.
+ * Included files (@include FILE@) render as templates of their own, in the
+ * including file's folder only, and their output is what pasting them would
+ * give. */
 #define _POSIX_C_SOURCE 200809L
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <dirent.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "testlib.h"
@@ -140,13 +144,35 @@ static char *slurp(const char *path)
     return text;
 }
 
+/* The names of the templates of the PRK variant (every .in file of templates/prk/), sorted;
+ * returns how many (at most cap). */
+static size_t prk_templates(char names[][64], size_t cap)
+{
+    size_t n = 0;
+    DIR *d = opendir("templates/prk");
+    CHECK(d != NULL);
+    if (d == NULL) return 0;
+    for (struct dirent *e; (e = readdir(d)) != NULL;) {
+        size_t len = strlen(e->d_name);
+        if (len < 4 || len >= 64 || strcmp(e->d_name + len - 3, ".in") != 0 || n == cap) continue;
+        strcpy(names[n++], e->d_name);
+    }
+    closedir(d);
+    qsort(names, n, sizeof names[0], (int (*)(const void *, const void *))strcmp);
+    return n;
+}
+
 /* The shipped templates: the engine's own check covers used-but-undeclared;
  * here the other direction, every declared name occurs in a mark. */
 static void test_shipped(void)
 {
-    static const char *const files[] = { "templates/prk/stepper.h.in", "templates/prk/stepper.c.in" };
-    for (size_t f = 0; f < sizeof files / sizeof files[0]; f++) {
-        FILE *fp = fopen(files[f], "rb");
+    char names[32][64];
+    size_t nfiles = prk_templates(names, 32);
+    CHECK(nfiles >= 4);   /* stepper.h.in, stepper.c.in, batch.h.in, batch.c.in at least */
+    for (size_t f = 0; f < nfiles; f++) {
+        char path[128];
+        snprintf(path, sizeof path, "templates/prk/%s", names[f]);
+        FILE *fp = fopen(path, "rb");
         CHECK(fp != NULL);
         if (fp == NULL) continue;
         static char text[1 << 16];
@@ -169,7 +195,7 @@ static void test_shipped(void)
             snprintf(neg, sizeof neg, "@if !%s@", w);
             const char *body = end + 2;
             if (!strstr(body, inl) && !strstr(body, blk) && !strstr(body, flag) && !strstr(body, neg)) {
-                fprintf(stderr, "%s: slot %s declared but never used\n", files[f], w);
+                fprintf(stderr, "%s: slot %s declared but never used\n", path, w);
                 testlib_failures++;
             }
         }
@@ -275,6 +301,18 @@ static void test_variant_contract(void)
     CHECK(mkdtemp(dir) != NULL);
     char *prk = vigen_strdup_printf("%s/prk", dir);
     CHECK(mkdir(prk, 0777) == 0);
+    /* the files stepper.c.in includes, as they are */
+    char names[32][64];
+    size_t nfiles = prk_templates(names, 32);
+    for (size_t f = 0; f < nfiles; f++) {
+        char *from = vigen_strdup_printf("templates/prk/%s", names[f]), *text = slurp(from);
+        char *to = vigen_strdup_printf("%s/%s", prk, names[f]);
+        CHECK(text != NULL);
+        if (text) write_edited(to, text, NULL, NULL, 0);
+        free(text);
+        free(from);
+        free(to);
+    }
     char *h = slurp("templates/prk/stepper.h.in"), *c = slurp("templates/prk/stepper.c.in");
     CHECK(h != NULL && c != NULL);
     char *hp = vigen_strdup_printf("%s/stepper.h.in", prk), *cp = vigen_strdup_printf("%s/stepper.c.in", prk);
@@ -305,8 +343,11 @@ static void test_variant_contract(void)
                   "rc %d: %s", e.rc, e.message);
         emitted_clear(&e);
     }
-    remove(hp);
-    remove(cp);
+    for (size_t f = 0; f < nfiles; f++) {
+        char *to = vigen_strdup_printf("%s/%s", prk, names[f]);
+        remove(to);
+        free(to);
+    }
     rmdir(prk);
     rmdir(dir);
     free(h);
@@ -357,8 +398,105 @@ static void test_real_names(void)
     CHECK(strcmp(vigen_emit_real_names(), "double, long-double or float128") == 0);
 }
 
+/* Writes text to dir/name. */
+static void put(const char *dir, const char *name, const char *text)
+{
+    char *path = vigen_strdup_printf("%s/%s", dir, name);
+    write_edited(path, text, NULL, NULL, 0);
+    free(path);
+}
+
+/* Renders dir/name from its file; returns the status, *out the text or the
+ * error message; declared (slots of standard_slots) may be NULL. */
+static int render_in(const char *dir, const char *name, char **out, unsigned char *declared)
+{
+    vigen_slots S;
+    standard_slots(&S);
+    vigen_error err;
+    vigen_error_init(&err);
+    char *path = vigen_strdup_printf("%s/%s", dir, name);
+    int rc = vigen_template_render_file(out, path, &S, declared, &err);
+    if (rc != VIGEN_OK) *out = vigen_strdup(err.message ? err.message : "");
+    free(path);
+    vigen_error_clear(&err);
+    vigen_slots_clear(&S);
+    return rc;
+}
+
+static void expect_file_error(const char *dir, const char *name, const char *where, const char *what)
+{
+    char *out = NULL;
+    int rc = render_in(dir, name, &out, NULL);
+    CHECK_MSG(rc == VIGEN_E_TEMPLATE && strstr(out, where) && strstr(out, what) && !strchr(out, '\n'),
+              "%s: rc %d: %s (want %s, %s)", name, rc, out, where, what);
+    free(out);
+}
+
+/* @include FILE@: the file's rendering stands for the line, exactly what the
+ * same lines pasted in place render to; the included file keeps its own
+ * contract (checked in a section that is off too) and its declarations
+ * count for the variant; a name can only reach the including file's folder;
+ * a cycle, a missing file and an include in text rendered from memory are
+ * errors. */
+static void test_include(void)
+{
+    char dir[] = "/tmp/vigen-test-include-XXXXXX";
+    CHECK(mkdtemp(dir) != NULL);
+    static const char *const files[] = { "main.in", "part.in", "pasted.in", "off.in", "bad.in", "up.in",
+                                         "abs.in", "hidden.in", "self.in", "gone.in" };
+    put(dir, "part.in", "/* vigen-template slots: BODY NAME */\n{\n    @@BODY@@\n} /* @NAME@ */\n");
+    put(dir, "main.in",
+        "/* vigen-template slots: NAME OFF */\nint @NAME@;\n@include part.in@\n@if OFF@\n  @include part.in@\n@end@\nend\n");
+    put(dir, "pasted.in",
+        "/* vigen-template slots: NAME OFF BODY */\nint @NAME@;\n{\n    @@BODY@@\n} /* @NAME@ */\n@if OFF@\n"
+        "{\n    @@BODY@@\n} /* @NAME@ */\n@end@\nend\n");
+    vigen_slots S;
+    standard_slots(&S);
+    unsigned char *declared = calloc(S.n, 1);
+    char *out = NULL, *pasted = NULL;
+    CHECK(render_in(dir, "main.in", &out, declared) == VIGEN_OK);
+    CHECK(render_in(dir, "pasted.in", &pasted, NULL) == VIGEN_OK);
+    CHECK_MSG(strcmp(out, "int gauss2;\n{\n    x = 1;\n    if (x) {\n        y = 2;\n    }\n} /* gauss2 */\nend\n") == 0,
+              "got:\n%s", out);
+    CHECK_MSG(strcmp(out, pasted) == 0, "included:\n%s\npasted:\n%s", out, pasted);
+    for (size_t k = 0; k < S.n; k++) {
+        const char *name = S.v[k]->name;
+        int want = strcmp(name, "NAME") == 0 || strcmp(name, "OFF") == 0 || strcmp(name, "BODY") == 0;
+        CHECK_MSG(declared[k] == want, "slot %s: declared flag %d", name, declared[k]);
+    }
+    free(out);
+    free(pasted);
+    free(declared);
+    vigen_slots_clear(&S);
+    /* each file: its text, and what the error names */
+    static const struct { const char *file, *text, *where, *what; } bad[] = {
+        /* an included file breaking its contract, included in a section that is off */
+        { "bad.in", "/* vigen-template slots: NAME */\n@NAME@\n@REAL@\n", "bad.in:3", "REAL" },
+        { "off.in", "/* vigen-template slots: OFF */\n@if OFF@\n@include bad.in@\n@end@\n", "bad.in:3", "REAL" },
+        /* names that would leave the folder, or hide in it */
+        { "up.in", "/* vigen-template slots: NAME */\n@NAME@\n@include ../part.in@\n", "up.in:3", "malformed" },
+        { "abs.in", "/* vigen-template slots: NAME */\n@NAME@\n  @include /etc/passwd@\n", "abs.in:3", "malformed" },
+        { "hidden.in", "/* vigen-template slots: NAME */\n@NAME@\n@include .part.in@\n", "hidden.in:3", "malformed" },
+        /* a file that includes itself: stopped, not recursing forever */
+        { "self.in", "/* vigen-template slots: NAME */\n@NAME@\n@include self.in@\n", "self.in:3", "deeper than 8" },
+        /* a missing included file: a broken installation, its path named */
+        { "gone.in", "/* vigen-template slots: NAME */\n@NAME@\n@include nowhere.in@\n", "nowhere.in", "reinstall" },
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) put(dir, bad[k].file, bad[k].text);
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) expect_file_error(dir, bad[k].file, bad[k].where, bad[k].what);
+    /* text rendered from memory has no folder to include from */
+    expect_error("/* vigen-template slots: NAME */\n@NAME@\n@include part.in@\n", "t.in:3", "part.in", "template file");
+    for (size_t f = 0; f < sizeof files / sizeof files[0]; f++) {
+        char *path = vigen_strdup_printf("%s/%s", dir, files[f]);
+        remove(path);
+        free(path);
+    }
+    CHECK(rmdir(dir) == 0);
+}
+
 int main(void)
 {
+    test_include();
     test_declared();
     test_variant_contract();
     test_variant_choice();
