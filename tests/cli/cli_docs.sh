@@ -1,9 +1,15 @@
 #!/bin/bash
-# cli_docs.sh VIGEN SRC — the lists in README.md that name what spec files
-# may contain (node families, basis families, functions of expressions) say
-# exactly what `vigen help spec` prints, which the code writes from its own
-# tables (nodes.def, basis.def, functions.def): a family or function added to
-# a table and not to the README, or documented and not in the code, fails.
+# cli_docs.sh VIGEN SRC — the documents say what the code does and where
+# they are:
+# - the lists in docs/spec.md that name what spec files may contain (node
+#   families, basis families, functions of expressions) say exactly what
+#   `vigen help spec` prints, which the code writes from its own tables
+#   (nodes.def, basis.def, functions.def): a family or function added to a
+#   table and not to docs/spec.md, or documented and not in the code, fails;
+# - docs/README.md names every document of docs/ and no other file, and
+#   every docs/ file README.md links to exists;
+# - README.md fits on a page: at most 200 lines;
+# - the Kepler program listed in docs/compile.md is examples/kepler's.
 set -u
 VIGEN=$1
 SRC=$2
@@ -16,15 +22,16 @@ basis=$(section "Basis families" | sed 's/(s)$//' | sort)
 funcs=$(section "Functions and constants" | sed 's/(x)$//' | sort)
 [ -n "$nodes" ] && [ -n "$basis" ] && [ -n "$funcs" ] || { echo "FAIL: vigen help spec lacks a section"; exit 1; }
 
-# the README's lists: the Nodes and Basis sections, and the **Expressions** paragraph
-readme_section() { awk -v h="$1" '$0 == h {on = 1; next} /^#/ {on = 0} on' "$SRC/README.md"; }
-r_nodes=$(readme_section "### Nodes" | grep -o '`[a-z_]*(s)`' | tr -d '`' | sed 's/(s)$//' | sort -u)
-r_basis=$(readme_section "### Basis" | grep -o '`[a-z_]*(s)`' | tr -d '`' | sed 's/(s)$//' | sort -u)
-r_funcs=$(awk '/^\*\*Expressions\*\*/ {on = 1} on && /^$/ {exit} on' "$SRC/README.md" | grep -o '`[a-z]*`' | tr -d '`' | sort -u)
+# the lists of docs/spec.md: the Nodes and Basis sections, and the **Expressions** paragraph
+SPEC_DOC="$SRC/docs/spec.md"
+doc_section() { awk -v h="$1" '$0 == h {on = 1; next} /^#/ {on = 0} on' "$SPEC_DOC"; }
+r_nodes=$(doc_section "## Nodes" | grep -o '`[a-z_]*(s)`' | tr -d '`' | sed 's/(s)$//' | sort -u)
+r_basis=$(doc_section "## Basis" | grep -o '`[a-z_]*(s)`' | tr -d '`' | sed 's/(s)$//' | sort -u)
+r_funcs=$(awk '/^\*\*Expressions\*\*/ {on = 1} on && /^$/ {exit} on' "$SPEC_DOC" | grep -o '`[a-z]*`' | tr -d '`' | sort -u)
 
-same() { # label code readme
+same() { # label code doc
   if [ "$2" != "$3" ]; then
-    echo "FAIL: $1: the code has [$(echo $2)], README.md lists [$(echo $3)]"
+    echo "FAIL: $1: the code has [$(echo $2)], docs/spec.md lists [$(echo $3)]"
     fail=1
   fi
 }
@@ -36,5 +43,33 @@ same "functions of expressions" "$funcs" "$r_funcs"
 for k in tableau galerkin; do
   echo "$help" | grep -q "^  $k " || { echo "FAIL: vigen help spec does not list the kind '$k'"; fail=1; }
 done
-[ $fail -eq 0 ] && echo "cli_docs: README lists agree with the tables"
+# docs/README.md: one row per document of docs/, each naming a file there
+index="$SRC/docs/README.md"
+listed=$(grep -o '^| \[[^]]*\]([^)]*)' "$index" | sed 's/.*(\(.*\))$/\1/' | sort)
+present=$(cd "$SRC/docs" && ls *.md | grep -vx README.md | sort)
+[ -n "$listed" ] || { echo "FAIL: docs/README.md lists no document"; fail=1; }
+for f in $present; do
+  echo "$listed" | grep -qx "$f" || { echo "FAIL: docs/$f is not listed in docs/README.md"; fail=1; }
+done
+for f in $listed; do
+  [ -f "$SRC/docs/$f" ] || { echo "FAIL: docs/README.md lists $f, which is not in docs/"; fail=1; }
+done
+dups=$(echo "$listed" | uniq -d)
+[ -z "$dups" ] || { echo "FAIL: docs/README.md lists $(echo $dups) more than once"; fail=1; }
+
+# README.md: a page, and its links into docs/ lead somewhere
+lines=$(wc -l <"$SRC/README.md")
+[ "$lines" -le 200 ] || { echo "FAIL: README.md has $lines lines (at most 200: the rest belongs in docs/)"; fail=1; }
+for f in $(grep -o '(docs/[^)#]*' "$SRC/README.md" | sed 's/^(//' | sort -u); do
+  [ -f "$SRC/$f" ] || { echo "FAIL: README.md links to $f, which does not exist"; fail=1; }
+done
+
+# the Kepler program and its CMakeLists.txt as docs/compile.md lists them
+block() { awk -v lang="$1" -v after="$2" 'index($0, after) {seen = 1} seen && $0 == "```" lang {on = 1; next} on && $0 == "```" {exit} on' "$SRC/docs/compile.md"; }
+block c '`kepler.c`:' | cmp -s - "$SRC/examples/kepler/kepler.c" ||
+  { echo "FAIL: docs/compile.md lists a kepler.c other than examples/kepler/kepler.c"; fail=1; }
+block cmake 'Its `CMakeLists.txt`:' | cmp -s - "$SRC/examples/kepler/CMakeLists.txt" ||
+  { echo "FAIL: docs/compile.md lists a CMakeLists.txt other than examples/kepler's"; fail=1; }
+
+[ $fail -eq 0 ] && echo "cli_docs: the documents agree with the tables, the index and the examples"
 exit $fail
