@@ -347,7 +347,7 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         slong pairs = 0, pairs_shown = 0, other_shown = 0, other_hidden = 0;
         for (slong k = 0; k < rep->nproblems; k++) {
             const vigen_check_problem *p = rep->problems + k;
-            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
+            if (p->kind == VIGEN_CHECK_FAIL_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
         }
         for (slong k = 0; k < rep->nproblems; k++) {
             const vigen_check_problem *p = rep->problems + k;
@@ -355,7 +355,7 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
             if (k > 0 && p->diagnosed && rep->problems[k - 1].diagnosed &&
                 strcmp(p->message, rep->problems[k - 1].message) == 0)
                 continue;
-            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) {
+            if (p->kind == VIGEN_CHECK_FAIL_SYMPLECTIC && !p->diagnosed && p->col > 0) {
                 if (pairs_shown < 20) {
                     problem_line(out, p->message);
                     if (++pairs_shown == 20 && pairs > 20)

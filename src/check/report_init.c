@@ -1,5 +1,6 @@
-/* report.c — the report of `vigen check`: options and report set up and torn
- * down, and the list of problems the checks file into it.
+/* report_init.c — the report of `vigen check` as data: options and report
+ * set up and torn down, and the list of problems the checks file into it
+ * (the report is printed by src/report/check_print.c).
  */
 #include <stdlib.h>
 #include <string.h>
