@@ -111,6 +111,8 @@ typedef struct {
     vigen_check_loader_fn load;  /* spec hook, see above; NULL = tableau files only */
 } vigen_check_options;
 
+/* Sets every option to its default: max_order 8, prec 0 (adequate to the
+ * entries), max_prec 4096, spec_digits 34, no FILE2, no loader. */
 void vigen_check_options_init(vigen_check_options *opt);
 
 /* Tri-state outcome. */
@@ -193,8 +195,12 @@ typedef struct {
     char *message;
 } vigen_check_note;
 
+/* The kind of a failing (or undecided) check in the list of problems: a row
+ * sum, a symplecticity pair, a claim of the file, an entry that differs from
+ * FILE2's. */
 enum { VIGEN_CHECK_FAIL_ROWSUM, VIGEN_CHECK_FAIL_SYMPLECTIC, VIGEN_CHECK_FAIL_CLAIM, VIGEN_CHECK_FAIL_AGAINST };
 
+/* One failing or undecided condition (or the diagnosis of a misprint). */
 typedef struct {
     int kind;                    /* VIGEN_CHECK_FAIL_* */
     const char *claim;           /* claims: "order" or "symplectic"; NULL otherwise */
@@ -293,6 +299,8 @@ typedef struct {
     int fsal;                    /* the first force is the last one of the previous step */
 } vigen_check_cost;
 
+/* What a check found.  The checks of checks.def write it; the reports print
+ * it, one row of src/report/check_fields.def per figure. */
 typedef struct {
     char *path, *name;
     slong s, prec;               /* precision of the final round, bits */
@@ -366,6 +374,9 @@ typedef struct {
                                     undecided; 1 otherwise */
 } vigen_check_report;
 
+/* A report with nothing checked (no claims, no problems); every report is
+ * initialised before a check and cleared after it (which frees its texts,
+ * balls, problems and notes). */
 void vigen_check_report_init(vigen_check_report *rep);
 void vigen_check_report_clear(vigen_check_report *rep);
 
@@ -395,6 +406,12 @@ int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err);
  * decides, for `vigen help checks`.  A heap string; free with free(). */
 char *vigen_check_list_text(void);
 
+/* The report of `vigen check` as text (for a reader) or as one JSON object
+ * and a newline.  Both print the same figures, one per row of the report
+ * table (src/report/check_fields.def: the JSON key, how the value is
+ * written, when the figure is reported, where its text lines go), so that a
+ * figure cannot be in one report and missing from the other by oversight.
+ * Texts from the file are escaped. */
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 

@@ -1,6 +1,6 @@
 /* report_init.c — the report of `vigen check` as data: options and report
  * set up and torn down, and the list of problems the checks file into it
- * (the report is printed by src/report/check_print.c).
+ * (src/report/check_text.c and check_json.c print it).
  */
 #include <stdlib.h>
 #include <string.h>
