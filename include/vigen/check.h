@@ -415,16 +415,16 @@ char *vigen_check_list_text(void);
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 
-/* Loads opt->path (and opt->against) through opt->load and checks it into
- * rep (initialised by the caller with vigen_check_report_init, cleared by
- * it).  Returns VIGEN_OK when everything could be loaded and evaluated: the
- * verdict is then rep->exit_code (0 consistent and every stated claim holds,
- * 1 something fails or cannot be decided), and the caller prints rep.
- * Otherwise err holds the message (prefixed with the path when the tableau
- * could not be evaluated) and vigen_status_exit_code of the code (status.def)
- * is the exit status: 2 unreadable or invalid input (a file that describes no
- * method included) or usage error, 3 a resource limit or the precision cap
- * reached. */
+/* Loads opt->path (and opt->against) through opt->load (tableau files only
+ * when NULL) and checks it into rep (initialised by the caller with
+ * vigen_check_report_init, cleared by it).  Returns VIGEN_OK when everything
+ * could be loaded and evaluated: the verdict is then rep->exit_code (0
+ * consistent and every stated claim holds, 1 something fails or cannot be
+ * decided), and the caller prints rep.  Otherwise err holds the message
+ * (prefixed with the path when the tableau could not be evaluated) and
+ * vigen_status_exit_code of the code (status.def) is the exit status: 2
+ * unreadable or invalid input (a file that describes no method included) or
+ * usage error, 3 a resource limit or the precision cap reached. */
 int vigen_check_file(vigen_check_report *rep, const vigen_check_options *opt, vigen_error *err);
 
 #endif
