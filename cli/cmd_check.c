@@ -1,5 +1,6 @@
-/* cmd_check.c — `vigen check FILE`: runs the checker and prints its report;
- * the report's verdict is the exit status (0 or 1). */
+/* cmd_check.c — `vigen check FILE`: runs the checker and prints its report
+ * as text or, with --json, as one JSON object; the report's verdict is the
+ * exit status (0 or 1). */
 #include "cli.h"
 #include "vigen/check.h"
 #include "vigen/method.h"
@@ -11,7 +12,6 @@ int vigen_cmd_check(const vigen_cli_args *args)
     opt.load = vigen_source_load; /* FILE and FILE2, each run once */
     opt.path = args->operand;
     opt.against = args->value[VIGEN_OPT_check_against];
-    opt.json = args->value[VIGEN_OPT_check_json] != NULL;
     long long n;
     int rc;
     if (args->value[VIGEN_OPT_check_max_order]) {
@@ -25,7 +25,16 @@ int vigen_cmd_check(const vigen_cli_args *args)
     }
     vigen_error err;
     vigen_error_init(&err);
-    int verdict = vigen_check_run(&opt, stdout, &err);
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    rc = vigen_check_file(&rep, &opt, &err);
+    if (rc == VIGEN_OK) {
+        if (args->value[VIGEN_OPT_check_json]) vigen_check_print_json(stdout, &rep);
+        else vigen_check_print_text(stdout, &rep);
+    }
+    int verdict = rep.exit_code;
+    vigen_check_report_clear(&rep);
     if (err.code != VIGEN_OK) return vigen_cli_fail(args->command, &err);
+    if (rc != VIGEN_OK) return vigen_status_exit_code(rc);
     return verdict;
 }

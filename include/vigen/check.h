@@ -104,7 +104,6 @@ typedef struct {
     const char *path;            /* FILE */
     const char *against;         /* FILE2 or NULL */
     int max_order;               /* P: orders 1..P are checked; default 8, at most VIGEN_TREE_MAX_ORDER */
-    int json;                    /* print one JSON object instead of the text report */
     slong prec;                  /* starting precision in bits; 0 = adequate to the entries (>= 128) */
     slong max_prec;              /* cap for the refinement; default 4096 (raised to twice the
                                     starting precision when the entries need more) */
@@ -112,6 +111,8 @@ typedef struct {
     vigen_check_loader_fn load;  /* spec hook, see above; NULL = tableau files only */
 } vigen_check_options;
 
+/* Sets every option to its default: max_order 8, prec 0 (adequate to the
+ * entries), max_prec 4096, spec_digits 34, no FILE2, no loader. */
 void vigen_check_options_init(vigen_check_options *opt);
 
 /* Tri-state outcome. */
@@ -194,10 +195,14 @@ typedef struct {
     char *message;
 } vigen_check_note;
 
-enum { VIGEN_PROBLEM_ROWSUM, VIGEN_PROBLEM_SYMPLECTIC, VIGEN_PROBLEM_CLAIM, VIGEN_PROBLEM_AGAINST };
+/* The kind of a failing (or undecided) check in the list of problems: a row
+ * sum, a symplecticity pair, a claim of the file, an entry that differs from
+ * FILE2's. */
+enum { VIGEN_CHECK_FAIL_ROWSUM, VIGEN_CHECK_FAIL_SYMPLECTIC, VIGEN_CHECK_FAIL_CLAIM, VIGEN_CHECK_FAIL_AGAINST };
 
+/* One failing or undecided condition (or the diagnosis of a misprint). */
 typedef struct {
-    int kind;                    /* VIGEN_PROBLEM_* */
+    int kind;                    /* VIGEN_CHECK_FAIL_* */
     const char *claim;           /* claims: "order" or "symplectic"; NULL otherwise */
     const char *matrix;          /* "A", "At", "b", "bt", "c", "ct"; NULL when not applicable */
     slong row, col;              /* 1-based; 0 when not applicable */
@@ -234,7 +239,7 @@ typedef struct {
                                     tree fails (so the order is < q); 0 when none up to bushy_to */
 } vigen_check_theorem;
 
-/* The principal error coefficients (figures.c): for a family of order p, the
+/* The principal error coefficients (error_cost.c): for a family of order p, the
  * bicoloured trees t of order p + 1 of the family give
  * e(t) = (Phi(t) - 1/gamma(t)) / sigma(t), the coefficient of h^(p+1) F(t)
  * in the local error y1 - y(t0 + h) (P-series, HLW GNI sec. III.1-2);
@@ -284,7 +289,7 @@ typedef struct {
     const char *reason;          /* why (static string) */
 } vigen_check_stability;
 
-/* The cost of a step (cost.c). */
+/* The cost of a step (error_cost.c). */
 typedef struct {
     slong stages;
     slong force;                 /* evaluations of -dV/dq per step, separable H */
@@ -294,6 +299,8 @@ typedef struct {
     int fsal;                    /* the first force is the last one of the previous step */
 } vigen_check_cost;
 
+/* What a check found.  The checks of checks.def write it; the reports print
+ * it, one row of src/report/check_fields.def per figure. */
 typedef struct {
     char *path, *name;
     slong s, prec;               /* precision of the final round, bits */
@@ -367,6 +374,9 @@ typedef struct {
                                     undecided; 1 otherwise */
 } vigen_check_report;
 
+/* A report with nothing checked (no claims, no problems); every report is
+ * initialised before a check and cleared after it (which frees its texts,
+ * balls, problems and notes). */
 void vigen_check_report_init(vigen_check_report *rep);
 void vigen_check_report_clear(vigen_check_report *rep);
 
@@ -396,17 +406,25 @@ int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err);
  * decides, for `vigen help checks`.  A heap string; free with free(). */
 char *vigen_check_list_text(void);
 
+/* The report of `vigen check` as text (for a reader) or as one JSON object
+ * and a newline.  Both print the same figures, one per row of the report
+ * table (src/report/check_fields.def: the JSON key, how the value is
+ * written, when the figure is reported, where its text lines go), so that a
+ * figure cannot be in one report and missing from the other by oversight.
+ * Texts from the file are escaped. */
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep);
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep);
 
-/* Loads opt->path (and opt->against), checks, prints the report to out and
- * returns the exit status.  When everything could be loaded and evaluated it
- * is the verdict, rep->exit_code: 0 consistent and every stated claim holds,
- * 1 something fails or cannot be decided.  Otherwise nothing is printed to
- * out, err holds the message, and the status is vigen_status_exit_code of its
- * code (status.def): 2 unreadable or invalid input (a file that describes no
- * method included) or usage error, 3 a resource limit or the precision cap
- * reached. */
-int vigen_check_run(const vigen_check_options *opt, FILE *out, vigen_error *err);
+/* Loads opt->path (and opt->against) through opt->load (tableau files only
+ * when NULL) and checks it into rep (initialised by the caller with
+ * vigen_check_report_init, cleared by it).  Returns VIGEN_OK when everything
+ * could be loaded and evaluated: the verdict is then rep->exit_code (0
+ * consistent and every stated claim holds, 1 something fails or cannot be
+ * decided), and the caller prints rep.  Otherwise err holds the message
+ * (prefixed with the path when the tableau could not be evaluated) and
+ * vigen_status_exit_code of the code (status.def) is the exit status: 2
+ * unreadable or invalid input (a file that describes no method included) or
+ * usage error, 3 a resource limit or the precision cap reached. */
+int vigen_check_file(vigen_check_report *rep, const vigen_check_options *opt, vigen_error *err);
 
 #endif

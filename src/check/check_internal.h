@@ -146,7 +146,7 @@ typedef int (*chk_check_fn)(chk_round *r, vigen_error *err);
 #include "check/checks.def"
 #undef X
 
-/* report.c: problems filed into the report, its notes torn down */
+/* report_init.c: problems filed into the report, its notes torn down */
 vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind);
 void chk_problems_clear(vigen_check_report *rep);
 void chk_notes_clear(vigen_check_report *rep);

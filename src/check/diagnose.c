@@ -326,7 +326,7 @@ int chk_diagnosis(chk_round *r, vigen_error *err)
         char *f = vigen_ball_str(fix, digits);
         for (slong k = 0; k < n; k++) {
             if (!scope[k] || conds[k].status != FAILS) continue;
-            int kind = chk_cond_is_rowsum(conds + k) ? VIGEN_PROBLEM_ROWSUM : VIGEN_PROBLEM_SYMPLECTIC;
+            int kind = chk_cond_is_rowsum(conds + k) ? VIGEN_CHECK_FAIL_ROWSUM : VIGEN_CHECK_FAIL_SYMPLECTIC;
             if (kinds_seen[kind]) continue;
             kinds_seen[kind] = 1;
             vigen_check_problem *p = chk_problem_new(rep, kind);
@@ -351,7 +351,7 @@ int chk_diagnosis(chk_round *r, vigen_error *err)
         if (c->status == HOLDS) continue;
         int rowsum = chk_cond_is_rowsum(c);
         if (c->type == C_BT_EQ_B && !list_bt) continue;
-        vigen_check_problem *p = chk_problem_new(rep, rowsum ? VIGEN_PROBLEM_ROWSUM : VIGEN_PROBLEM_SYMPLECTIC);
+        vigen_check_problem *p = chk_problem_new(rep, rowsum ? VIGEN_CHECK_FAIL_ROWSUM : VIGEN_CHECK_FAIL_SYMPLECTIC);
         p->undecided = c->status == UNDECIDED;
         p->has_value = p->has_expected = 1;
         chk_cond_parts(p->value, p->expected, cx, c, NULL);

@@ -1,11 +1,13 @@
 /* check_json.c — the JSON report of `vigen check` (vigen_check_print_json):
- * one object; strings through the one JSON writer (json.h).
+ * one object, a member per row of check_fields.def; strings through the one
+ * JSON writer (json.h).  The writers of the CUSTOM rows are here.
  */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
 #include "check/balls.h"
 #include "report/json.h"
+#include "report/check_fields.h"
 #include "report/check_figures.h"
 
 static void json_ball(FILE *out, const arb_t x, slong prec)
@@ -54,36 +56,21 @@ static void json_bad_tree(FILE *out, const vigen_check_orders *o, slong prec)
     fputc('}', out);
 }
 
-void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
+
+static void json_string_or_null(FILE *out, const char *s)
 {
-    static const char *const kinds[] = {"rowsum", "symplectic", "claim", "against"};
-    static const char *const family_keys[] = {"general", "separable", "A", "At", "nystrom"};
-    const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
-    fputs("{\"file\": ", out);
-    if (rep->path) vigen_json_write_string(out, rep->path); else fputs("null", out);
-    fputs(", \"name\": ", out);
-    if (rep->name) vigen_json_write_string(out, rep->name); else fputs("null", out);
-    fprintf(out, ", \"stages\": %ld, \"partitioned\": %s, \"precision_bits\": %ld, \"first_precision_bits\": %ld, "
-                 "\"evaluations\": %ld, \"max_order\": %d,\n",
-            (long)rep->s, rep->has_At ? "true" : "false", (long)rep->prec, (long)rep->prec_first, (long)rep->rounds,
-            rep->max_order);
-    fprintf(out, " \"rounded_entries\": %s, \"exact_entries\": %s,\n", rep->rounded_entries ? "true" : "false",
-            rep->exact_entries ? "true" : "false");
-    if (rep->rational_denominator)
-        fprintf(out, " \"rational_denominator\": \"%s\", \"proved\": %ld,\n", rep->rational_denominator,
-                (long)rep->proved);
-    else if (rep->quadratic_d)
-        fprintf(out, " \"quadratic_field\": \"sqrt(%s)\", \"denominator\": \"%s\", \"proved\": %ld,\n",
-                rep->quadratic_d, rep->quadratic_denominator, (long)rep->proved);
-    /* holds on exact entries are proofs only in the two cases above */
-    fprintf(out, " \"exact_holds_are_proofs\": %s,\n",
-            rep->rational_denominator || rep->quadratic_d ? "true" : "false");
-    fputs(" \"rule\": \"a condition fails when its ball excludes 0 and holds when it contains 0: on rounded entries "
-          "within the precision of the data, with a radius at most 2^-10 of its terms; on exact entries with a radius "
-          "below 2^-(prec/2) of its terms and the same verdicts at two precisions; otherwise it is undecided\",\n",
-          out);
-    fprintf(out, " \"data_threshold_bits\": %d,\n", VIGEN_CHECK_DATA_BITS);
-    fputs(" \"notes\": [", out);
+    if (s) vigen_json_write_string(out, s);
+    else fputs("null", out);
+}
+
+static void json_quadratic_field(FILE *out, const vigen_check_report *rep)
+{
+    fprintf(out, "\"sqrt(%s)\"", rep->quadratic_d);
+}
+
+static void json_notes(FILE *out, const vigen_check_report *rep)
+{
+    fputc('[', out);
     for (slong k = 0; k < rep->nnotes; k++) {
         const vigen_check_note *n = rep->notes + k;
         fputs(k ? ",\n  {\"entry\": " : "\n  {\"entry\": ", out);
@@ -102,13 +89,14 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         vigen_json_write_string(out, n->message);
         fputc('}', out);
     }
-    fputs(rep->nnotes ? "\n ],\n" : "],\n", out);
-    fputs(" \"reducible\": ", out);
-    if (rep->reducible) vigen_json_write_string(out, rep->reducible);
-    else fputs("null", out);
-    fputs(",\n", out);
+    fputs(rep->nnotes ? "\n ]" : "]", out);
+}
+
+/* how the holding conditions of each section were decided */
+static void json_holding(FILE *out, const vigen_check_report *rep)
+{
     static const char *const sect_keys[] = {"rowsum", "symplectic", "order", "simplifying", "against"};
-    fputs(" \"holding\": {", out);
+    fputc('{', out);
     for (int k = 0; k < VIGEN_CHECK_SECTIONS; k++) {
         const vigen_check_holds *h = rep->holds + k;
         if (k == VIGEN_CHECK_SECT_AGAINST && !rep->against_checked) continue;
@@ -121,22 +109,13 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         } else fputs("null", out);
         fputc('}', out);
     }
-    fputs("},\n", out);
-    fputs(" \"consistent\": ", out);
-    json_tri(out, rep->consistent);
-    fputs(", \"symplectic\": ", out);
-    json_tri(out, rep->symplectic);
-    fputs(", \"symplectic_separable\": ", out);
-    json_tri(out, rep->symplectic_separable);
-    fprintf(out, ",\n \"consistent_within_data\": %s, \"symplectic_within_data\": %s",
-            rep->consistent_within_data ? "true" : "false", rep->symplectic_within_data ? "true" : "false");
-    fprintf(out, ",\n \"order\": %d, \"order_status\": \"%s\", \"order_within_data\": %s, \"order_separable\": %d, "
-                 "\"order_separable_status\": \"%s\",\n",
-            g->level.value, level_status(&g->level), g->level.within_data ? "true" : "false",
-            rep->orders[VIGEN_CHECK_SEPARABLE].level.value, level_status(&rep->orders[VIGEN_CHECK_SEPARABLE].level));
-    fprintf(out, " \"order_A\": %d, \"order_At\": %d,\n", rep->orders[VIGEN_CHECK_A_ALONE].level.value,
-            rep->orders[VIGEN_CHECK_AT_ALONE].level.value);
-    fputs(" \"orders\": {", out);
+    fputc('}', out);
+}
+
+static void json_orders(FILE *out, const vigen_check_report *rep)
+{
+    static const char *const family_keys[] = {"general", "separable", "A", "At", "nystrom"};
+    fputc('{', out);
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
         const vigen_check_orders *o = &rep->orders[f];
         fprintf(out, "%s\n  \"%s\": {\"level\": ", f ? "," : "", family_keys[f]);
@@ -151,7 +130,12 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
                     (long)o->undecided[n], (long)(o->count[n] - o->inferred[n]), (long)o->inferred[n]);
         fputs("]}", out);
     }
-    fputs("},\n \"simplifying\": {", out);
+    fputc('}', out);
+}
+
+static void json_simplifying(FILE *out, const vigen_check_report *rep)
+{
+    fputc('{', out);
     for (int part = 0; part < 2; part++) {
         fprintf(out, "%s\"%s\": {\"B\": ", part ? ", " : "", part ? "At" : "A");
         json_level(out, &rep->B[part]);
@@ -163,15 +147,22 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         json_level(out, &rep->stage_order[part]);
         fputc('}', out);
     }
+    fputc('}', out);
+}
+
+static void json_theorem(FILE *out, const vigen_check_report *rep)
+{
     const vigen_check_theorem *th = &rep->theorem;
-    fprintf(out, "},\n \"butcher_theorem\": {\"applies\": %s, \"order\": %d, \"B\": %d, \"C\": %d, \"D\": %d, "
-                 "\"within_data\": %s, \"why_not\": ",
+    fprintf(out, "{\"applies\": %s, \"order\": %d, \"B\": %d, \"C\": %d, \"D\": %d, \"within_data\": %s, \"why_not\": ",
             th->applies ? "true" : "false", th->order, th->B, th->eta, th->zeta, th->within_data ? "true" : "false");
-    if (th->why_not) vigen_json_write_string(out, th->why_not);
-    else fputs("null", out);
-    fprintf(out, ", \"bushy_tree_fails\": {\"general\": %d, \"separable\": %d, \"checked_to\": %d}",
+    json_string_or_null(out, th->why_not);
+    fprintf(out, ", \"bushy_tree_fails\": {\"general\": %d, \"separable\": %d, \"checked_to\": %d}}",
             th->bushy_fail[0], th->bushy_fail[1], th->bushy_to);
-    fputs("},\n \"claims\": {", out);
+}
+
+static void json_claims(FILE *out, const vigen_check_report *rep)
+{
+    fputc('{', out);
     int first = 1;
     if (rep->claim_order >= 0) {
         fprintf(out, "\"order\": {\"claimed\": %d, \"holds\": ", rep->claim_order);
@@ -199,7 +190,13 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
             fputc('}', out);
             first = 0;
         }
-    fputs("},\n \"problems\": [", out);
+    fputc('}', out);
+}
+
+static void json_problems(FILE *out, const vigen_check_report *rep)
+{
+    static const char *const kinds[] = {"rowsum", "symplectic", "claim", "against"};
+    fputc('[', out);
     for (slong k = 0; k < rep->nproblems; k++) {
         const vigen_check_problem *p = rep->problems + k;
         fprintf(out, "%s\n  {\"kind\": \"%s\"", k ? "," : "", kinds[p->kind]);
@@ -218,15 +215,135 @@ void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
         fputc('}', out);
     }
     fputs(rep->nproblems ? "\n ]" : "]", out);
-    vigen_report_figures_json(out, rep);
-    fputs(",\n \"notation\": ", out);
-    vigen_json_write_string(out, vigen_tree_notation_help());
-    if (rep->against_checked)
-        fprintf(out, ",\n \"against\": {\"differences\": %ld, \"undecided\": %ld}", (long)rep->against_differences,
-                (long)rep->against_undecided);
-    fprintf(out, ",\n \"undecided_conditions\": %ld, \"undecided_too_short\": %ld, \"undecided_reason\": ",
-            (long)rep->undecided_left, (long)rep->undecided_short);
-    if (rep->undecided_reason) vigen_json_write_string(out, rep->undecided_reason); else fputs("null", out);
-    fprintf(out, ",\n \"exit\": %d}\n", rep->exit_code);
 }
 
+static void json_against(FILE *out, const vigen_check_report *rep)
+{
+    fprintf(out, "{\"differences\": %ld, \"undecided\": %ld}", (long)rep->against_differences,
+            (long)rep->against_undecided);
+}
+
+/* a JSON number: the midpoint to 17 digits, or null when not finite */
+static void json_number(FILE *out, const arb_t x)
+{
+    if (!arb_is_finite(x)) {
+        fputs("null", out);
+        return;
+    }
+    double d = arf_get_d(arb_midref(x), ARF_RND_NEAR);
+    fprintf(out, "%.17g", d);
+}
+
+/* ", \"ball\": \"...\"": x to 20 digits as a ball */
+static void json_ball20(FILE *out, const arb_t x)
+{
+    char *b = vigen_ball_json_str(x, 20);
+    fprintf(out, ", \"ball\": \"%s\"", b);
+    free(b);
+}
+
+static void json_design_order(FILE *out, const vigen_check_report *rep)
+{
+    int hf = vigen_report_higher_family(rep);
+    if (hf >= 0)
+        fprintf(out, "{\"order\": %d, \"family\": \"%s\"}",
+                rep->orders[hf == 1 ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_NYSTROM].level.value,
+                vigen_report_ec_key[hf]);
+    else fprintf(out, "{\"order\": %d, \"family\": \"general\"}", rep->orders[VIGEN_CHECK_GENERAL].level.value);
+}
+
+/* the error constant of the design family */
+static void json_error_constant(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_error_constant *d = &rep->error_constant[vigen_report_design_family(rep)];
+    if (d->available) json_number(out, d->value);
+    else fputs("null", out);
+}
+
+static void json_error_constants(FILE *out, const vigen_check_report *rep)
+{
+    fputc('{', out);
+    for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
+        const vigen_check_error_constant *e = &rep->error_constant[f];
+        fprintf(out, "%s\"%s\": ", f ? ", " : "", vigen_report_ec_key[f]);
+        if (!e->available) {
+            fputs("null", out);
+            continue;
+        }
+        fprintf(out, "{\"order\": %d, \"trees\": %ld, \"value\": ", e->order, (long)e->ntrees);
+        json_number(out, e->value);
+        json_ball20(out, e->value);
+        fputc('}', out);
+    }
+    fputc('}', out);
+}
+
+static void json_lie_error(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_lie_error *le = &rep->lie_error;
+    if (!le->computed) {
+        fputs("null", out);
+        return;
+    }
+    fprintf(out, "{\"degree\": %d, \"norm\": ", le->degree);
+    json_number(out, le->norm);
+    fputs(", \"terms\": [", out);
+    for (slong k = 0; k < le->nterms; k++) {
+        fprintf(out, "%s{\"word\": \"%s\", \"bracket\": \"%s\", \"coefficient\": ", k ? ", " : "", le->words[k],
+                le->brackets[k]);
+        json_number(out, le->coef + k);
+        json_ball20(out, le->coef + k);
+        fputc('}', out);
+    }
+    fputs("]}", out);
+}
+
+static void json_stability_interval(FILE *out, const vigen_check_report *rep)
+{
+    if (rep->stability.status == VIGEN_CHECK_STAB_BOUNDED) json_number(out, rep->stability.x);
+    else fputs("null", out);
+}
+
+static void json_stability(FILE *out, const vigen_check_report *rep)
+{
+    static const char *const words[] = {"none", "bounded", "unbounded", "undecided"};
+    const vigen_check_stability *st = &rep->stability;
+    fprintf(out, "{\"status\": \"%s\"", words[st->status]);
+    if (st->status == VIGEN_CHECK_STAB_BOUNDED) json_ball20(out, st->x);
+    fputs(", \"reason\": ", out);
+    json_string_or_null(out, st->reason);
+    fputc('}', out);
+}
+
+static void json_cost(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_cost *c = &rep->cost;
+    fprintf(out, "{\"stages\": %ld, \"force\": %ld, \"velocity\": %ld, \"fsal\": %s, \"explicit_separable\": %s, "
+                 "\"explicit_general\": %s}",
+            (long)c->stages, (long)c->force, (long)c->velocity, c->fsal ? "true" : "false",
+            c->explicit_separable ? "true" : "false", c->explicit_general ? "true" : "false");
+}
+
+/* the JSON columns of check_fields.def: the separators and the value types */
+#define SEP_COMMA ", "
+#define SEP_LINE ",\n "
+#define JSON_BOOL(v) fputs((v) ? "true" : "false", out)
+#define JSON_INT(v) fprintf(out, "%d", (int)(v))
+#define JSON_LONG(v) fprintf(out, "%ld", (long)(v))
+#define JSON_TRI(v) json_tri(out, (v))
+#define JSON_STR(v) json_string_or_null(out, (v))
+#define JSON_CUSTOM(writer) writer(out, rep)
+
+void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
+{
+    int first = 1;
+#define X(key, type, value, sep, when, text_at, text_fn)                                                             \
+    if (when) {                                                                                                        \
+        fprintf(out, "%s\"" #key "\": ", first ? "{" : SEP_##sep);                                                    \
+        JSON_##type(value);                                                                                            \
+        first = 0;                                                                                                     \
+    }
+#include "report/check_fields.def"
+#undef X
+    fputs("}\n", out);
+}

@@ -1,11 +1,13 @@
-/* check_text.c — the text report of `vigen check` (vigen_check_print_text).
- * Texts that may come from the file (the path, the name, notes and problems
- * quoting entries) are printed escaped (vigen/printable.h). */
+/* check_text.c — the text report of `vigen check` (vigen_check_print_text):
+ * the lines of each row of check_fields.def that has a text_fn, in the order
+ * of text_at.  Texts that may come from the file (the path, the name, notes
+ * and problems quoting entries) are printed escaped (vigen/printable.h). */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
 #include "vigen/printable.h"
 #include "check/balls.h"
+#include "report/check_fields.h"
 #include "report/check_figures.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
@@ -13,6 +15,14 @@ static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "(ct, At, bt) alone as an RK method", "order for Nystrom H = p^2/2 + V(q)"};
 
 static const char *const within_words = "within the precision of the data";
+
+/* the certain digits of x (at most 6) */
+static void put_figure(FILE *out, const arb_t x)
+{
+    char *s = vigen_ball_str(x, 6);
+    fputs(s, out);
+    free(s);
+}
 
 /* fputs of a text that may come from the file, escaped */
 static void put_shown(const char *text, FILE *out)
@@ -107,7 +117,8 @@ static void problem_line(FILE *out, const char *message)
     fputc('\n', out);
 }
 
-void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
+/* the file, its name, its stages */
+static void text_header(FILE *out, const vigen_check_report *rep)
 {
     put_shown(rep->path ? rep->path : "tableau", out);
     if (rep->name && !(rep->path && strcmp(rep->path, rep->name) == 0)) {
@@ -117,6 +128,11 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     }
     fprintf(out, ": %ld stage%s, %s\n", (long)rep->s, rep->s == 1 ? "" : "s",
             rep->has_At ? "partitioned (A and At given)" : "one RK method for both parts (At = A)");
+}
+
+/* what the entries are and the precision they were checked at */
+static void text_entries(FILE *out, const vigen_check_report *rep)
+{
     if (rep->rational_denominator) {
         char *D = short_integer(rep->rational_denominator);
         fprintf(out, "  entries: exact rationals, common denominator D = %s; ", D);
@@ -135,6 +151,11 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "checked at %ld bits (%ld evaluations, from %ld bits)\n", (long)rep->prec, (long)rep->rounds,
                 (long)rep->prec_first);
     else fprintf(out, "checked at %ld bits (1 evaluation)\n", (long)rep->prec);
+}
+
+/* when a condition fails, holds or is undecided, for these entries */
+static void text_rule(FILE *out, const vigen_check_report *rep)
+{
     if (rep->rational_denominator)
         fputs("  a condition fails when its ball excludes 0; it holds, proved, when its ball lies inside\n"
               "  (-1/(D^k g), 1/(D^k g)), k entries per term and g the denominator of its constant: the value is a\n"
@@ -161,6 +182,11 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
               "  the data when it involves a rounded entry and its radius is at most 2^-10 of its terms; on exact\n"
               "  entries only with a radius below 2^-(prec/2) of its terms and the same verdicts at two precisions;\n"
               "  otherwise it is undecided\n", out);
+}
+
+/* short decimals that look exact (the first 10) and stages that reduce */
+static void text_notes(FILE *out, const vigen_check_report *rep)
+{
     for (slong k = 0; k < rep->nnotes && k < 10; k++) {
         fputs("  note: ", out);
         put_shown(rep->notes[k].message, out);
@@ -173,7 +199,10 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     }
     if (rep->nnotes > 10)
         fprintf(out, "  note: ... and %ld more short decimals (all of them with --json)\n", (long)(rep->nnotes - 10));
+}
 
+static void text_rowsums(FILE *out, const vigen_check_report *rep)
+{
     fprintf(out, "row sums      %s", tri_word_data(rep->consistent, "hold", "FAIL",
                                                   rep->holds[VIGEN_CHECK_SECT_ROWSUM].too_short > 0));
     if (rep->consistent == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_ROWSUM]);
@@ -182,6 +211,10 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
     if (rep->row_fail) fprintf(out, "; %ld fail", (long)rep->row_fail);
     if (rep->row_undecided) fprintf(out, "; %ld undecided", (long)rep->row_undecided);
     fputs(")\n", out);
+}
+
+static void text_symplectic(FILE *out, const vigen_check_report *rep)
+{
     fprintf(out, "symplectic    %s", tri_word_data(rep->symplectic, "yes", "no",
                                                   rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0));
     if (rep->symplectic == VIGEN_CHECK_YES) print_within(out, &rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC]);
@@ -194,7 +227,12 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "              for separable H (b_i at_ij + bt_j a_ji - b_i bt_j = 0 suffices): %s\n",
                 tri_word_data(rep->symplectic_separable, "yes", "no",
                               rep->holds[VIGEN_CHECK_SECT_SYMPLECTIC].too_short > 0));
+}
 
+/* the order for general H, its first bad tree, and the conditions of every
+ * family per order */
+static void text_order(FILE *out, const vigen_check_report *rep)
+{
     const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
     fputs("order         ", out);
     print_level_words(out, &g->level);
@@ -237,7 +275,13 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "  (%ld of the %ld conditions follow from the %ld evaluated by symplecticity: a tree and its "
                      "rerooting have opposite residuals; counted as holding%s)\n",
                 inferred, total, total - inferred, rep->symplectic_within_data ? " within the precision of the data" : "");
+}
 
+/* the order of each family of trees, and its first bad tree when it is not
+ * the general one */
+static void text_families(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_orders *g = &rep->orders[VIGEN_CHECK_GENERAL];
     for (int f = 1; f < VIGEN_CHECK_FAMILIES; f++) {
         const vigen_check_orders *o = &rep->orders[f];
         if (f == VIGEN_CHECK_AT_ALONE && !rep->has_At) {
@@ -258,33 +302,44 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         if (!(mine && general && strcmp(mine, general) == 0 && o->level.value == g->level.value))
             print_bad_tree(out, o, "  ");
     }
+}
 
+/* B, C, D and the stage order of each part */
+static void text_simplifying(FILE *out, const vigen_check_report *rep)
+{
     fputs("simplifying assumptions\n", out);
-    int starred = 0;
     for (int part = 0; part < (rep->has_At ? 2 : 1); part++) {
         fprintf(out, "  %-13s ", part ? "(ct, At, bt):" : "(c, A, b):");
-        starred |= print_assumption(out, "B", &rep->B[part]);
+        print_assumption(out, "B", &rep->B[part]);
         fputc(' ', out);
-        starred |= print_assumption(out, "C", &rep->C[part]);
+        print_assumption(out, "C", &rep->C[part]);
         fputc(' ', out);
-        starred |= print_assumption(out, "D", &rep->D[part]);
+        print_assumption(out, "D", &rep->D[part]);
         fputs(", stage order ", out);
         const vigen_check_level *S = &rep->stage_order[part];
         if (S->capped) fprintf(out, ">= %d", S->value);
         else fprintf(out, "%d", S->value);
         if (S->within_data) fputc('*', out);
-        starred |= S->within_data;
         if (!S->capped && S->undecided) fputs(S->too_short ? " (undecided above: data too short)" : " (undecided above)", out);
         fputc('\n', out);
     }
     if (!rep->has_At) fputs("  (ct, At, bt):  same (At = A)\n", out);
+}
+
+/* Butcher's theorem and the bushy trees; the footnote to the starred
+ * assumptions (those that hold within the precision of the data) */
+static void text_theorem(FILE *out, const vigen_check_report *rep)
+{
     const vigen_check_theorem *th = &rep->theorem;
+    int starred = th->applies && th->within_data;
+    for (int part = 0; part < (rep->has_At ? 2 : 1); part++)
+        starred |= rep->B[part].within_data || rep->C[part].within_data || rep->D[part].within_data ||
+                   rep->stage_order[part].within_data;
     if (th->applies)
         fprintf(out, "  order >= %d%s by Butcher's theorem (B(%d), C(%d), D(%d) of both parts, b = bt, c = ct)",
                 th->order, th->within_data ? "*" : "", th->B, th->eta, th->zeta);
     else fprintf(out, "  Butcher's theorem does not apply (%s; it needs the row sums, b = bt and c = ct)",
                  th->why_not ? th->why_not : "?");
-    starred |= th->applies && th->within_data;
     if (th->bushy_fail[0])
         fprintf(out, "; the bushy tree of order %d fails: order <= %d", th->bushy_fail[0], th->bushy_fail[0] - 1);
     if (th->bushy_fail[1] && th->bushy_fail[1] != th->bushy_fail[0])
@@ -295,9 +350,80 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         fprintf(out, "  (*: holds %s, radius <= %s)\n", within_words, r);
         free(r);
     }
+}
 
-    vigen_report_figures_text(out, rep);
+/* the family a method is designed for, when its order is above the general one */
+static void text_design_order(FILE *out, const vigen_check_report *rep)
+{
+    int hf = vigen_report_higher_family(rep);
+    if (hf >= 0)
+        fprintf(out, "design order  %d%s for %s (general H: %d, separable H: %d, Nystrom H: %d): the method is made "
+                     "for %s\n",
+                rep->orders[hf == 1 ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_NYSTROM].level.value,
+                rep->orders[hf == 1 ? VIGEN_CHECK_SEPARABLE : VIGEN_CHECK_NYSTROM].level.capped ? " or more" : "",
+                vigen_report_ec_title[hf], rep->orders[VIGEN_CHECK_GENERAL].level.value,
+                rep->orders[VIGEN_CHECK_SEPARABLE].level.value, rep->orders[VIGEN_CHECK_NYSTROM].level.value,
+                hf == 1 ? "H = T(p) + V(q)" : "H = p^T M^-1 p / 2 + V(q)");
+}
 
+static void text_error_constants(FILE *out, const vigen_check_report *rep)
+{
+    fputs("error constants (2-norm of (Phi(t) - 1/gamma(t))/sigma(t) over the trees of order p + 1)\n", out);
+    for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
+        const vigen_check_error_constant *e = &rep->error_constant[f];
+        fprintf(out, "  %-12s ", vigen_report_ec_title[f]);
+        if (e->available) {
+            fprintf(out, "order %d: ", e->order);
+            put_figure(out, e->value);
+            fprintf(out, " (%ld trees of order %d)\n", (long)e->ntrees, e->order + 1);
+        } else
+            fprintf(out, "not computed: the order is not decided below the orders evaluated (%d; --max-order)\n",
+                    rep->max_order);
+    }
+}
+
+/* the principal error of a splitting in the Lyndon basis */
+static void text_lie_error(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_lie_error *le = &rep->lie_error;
+    if (le->computed) {
+        fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A drifts, B kicks, in order), 2-norm ",
+                le->degree);
+        put_figure(out, le->norm);
+        fputc('\n', out);
+        for (slong k = 0; k < le->nterms; k++) {
+            fprintf(out, "  %-28s ", le->brackets[k]);
+            put_figure(out, le->coef + k);
+            fputc('\n', out);
+        }
+    }
+}
+
+static void text_stability(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_stability *st = &rep->stability;
+    fputs("stability     on q'' = -omega^2 q: ", out);
+    if (st->status == VIGEN_CHECK_STAB_UNBOUNDED) fputs("stable for every h omega", out);
+    else if (st->status == VIGEN_CHECK_STAB_BOUNDED) {
+        fputs("stable for h omega < ", out);
+        put_figure(out, st->x);
+    } else fputs("undecided", out);
+    if (st->reason) fprintf(out, " (%s)", st->reason);
+    fputc('\n', out);
+}
+
+static void text_cost(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_cost *c = &rep->cost;
+    fprintf(out, "cost          %ld stage%s; for H = T(p) + V(q): %ld force and %ld velocity evaluations per step%s, %s; "
+                 "for general H: %s\n",
+            (long)c->stages, c->stages == 1 ? "" : "s", (long)c->force, (long)c->velocity,
+            c->fsal ? " (first force = last of the previous step)" : "",
+            c->explicit_separable ? "explicit" : "implicit", c->explicit_general ? "explicit" : "implicit");
+}
+
+static void text_claims(FILE *out, const vigen_check_report *rep)
+{
     if (rep->claim_order >= 0 || rep->claim_symplectic >= 0 || rep->claim_order_family[0] >= 0 ||
         rep->claim_order_family[1] >= 0) {
         fputs("claims       ", out);
@@ -321,10 +447,15 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
                         tri_word_data(rep->claim_order_family_status[f], "holds", "FALSE", 0));
         fputc('\n', out);
     }
-    if (rep->against_checked && rep->against_stages > 0) {
+}
+
+/* with --against (the row's condition) */
+static void text_against(FILE *out, const vigen_check_report *rep)
+{
+    if (rep->against_stages > 0) {
         fprintf(out, "against       the tableaux cannot be compared: %ld stage%s here, %ld there\n", (long)rep->s,
                 rep->s == 1 ? "" : "s", (long)rep->against_stages);
-    } else if (rep->against_checked) {
+    } else {
         fprintf(out, "against       %ld entr%s differ%s beyond the certified precision",
                 (long)rep->against_differences, rep->against_differences == 1 ? "y" : "ies",
                 rep->against_differences == 1 ? "s" : "");
@@ -337,17 +468,25 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         }
         fputc('\n', out);
     }
+}
 
+static void text_undecided(FILE *out, const vigen_check_report *rep)
+{
     if (rep->undecided_left)
         fprintf(out, "undecided     %ld conditions at %ld bits: %s\n", (long)rep->undecided_left, (long)rep->prec,
                 rep->undecided_reason ? rep->undecided_reason : "");
+}
+
+/* symplecticity pairs: the first 20; everything else: up to 40 lines */
+static void text_problems(FILE *out, const vigen_check_report *rep)
+{
     if (rep->nproblems) {
         fputs("problems\n", out);
         /* symplecticity pairs: the first 20; everything else: up to 40 lines */
         slong pairs = 0, pairs_shown = 0, other_shown = 0, other_hidden = 0;
         for (slong k = 0; k < rep->nproblems; k++) {
             const vigen_check_problem *p = rep->problems + k;
-            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
+            if (p->kind == VIGEN_CHECK_FAIL_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
         }
         for (slong k = 0; k < rep->nproblems; k++) {
             const vigen_check_problem *p = rep->problems + k;
@@ -355,7 +494,7 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
             if (k > 0 && p->diagnosed && rep->problems[k - 1].diagnosed &&
                 strcmp(p->message, rep->problems[k - 1].message) == 0)
                 continue;
-            if (p->kind == VIGEN_PROBLEM_SYMPLECTIC && !p->diagnosed && p->col > 0) {
+            if (p->kind == VIGEN_CHECK_FAIL_SYMPLECTIC && !p->diagnosed && p->col > 0) {
                 if (pairs_shown < 20) {
                     problem_line(out, p->message);
                     if (++pairs_shown == 20 && pairs > 20)
@@ -370,7 +509,16 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         }
         if (other_hidden) fprintf(out, "  ... and %ld more problems (all of them with --json)\n", (long)other_hidden);
     } else fputs("problems      none\n", out);
+}
+
+static void text_notation(FILE *out, const vigen_check_report *rep)
+{
     fprintf(out, "trees: %s\n", vigen_tree_notation_help());
+}
+
+/* the verdict and the exit status */
+static void text_result(FILE *out, const vigen_check_report *rep)
+{
     int within = rep->consistent_within_data || rep->claim_order_within_data || rep->claim_symplectic_within_data;
     /* exit 1 with nothing certainly false: undecided, not failed */
     int failed = rep->consistent == VIGEN_CHECK_NO || (rep->claim_order >= 0 && rep->claim_order_status == VIGEN_CHECK_NO) ||
@@ -385,3 +533,25 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
             rep->exit_code);
 }
 
+void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
+{
+    const struct {
+        int at;
+        void (*print)(FILE *, const vigen_check_report *);
+        int when;
+    } rows[] = {
+#define X(key, type, value, sep, when, text_at, text_fn) {text_at, text_fn, (when) != 0},
+#include "report/check_fields.def"
+#undef X
+    };
+    enum { NROWS = sizeof(rows) / sizeof(rows[0]) };
+    /* the rows in increasing text_at (distinct places, a few dozen rows) */
+    for (int last = 0;;) {
+        int next = -1;
+        for (int k = 0; k < NROWS; k++)
+            if (rows[k].print && rows[k].at > last && (next < 0 || rows[k].at < rows[next].at)) next = k;
+        if (next < 0) break;
+        if (rows[next].when) rows[next].print(out, rep);
+        last = rows[next].at;
+    }
+}

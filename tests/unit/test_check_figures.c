@@ -1,6 +1,6 @@
 /* test_check_figures.c — the figures of `vigen check`: principal error
  * constants, the linear stability interval, the cost of a step
- * (src/check/figures.c, stability.c).
+ * (src/check/error_cost.c, stability.c).
  *
  * Sources of the expected values (never this code's own output):
  *  - error coefficients e(t) = (Phi(t) - 1/gamma(t)) / sigma(t) worked by

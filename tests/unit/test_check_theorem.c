@@ -39,7 +39,7 @@ static double now(void)
 static const char *claim_message(const vigen_check_report *rep)
 {
     for (slong k = 0; k < rep->nproblems; k++)
-        if (rep->problems[k].kind == VIGEN_PROBLEM_CLAIM && strcmp(rep->problems[k].claim, "order") == 0)
+        if (rep->problems[k].kind == VIGEN_CHECK_FAIL_CLAIM && strcmp(rep->problems[k].claim, "order") == 0)
             return rep->problems[k].message;
     return "";
 }

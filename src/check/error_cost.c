@@ -1,4 +1,4 @@
-/* figures.c — the figures by which methods are compared: the error constants
+/* error_cost.c — the figures by which methods are compared: the error constants
  * (from the principal error coefficients that orders.c sums per order) and
  * the cost of a step (stages, force and velocity evaluations, explicit or
  * implicit).  The stability interval is stability.c's.

@@ -1,5 +1,6 @@
-/* report.c — the report of `vigen check`: options and report set up and torn
- * down, and the list of problems the checks file into it.
+/* report_init.c — the report of `vigen check` as data: options and report
+ * set up and torn down, and the list of problems the checks file into it
+ * (src/report/check_text.c and check_json.c print it).
  */
 #include <stdlib.h>
 #include <string.h>
