@@ -26,7 +26,7 @@
  *    form an s-point quadrature rule (the bushy trees), exact at most up to
  *    degree 2s - 1 (Hairer, Norsett, Wanner I, sec. II.7);
  *  - a decimal with k digits after the point is read as the ball of radius
- *    10^-k / 2 (README, "Tableau files"), and the rule for rounded data holds
+ *    10^-k / 2 (docs/tableaux.md), and the rule for rounded data holds
  *    a condition only with a radius at most 2^-10 of its terms (check.h).
  * Deliberately broken copies change an entry by a known exact amount (1/10^45,
  * e^-110, 1/5 for 1/6, 0.51 for 1/2): the defects they cause follow.
