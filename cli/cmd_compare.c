@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "vigen/compare.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 enum { MAX_FILES = 64 };
 

@@ -5,6 +5,7 @@
 #include <string.h>
 #include "cli.h"
 #include "vigen/try.h"
+#include "support/strbuf.h"
 
 /* The methods of the operand, one a line (options.c collects them). */
 static size_t split_methods(char *text, const char **methods, size_t cap)

@@ -6,7 +6,9 @@
 #include <string.h>
 #include <strings.h>
 #include "cli.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
+#include "support/strbuf.h"
+#include "support/nearest.h"
 
 const vigen_cli_command vigen_cli_commands[VIGEN_CMD_COUNT] = {
 #define COMMAND(name, operand, ask, summary, help) { #name, operand, ask, summary, help },

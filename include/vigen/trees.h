@@ -107,7 +107,10 @@ int vigen_forest_tree_order(const vigen_treeset *ts, const slong *ids, int k);
 ulong vigen_forest_tree_gamma(const vigen_treeset *ts, const slong *ids, int k);
 int vigen_forest_tree_flags(const vigen_treeset *ts, int colour, const slong *ids, int k);
 
-/* Appends the bracket notation of a stored tree, or of the tree (colour, forest). */
+/* Appends the bracket notation of a stored tree, or of the tree (colour,
+ * forest), to sb: a growable string of libvigen's own (support/strbuf.h,
+ * not installed), for the reports the library writes. */
+typedef struct vigen_strbuf vigen_strbuf;
 void vigen_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, slong id);
 void vigen_forest_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, int colour,
                               const slong *ids, int k);

@@ -45,7 +45,7 @@ typedef struct {
     long steps_per_period;  /* 0: VIGEN_TRY_DEFAULT_STEPS_PER_PERIOD */
     double time;            /* final time; 0: the problem's default time */
     const char *cc;         /* C compiler; NULL: $CC, else "cc" */
-    int progress;           /* 1: a progress line on stderr (vigen/progress.h) */
+    int progress;           /* 1: a progress line on stderr (support/progress.h) */
 } vigen_try_options;
 
 /* Fills opt from the texts of the command line's options (NULL: absent):

@@ -15,6 +15,7 @@
 #include <string.h>
 #include "core/decimal.h"
 #include "core/expr_internal.h"
+#include "support/strbuf.h"
 
 /* Nesting limit: keeps the recursive parser, evaluator and destructor far
  * away from the end of the C stack.  Real expressions nest a few levels. */

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "emit/batch.h"
+#include "support/strbuf.h"
 
 /* The time array of an evaluation: t0, t1, or ts filled with t0[j] + c h
  * (the scalar stepper's expression per trajectory). */

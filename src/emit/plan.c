@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "emit/plan.h"
+#include "support/strbuf.h"
 
 enum { K_TEMP = 0, K_ZERO = 1, K_END = 2 };
 

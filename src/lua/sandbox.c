@@ -34,11 +34,12 @@
 #include <lauxlib.h>
 #include <lualib.h>
 
-#include "core/file.h"
+#include "support/file.h"
 #include "lua/ball.h"
 #include "core/expr.h"
 #include "lua/sandbox.h"
 #include "lua/sandbox_caps.h"
+#include "support/strbuf.h"
 
 #define MIB ((size_t)1 << 20)
 

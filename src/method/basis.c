@@ -9,6 +9,7 @@
 #include "method/basis.h"
 #include "method/families.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
 
 enum { FN_POLY, FN_TRIG, FN_EXPR, FN_LUA };
 

@@ -8,6 +8,7 @@
 #include "method/methods.h"
 #include "method/method_tableau.h"
 #include "method/vocabulary.h"
+#include "support/strbuf.h"
 
 typedef struct {
     char *path;

@@ -30,6 +30,7 @@
 #include <flint/fmpz_poly.h>
 
 #include "method/nodes.h"
+#include "support/strbuf.h"
 
 #define NODES_GUARD 16
 

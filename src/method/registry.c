@@ -6,6 +6,7 @@
 #include "method/methods.h"
 #include "method/vocabulary.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 enum {
 #define X(id, name, detect, read, tableau, release, generated, fields, description) VIGEN_METHOD_##id,

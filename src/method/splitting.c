@@ -27,6 +27,7 @@
 #include "method/methods.h"
 #include "method/method_tableau.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 static vigen_name_resolver_fn name_resolver;
 

@@ -7,9 +7,10 @@
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "lua/quote.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
 #include "vigen/tableau.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
 
 static char **texts_new(slong n)
 {

@@ -1,12 +1,13 @@
 /* check_text.c — the text report of `vigen check` (vigen_check_print_text).
  * Texts that may come from the file (the path, the name, notes and problems
- * quoting entries) are printed escaped (vigen/printable.h). */
+ * quoting entries) are printed escaped (support/printable.h). */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
 #include "check/balls.h"
 #include "report/check_figures.h"
+#include "support/strbuf.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",

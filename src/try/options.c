@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 static int positive(double *out, const char *name, const char *text, vigen_error *err)
 {

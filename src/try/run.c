@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 void try_result_clear(vigen_try_result *r)
 {

@@ -4,7 +4,8 @@
 #   (b) the modules src/<module>/ include each other without a cycle (the
 #       edges are the `#include "<module>/..."` lines of their .c, .h and .def
 #       files; a module including itself is no edge);
-#   (c) cli/ includes, among quoted includes, only public "vigen/..." headers
+#   (c) cli/ includes, among quoted includes, only public "vigen/..." headers,
+#       the headers of the support library ("support/...", not installed)
 #       and its own files;
 #   (d) the public headers include/vigen/ include, among quoted includes, only
 #       "vigen/..." headers.
@@ -54,13 +55,14 @@ if ! loop=$(cut -d' ' -f1,2 "$edges" | sort -u | tsort 2>&1 >/dev/null); then
   done <"$edges"
 fi
 
-# (c) the command line sees the public headers only
+# (c) the command line sees the public headers and the support library only
 while IFS=: read -r file line target; do
   case $target in
     vigen/*) ;;
-    */*) fail "$file:$line includes \"$target\"; cli/ may include only public \"vigen/...\" headers" ;;
+    support/*) [ -f "src/$target" ] || fail "$file:$line includes \"$target\", which src/support/ does not have" ;;
+    */*) fail "$file:$line includes \"$target\"; cli/ may include only public \"vigen/...\" and \"support/...\" headers" ;;
     *) [ -f "cli/$target" ] ||
-         fail "$file:$line includes \"$target\"; cli/ may include only public \"vigen/...\" headers and its own files" ;;
+         fail "$file:$line includes \"$target\"; cli/ may include only public \"vigen/...\" and \"support/...\" headers and its own files" ;;
   esac
 done < <(quoted_includes $(find cli -type f | sort))
 

@@ -11,6 +11,7 @@
 #include <flint/fmpq.h>
 #include "core/expr.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 /* ---- helpers ----------------------------------------------------------- */
 
