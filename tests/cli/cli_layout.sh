@@ -8,7 +8,9 @@
 #       the headers of the support library ("support/...", not installed)
 #       and its own files;
 #   (d) the public headers include/vigen/ include, among quoted includes, only
-#       "vigen/..." headers.
+#       "vigen/..." headers;
+#   (e) no two source files (.c, .h, .def) of src/, cli/, include/ and
+#       runtime/ share a name, so that a name says which file it is.
 # One line per violation; exit status 1 if there is any.  VIGEN is unused
 # (the tree is what is tested) and taken like every cli test's.
 set -u
@@ -73,6 +75,11 @@ while IFS=: read -r file line target; do
     *) fail "$file:$line includes \"$target\"; a public header may include only \"vigen/...\" headers" ;;
   esac
 done < <(quoted_includes $(find include/vigen -type f | sort))
+
+# (e) one file per name
+while read -r name; do
+  fail "several source files are called $name: $(find src cli include runtime -type f -name "$name" | sort | tr '\n' ' ')"
+done < <(find src cli include runtime -type f \( -name '*.c' -o -name '*.h' -o -name '*.def' \) -printf '%f\n' | sort | uniq -d)
 
 [ "$failures" -eq 0 ] || exit 1
 echo "cli_layout: all checks passed"

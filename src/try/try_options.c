@@ -1,4 +1,4 @@
-/* options.c — the options of `vigen try` and `vigen order` as the command
+/* try_options.c — the options of `vigen try` and `vigen order` as the command
  * line gives them (texts) made into vigen_try_options, with messages naming
  * the option and what it takes. */
 #include <math.h>

@@ -1,4 +1,4 @@
-/* options.c — the tables of commands.def as arrays, and the one option
+/* option_parser.c — the tables of commands.def as arrays, and the one option
  * parser every command uses: --opt VALUE, --opt=VALUE, -o VALUE, flags, the
  * global options anywhere on the line, did-you-mean for mistyped options. */
 #include <stdarg.h>
