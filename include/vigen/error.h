@@ -25,6 +25,7 @@ typedef struct {
     char *message;  /* heap string or NULL; owned by the record */
 } vigen_error;
 
+/* An empty record (VIGEN_OK, no message). */
 void vigen_error_init(vigen_error *err);
 void vigen_error_clear(vigen_error *err);          /* frees the message, code = VIGEN_OK */
 /* Records code and a printf-style message (replacing any earlier one); returns code. */

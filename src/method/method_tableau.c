@@ -15,7 +15,8 @@ typedef struct {
     vigen_tableau read;     /* texts and metadata as the file states them */
 } tableau_state;
 
-int vigen_method_tableau_read(void **state, vigen_sandbox *sb, const char *path, vigen_error *err)
+int vigen_method_tableau_read(void **state, vigen_sandbox *sb, const char *path, vigen_method_loader load,
+                                vigen_error *err)
 {
     *state = NULL;
     tableau_state *st = calloc(1, sizeof *st);

@@ -1,6 +1,6 @@
 /* tableau.c — the tableau record: its balls evaluated from the entry texts,
  * the texts certified from the balls, the tableau file written out (read by
- * lua/tableau_file.c) and the symplecticity residual. */
+ * method/tableau_file.c) and the symplecticity residual. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>

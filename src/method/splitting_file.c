@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "support/printable.h"
-#include "lua/splitting_file.h"
-#include "lua/tableau_file.h"
+#include "method/splitting_file.h"
+#include "method/tableau_file.h"
 #include "vigen/limits.h"
 #include "support/strbuf.h"
 #include "support/nul.h"

@@ -13,7 +13,7 @@
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "support/printable.h"
-#include "lua/tableau_file.h"
+#include "method/tableau_file.h"
 #include "vigen/limits.h"
 #include "support/strbuf.h"
 #include "support/nearest.h"
