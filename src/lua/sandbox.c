@@ -7,7 +7,8 @@
  *   - what would run outside the instruction cap is refused: setmetatable
  *     with a __gc field (Lua runs finalisers with hooks off) and the pattern
  *     functions string.find/match/gmatch/gsub (backtracking in C);
- *   - the allocator counts bytes and refuses to pass memory_limit;
+ *   - the allocator counts bytes and refuses to pass memory_limit (it and
+ *     the instruction hook below are in sandbox_caps.c);
  *   - a count hook charges executed VM instructions against a budget that is
  *     reset at every top-level call; work done in C is charged too: what is
  *     allocated (BYTES_PER_INSTRUCTION) and what the library functions that
