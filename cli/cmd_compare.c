@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "vigen/compare.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 enum { MAX_FILES = 64 };
 
@@ -25,7 +26,7 @@ int vigen_cmd_compare(const vigen_cli_args *args)
         if ((rc = vigen_cli_whole(&n, args, VIGEN_OPT_compare_max_order, 1, VIGEN_TREE_MAX_ORDER)) >= 0) return rc;
         opt.max_order = (int)n;
     }
-    /* the operand holds the files one a line (options.c collects them) */
+    /* the operand holds the files one a line (option_parser.c collects them) */
     char *text = vigen_strdup(args->operand);
     const char *paths[MAX_FILES];
     size_t count = 0;

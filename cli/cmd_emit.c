@@ -6,7 +6,8 @@
 #include <sys/stat.h>
 #include "cli.h"
 #include "vigen/emit.h"
-#include "vigen/file.h"
+#include "support/file.h"
+#include "support/strbuf.h"
 
 /* A stepper that is not what its user expects is worth a warning even with
  * -q: the conditions that certainly fail. */

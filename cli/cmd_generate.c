@@ -4,8 +4,9 @@
 #include "cli.h"
 #include "vigen/check.h"
 #include "vigen/method.h"
-#include "vigen/printable.h"
-#include "vigen/progress.h"
+#include "support/printable.h"
+#include "support/file.h"
+#include "support/progress.h"
 #include "vigen/tableau.h"
 
 static void print_summary(vigen_tableau *t, slong digits)

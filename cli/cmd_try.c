@@ -5,8 +5,9 @@
 #include <string.h>
 #include "cli.h"
 #include "vigen/try.h"
+#include "support/strbuf.h"
 
-/* The methods of the operand, one a line (options.c collects them). */
+/* The methods of the operand, one a line (option_parser.c collects them). */
 static size_t split_methods(char *text, const char **methods, size_t cap)
 {
     size_t n = 0;

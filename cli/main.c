@@ -9,9 +9,10 @@
 #include "cli.h"
 #include "vigen/library.h"
 #include "vigen/method.h"
-#include "vigen/guard.h"
+#include "support/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
+#include "support/strbuf.h"
 
 typedef int (*handler_fn)(const vigen_cli_args *args);
 
@@ -43,7 +44,7 @@ static int apply_sandbox_options(const vigen_cli_args *args)
     return -1;
 }
 
-/* Caps of the process (vigen/guard.h): --max-seconds, and the arithmetic's
+/* Caps of the process (support/guard.h): --max-seconds, and the arithmetic's
  * memory, VIGEN_CLI_ARITH_FACTOR times --max-memory.  The time cap is finite
  * because vigen runs at build time on files from elsewhere: a build step
  * that hangs is worse than one that fails.  The specs of tableaux/ generate

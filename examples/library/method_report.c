@@ -28,6 +28,15 @@ static int fail(const char *what, vigen_error *err)
     return status;
 }
 
+/* Writes text to path; VIGEN_E_WRITE with a message naming the file. */
+static int write_text(const char *path, const char *text, vigen_error *err)
+{
+    FILE *f = fopen(path, "w");
+    int ok = f != NULL && fputs(text, f) >= 0;
+    if (f != NULL && fclose(f) != 0) ok = 0;
+    return ok ? VIGEN_OK : vigen_error_set(err, VIGEN_E_WRITE, "%s: cannot write the file", path);
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || argc > 3) {
@@ -72,8 +81,8 @@ int main(int argc, char **argv)
             char *hp = malloc(strlen(argv[2]) + strlen(ident) + 4), *cp = malloc(strlen(argv[2]) + strlen(ident) + 4);
             sprintf(hp, "%s/%s.h", argv[2], ident);
             sprintf(cp, "%s/%s.c", argv[2], ident);
-            rc = vigen_write_file_atomic(hp, h, &err);
-            if (rc == VIGEN_OK) rc = vigen_write_file_atomic(cp, c, &err);
+            rc = write_text(hp, h, &err);
+            if (rc == VIGEN_OK) rc = write_text(cp, c, &err);
             free(hp);
             free(cp);
         }

@@ -1,6 +1,5 @@
 /* error.h — integer status codes and the error record every vigen function
- * fills, and the string helpers messages are built with (growable strings,
- * heap formatting, "did you mean" hints).
+ * fills, and the hook warnings go through.
  *
  * A function that can fail returns one of the VIGEN_* codes (VIGEN_OK = 0) and,
  * when it fails, writes a human-readable message into a vigen_error supplied by
@@ -26,6 +25,7 @@ typedef struct {
     char *message;  /* heap string or NULL; owned by the record */
 } vigen_error;
 
+/* An empty record (VIGEN_OK, no message). */
 void vigen_error_init(vigen_error *err);
 void vigen_error_clear(vigen_error *err);          /* frees the message, code = VIGEN_OK */
 /* Records code and a printf-style message (replacing any earlier one); returns code. */
@@ -50,29 +50,6 @@ int vigen_status_exit_code(int code);
 typedef void (*vigen_warning_fn)(const char *message, void *ctx);
 void vigen_warning_set_handler(vigen_warning_fn fn, void *ctx);
 void vigen_warn(const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 1, 2)))
-#endif
-    ;
-
-/* Growable string (no fixed-size buffers anywhere in the generator). */
-typedef struct { char *data; size_t len, cap; } vigen_strbuf;
-void vigen_strbuf_init(vigen_strbuf *sb);
-void vigen_strbuf_clear(vigen_strbuf *sb);
-void vigen_strbuf_append(vigen_strbuf *sb, const char *text);
-void vigen_strbuf_appendn(vigen_strbuf *sb, const char *text, size_t n);
-void vigen_strbuf_printf(vigen_strbuf *sb, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 2, 3)))
-#endif
-    ;
-/* The name in the NULL-terminated list names closest to key (Levenshtein
- * distance), when at most max_edits away and closer than the key's length;
- * NULL otherwise.  For "did you mean" hints. */
-const char *vigen_nearest_name(const char *key, const char *const *names, size_t max_edits);
-
-char *vigen_strdup(const char *s);
-char *vigen_strdup_printf(const char *fmt, ...)
 #if defined(__GNUC__)
     __attribute__((format(printf, 1, 2)))
 #endif

@@ -14,6 +14,8 @@ typedef struct {
     long instruction_limit;   /* VM instructions per top-level call; default 50 million (<= 0: the default) */
 } vigen_sandbox_limits;
 
+/* The process-wide defaults (256 MiB, 50 million instructions, unless
+ * changed by vigen_sandbox_limits_set_default). */
 void vigen_sandbox_limits_default(vigen_sandbox_limits *limits);
 /* Changes the process-wide defaults (fields <= 0 are left as they are). */
 void vigen_sandbox_limits_set_default(const vigen_sandbox_limits *limits);

@@ -21,8 +21,12 @@ int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_er
  * vigen_method_tableau, as often as it needs, without running the file again. */
 typedef struct vigen_method vigen_method;
 
+/* Runs the file at path once in a sandbox with these caps and reads it as
+ * the kind of method it is; *out is NULL after a failure, whose message
+ * names the file. */
 int vigen_method_load(vigen_method **out, const char *path, const vigen_sandbox_limits *limits /* NULL: defaults */,
                       vigen_error *err);
+/* Frees a loaded method (NULL: nothing). */
 void vigen_method_free(vigen_method *m);
 /* 1 when the tableau is computed from the file at the digits asked for (a
  * spec), 0 when the file states it (a tableau file). */

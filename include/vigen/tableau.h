@@ -21,7 +21,6 @@
 #include <arb.h>
 #include <arb_mat.h>
 #include "vigen/error.h"
-#include "vigen/file.h"
 #include "vigen/limits.h"
 
 typedef struct {

@@ -70,11 +70,13 @@ void vigen_treeset_clear(vigen_treeset *ts);
 /* Number of stored trees of the given order (0 when order is out of range). */
 slong vigen_treeset_count(const vigen_treeset *ts, int order);
 
+/* The stored tree with this id. */
 static inline const vigen_tree *vigen_treeset_tree(const vigen_treeset *ts, slong id)
 {
     return ts->trees + id;
 }
 
+/* The ids of the children of the stored tree with this id. */
 static inline const slong *vigen_treeset_children(const vigen_treeset *ts, slong id)
 {
     return ts->child_ids + ts->trees[id].children;
@@ -97,6 +99,8 @@ typedef struct {
     int started, done;
 } vigen_forest_iter;
 
+/* An iterator over the forests of total order m of stored trees (freed by
+ * vigen_forest_iter_clear). */
 void vigen_forest_iter_init(vigen_forest_iter *it, const vigen_treeset *ts, int m);
 void vigen_forest_iter_clear(vigen_forest_iter *it);
 /* 1 when a forest is available in it->ids[0 .. it->k - 1], 0 at the end. */
@@ -107,7 +111,10 @@ int vigen_forest_tree_order(const vigen_treeset *ts, const slong *ids, int k);
 ulong vigen_forest_tree_gamma(const vigen_treeset *ts, const slong *ids, int k);
 int vigen_forest_tree_flags(const vigen_treeset *ts, int colour, const slong *ids, int k);
 
-/* Appends the bracket notation of a stored tree, or of the tree (colour, forest). */
+/* Appends the bracket notation of a stored tree, or of the tree (colour,
+ * forest), to sb: a growable string of libvigen's own (support/strbuf.h,
+ * not installed), for the reports the library writes. */
+typedef struct vigen_strbuf vigen_strbuf;
 void vigen_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, slong id);
 void vigen_forest_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, int colour,
                               const slong *ids, int k);

@@ -45,7 +45,7 @@ typedef struct {
     long steps_per_period;  /* 0: VIGEN_TRY_DEFAULT_STEPS_PER_PERIOD */
     double time;            /* final time; 0: the problem's default time */
     const char *cc;         /* C compiler; NULL: $CC, else "cc" */
-    int progress;           /* 1: a progress line on stderr (vigen/progress.h) */
+    int progress;           /* 1: a progress line on stderr while it runs */
 } vigen_try_options;
 
 /* Fills opt from the texts of the command line's options (NULL: absent):
@@ -125,9 +125,14 @@ typedef struct {
     char *message;           /* a failed run at some h (later points left out), or NULL */
 } vigen_try_wp_curve;
 
+/* The curves of the n methods, each run at `levels` steps h halved from
+ * the plan's (*curves: n curves, freed by vigen_try_wp_free); a method that
+ * fails at some h keeps its points before and says why in its message. */
 int vigen_try_work_precision(size_t n, const char *const *methods, const vigen_try_options *opt, int levels,
                              vigen_try_wp_curve **curves, vigen_error *err);
+/* Frees the n curves (and the array). */
 void vigen_try_wp_free(vigen_try_wp_curve *c, size_t n);
+/* The curves as a text table, one block per method. */
 void vigen_try_wp_print(FILE *out, const vigen_try_wp_curve *c, size_t n);
 /* {"problem", "params", "error_is_energy", "methods": [{"name", "points":
  * [{"h", "evals", "seconds", "error"}], "failed"}]} */
@@ -156,9 +161,13 @@ typedef struct {
     double estimate;           /* the order of the finest pair whose errors lie above round-off */
 } vigen_try_order_result;
 
+/* The order of the method measured at `levels` levels into *res (cleared by
+ * vigen_try_order_clear). */
 int vigen_try_order(const char *method, const vigen_try_options *opt, int levels, vigen_try_order_result *res,
                     vigen_error *err);
+/* Frees what vigen_try_order filled in. */
 void vigen_try_order_clear(vigen_try_order_result *res);
+/* The result as a text table or (json = 1) as JSON. */
 void vigen_try_order_print(FILE *out, const vigen_try_options *opt, const vigen_try_order_result *res, int json);
 /* order.csv, order.svg, order.png: error against h, log-log, with the line
  * of slope `certified` through the finest point. */

@@ -13,18 +13,16 @@
 #define VIGEN_VIGEN_H
 
 #include "vigen/error.h"
-#include "vigen/file.h"
-#include "vigen/guard.h"
 #include "vigen/limits.h"
 #include "vigen/tableau.h"
 #include "vigen/method.h"
-#include "vigen/printable.h"
 #include "vigen/trees.h"
 #include "vigen/check.h"
 #include "vigen/show.h"
+#include "vigen/compare.h"
 #include "vigen/emit.h"
-#include "vigen/progress.h"
 #include "vigen/try.h"
+#include "vigen/library.h"
 
 /* The version of the library ("0.1.0"). */
 const char *vigen_version(void);

@@ -3,6 +3,7 @@
  */
 #include <stdlib.h>
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 /* Largest |entry| of each matrix or vector, the scale of the comparisons. */
 static void entries_scale(mag_t m, const arb_srcptr *vecs, slong nvec, slong len)

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include "vigen/error.h"
 #include "check/balls.h"
+#include "support/strbuf.h"
 
 /* Digits enough to see the difference between x and y (8 .. 45). */
 slong vigen_ball_digits_to_separate(const arb_t x, const arb_t y, slong prec)

@@ -5,6 +5,7 @@
 #include <string.h>
 #include "check/check_internal.h"
 #include "vigen/check.h"
+#include "support/strbuf.h"
 
 typedef struct {
     const char *name;

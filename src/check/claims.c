@@ -4,6 +4,7 @@
 #include <limits.h>
 #include <stdlib.h>
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 /* What a level says about "the order is exactly p": 2 certainly, 1 possibly, 0 not. */
 static int level_is(const vigen_check_level *L, int p)

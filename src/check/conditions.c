@@ -4,6 +4,7 @@
  */
 #include <stdlib.h>
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 const char *const chk_matrix_names[6] = {"A", "At", "b", "bt", "c", "ct"};
 

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "core/decimal.h"
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 /* Solves condition c for entry e: writes x with c(x) = 0 nearest the current
  * value (the condition is at most quadratic in one entry); 0 if it cannot. */

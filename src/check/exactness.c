@@ -7,6 +7,7 @@
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 static int text_exact(char **texts, slong k)
 {

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 static slong word_len(slong w)
 {

@@ -8,6 +8,7 @@
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 /* Decimal digits needed to see every literal of an exact expression: the
  * digits of its longest number (all digits of the mantissa, leading zeros

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check/check_internal.h"
+#include "support/strbuf.h"
 
 /* the highest order whose conditions get the mean-value enclosure */
 enum { CHK_MEANVALUE_MAX_ORDER = 8 };

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "check/check_internal.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
 
 /* Evaluates t at prec (texts), retrying higher on precision-dependent domain
  * errors; a tableau without texts keeps its balls. */

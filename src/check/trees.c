@@ -2,6 +2,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/trees.h"
+#include "support/strbuf.h"
 
 const char *vigen_tree_notation_help(void)
 {

@@ -13,6 +13,7 @@
 #include <flint/fmpz.h>
 #include "core/decimal.h"
 #include "vigen/error.h"
+#include "support/strbuf.h"
 
 /* y = x * 10^k (k may be negative), at precision prec. */
 static void scale_pow10(arb_t y, const arb_t x, slong k, slong prec)

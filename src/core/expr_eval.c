@@ -294,19 +294,3 @@ double vigen_expr_magnitude_span_bits(const vigen_expr *e)
     span_node(e->root, &lo, &hi, &any);
     return any ? (double)(hi - lo) : 0.0;
 }
-
-/* ------------------------------------------------------------------------ */
-/* Parse and evaluate                                                         */
-
-int vigen_expr_eval_string(arb_t res, const char *text, slong prec, vigen_error *err)
-{
-    vigen_expr *e;
-    int rc = vigen_expr_parse(&e, text, 0, err);
-    if (rc != VIGEN_OK) {
-        arb_indeterminate(res);
-        return rc;
-    }
-    rc = vigen_expr_eval_arb(res, e, NULL, prec, err);
-    vigen_expr_free(e);
-    return rc;
-}

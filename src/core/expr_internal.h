@@ -98,6 +98,20 @@ extern const expr_constant expr_constants[EXPR_CONST_COUNT];
 #include "core/functions.def"
 #undef X
 void expr_neg_cos(arb_t res, const arb_t x, slong prec);
+
+/* The arithmetic of Q(sqrt d) (expr_quad.c).  A value starts as 0 (init)
+ * and is freed by clear; the operations return 0, leaving the result
+ * unspecified, when the value would leave Q and one Q(sqrt d) or outgrow the
+ * size limits (small says whether it is within them).  sqrt is also the
+ * exact rule of sqrt in functions.def; pow takes any integer exponent. */
+void expr_quad_init(expr_quad *x);
+void expr_quad_clear(expr_quad *x);
+void expr_quad_swap(expr_quad *x, expr_quad *y);
+int expr_quad_small(const expr_quad *x);
+int expr_quad_add(expr_quad *res, const expr_quad *x, const expr_quad *y, int sign);
+int expr_quad_mul(expr_quad *res, const expr_quad *x, const expr_quad *y);
+int expr_quad_inv(expr_quad *x);
+int expr_quad_pow(expr_quad *x, slong k);
 int expr_quad_sqrt(expr_quad *x);
 
 /* Real evaluation of a subtree (expr_eval.c).  err may be NULL: then no

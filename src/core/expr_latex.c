@@ -3,6 +3,7 @@
  * LaTeX form, parentheses only where the binding strength needs them. */
 #include <stdlib.h>
 #include "core/expr_internal.h"
+#include "support/strbuf.h"
 
 /* Binding strength of a node as LaTeX shows it: sums 1, products 2, unary
  * minus 3, powers 4, atoms (numbers, pi, t, functions, fractions) 5. */

@@ -15,6 +15,7 @@
 #include <string.h>
 #include "core/decimal.h"
 #include "core/expr_internal.h"
+#include "support/strbuf.h"
 
 /* Nesting limit: keeps the recursive parser, evaluator and destructor far
  * away from the end of the C stack.  Real expressions nest a few levels. */
@@ -634,3 +635,18 @@ int vigen_expr_depends_on_t(const vigen_expr *e) { return e->root->has_t; }
 
 const char *vigen_expr_text(const vigen_expr *e) { return e->text; }
 
+/* ------------------------------------------------------------------------ */
+/* Parse and evaluate                                                         */
+
+int vigen_expr_eval_string(arb_t res, const char *text, slong prec, vigen_error *err)
+{
+    vigen_expr *e;
+    int rc = vigen_expr_parse(&e, text, 0, err);
+    if (rc != VIGEN_OK) {
+        arb_indeterminate(res);
+        return rc;
+    }
+    rc = vigen_expr_eval_arb(res, e, NULL, prec, err);
+    vigen_expr_free(e);
+    return rc;
+}

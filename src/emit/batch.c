@@ -2,7 +2,7 @@
  * templates/prk/batch.h.in and batch.c.in): the C lines of one explicit step
  * of W trajectories side by side, in structure-of-arrays layout (component
  * k of trajectory j at x[k W + j]).  The operations are those of the scalar
- * explicit step (plan.c), in the same order and with the same expressions
+ * explicit step (step_plan.c), in the same order and with the same expressions
  * per element, so that every trajectory gets the bits of the scalar
  * stepper; what changes is that the loops run over n W elements, that times
  * are arrays of W (t0[j], t1[j], ts[j]), that batched gradients or forces
@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "emit/batch.h"
+#include "support/strbuf.h"
 
 /* The time array of an evaluation: t0, t1, or ts filled with t0[j] + c h
  * (the scalar stepper's expression per trajectory). */

@@ -10,6 +10,7 @@
 #include "vigen/method.h"
 #include "emit/literals.h"
 #include "emit/variant.h"
+#include "support/strbuf.h"
 
 static const vigen_emit_variant variants[] = {
 #define X(name, description, builder) { name, description, builder },

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "emit/literals.h"
 #include "emit/names.h"
+#include "support/strbuf.h"
 
 
 

@@ -5,6 +5,7 @@
 #include <string.h>
 #include "vigen/emit.h"
 #include "emit/names.h"
+#include "support/strbuf.h"
 
 static const char *const c_keywords[] = {
 #define X(word) #word,

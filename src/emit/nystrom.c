@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "emit/prk.h"
+#include "support/strbuf.h"
 
 static char **strv0(slong n)
 {

@@ -5,7 +5,7 @@
 #ifndef VIGEN_EMIT_PRK_H
 #define VIGEN_EMIT_PRK_H
 
-#include "emit/plan.h"
+#include "emit/step_plan.h"
 #include "emit/variant.h"
 
 /* The rounded coefficients of one pass: literals, NULL for an exact zero

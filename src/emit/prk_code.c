@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "emit/prk.h"
+#include "support/strbuf.h"
 
 /* ------------------------------------------------------ expression texts */
 

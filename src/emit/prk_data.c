@@ -8,6 +8,7 @@
 #include "emit/batch.h"
 #include "emit/names.h"
 #include "emit/prk.h"
+#include "support/strbuf.h"
 
 #ifndef VIGEN_VERSION
 #define VIGEN_VERSION "unknown"

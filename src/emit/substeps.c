@@ -32,6 +32,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "emit/prk.h"
+#include "support/strbuf.h"
 
 void vigen_emit_sub_clear(sub_coefs *U)
 {

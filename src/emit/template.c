@@ -9,8 +9,9 @@
 #if defined(__linux__)
 #include <unistd.h>
 #endif
-#include "core/file.h"
+#include "support/file.h"
 #include "emit/template.h"
+#include "support/strbuf.h"
 
 /* ------------------------------------------------------------- slot sets */
 

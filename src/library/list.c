@@ -7,7 +7,8 @@
 #include "report/json.h"
 #include "vigen/check.h"
 #include "vigen/method.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
+#include "support/strbuf.h"
 
 typedef struct {
     char *name, *dir, *path;

@@ -8,6 +8,8 @@
 #include <sys/stat.h>
 #include "emit/template.h"
 #include "library/library_internal.h"
+#include "support/strbuf.h"
+#include "support/nearest.h"
 
 static int is_file(const char *path)
 {

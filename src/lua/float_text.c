@@ -6,6 +6,7 @@
 
 #include "vigen/error.h"
 #include "lua/float_text.h"
+#include "support/strbuf.h"
 
 size_t vigen_float_format(char *buf, size_t size, double x)
 {

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "lua/quote.h"
+#include "support/strbuf.h"
 
 void vigen_lua_quote(vigen_strbuf *out, const char *text)
 {

@@ -5,6 +5,7 @@
 #define VIGEN_QUOTE_H
 
 #include "vigen/error.h"
+#include "support/strbuf.h"
 
 /* Appends text as a Lua string literal that reads back as exactly text:
  * "..." when that needs no escape, otherwise a long bracket [==[...]==] whose

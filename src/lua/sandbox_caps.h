@@ -1,6 +1,6 @@
-/* sandbox_caps.h — what the sandbox's state (sandbox.c) shares with the
- * capped library functions (sandbox_libs.c): the sandbox struct and the calls
- * that charge work against the caps.  Internal to src/lua. */
+/* sandbox_caps.h — the sandbox struct and its caps (sandbox_caps.c): what
+ * the sandbox's state (sandbox.c) and the capped library functions
+ * (sandbox_libs.c) share.  Internal to src/lua. */
 #ifndef VIGEN_LUA_SANDBOX_CAPS_H
 #define VIGEN_LUA_SANDBOX_CAPS_H
 
@@ -38,6 +38,13 @@ struct vigen_sandbox {
     int depth;                      /* nesting of vigen_sandbox_pcall */
     char *display;                  /* file name for messages ("spec.lua") */
 };
+
+/* The allocator of a sandbox's state (lua_Alloc; ud is the sandbox): counts
+ * the bytes, refuses to pass the memory cap, charges what it allocates as
+ * instructions. */
+void *vigen_sandbox_alloc(void *ud, void *ptr, size_t osize, size_t nsize);
+/* Start of a top-level call: fresh instruction budget, cap flags cleared. */
+void vigen_sandbox_reset_budget(vigen_sandbox *sb);
 
 /* The sandbox a state belongs to (the allocator's user data). */
 vigen_sandbox *vigen_sandbox_of(lua_State *L);

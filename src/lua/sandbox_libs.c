@@ -9,8 +9,9 @@
 #include <lauxlib.h>
 #include <lualib.h>
 
-#include "core/printable.h"
+#include "support/printable.h"
 #include "lua/sandbox_caps.h"
+#include "support/strbuf.h"
 
 /* setmetatable without __gc: Lua runs finalisers with hooks off, so a
  * finaliser would escape the instruction cap (an endless __gc hangs lua_close). */

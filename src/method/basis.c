@@ -9,6 +9,7 @@
 #include "method/basis.h"
 #include "method/families.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
 
 enum { FN_POLY, FN_TRIG, FN_EXPR, FN_LUA };
 
@@ -137,12 +138,6 @@ static const struct {
 #undef X
 };
 
-const char *const vigen_basis_family_names[] = {
-#define X(name, fn, description) #name,
-#include "method/basis.def"
-#undef X
-    NULL };
-
 #define BASIS_NUM_FAMILIES ((slong)(sizeof(basis_families) / sizeof(basis_families[0])))
 
 static basis_family_fn basis_lookup(const char *name)
@@ -151,8 +146,6 @@ static basis_family_fn basis_lookup(const char *name)
         if (strcmp(basis_families[k].name, name) == 0) return basis_families[k].fn;
     return NULL;
 }
-
-int vigen_basis_is_family(const char *name) { return basis_lookup(name) != NULL; }
 
 static int init_family(vigen_basis *B, const char *family, slong prec, vigen_error *err)
 {

@@ -10,6 +10,7 @@
 #include "method/galerkin.h"
 #include "method/nodes.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
 
 slong vigen_galerkin_initial_prec(slong digits, slong s)
 {

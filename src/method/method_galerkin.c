@@ -3,7 +3,8 @@
 #include "method/galerkin.h"
 #include "method/methods.h"
 
-int vigen_method_galerkin_read(void **state, vigen_sandbox *sb, const char *path, vigen_error *err)
+int vigen_method_galerkin_read(void **state, vigen_sandbox *sb, const char *path, vigen_method_loader load,
+                                vigen_error *err)
 {
     vigen_spec *spec = NULL;
     int rc = vigen_spec_from_table(&spec, sb, path, err);

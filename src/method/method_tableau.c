@@ -8,13 +8,15 @@
 #include "method/methods.h"
 #include "method/method_tableau.h"
 #include "method/vocabulary.h"
+#include "support/strbuf.h"
 
 typedef struct {
     char *path;
     vigen_tableau read;     /* texts and metadata as the file states them */
 } tableau_state;
 
-int vigen_method_tableau_read(void **state, vigen_sandbox *sb, const char *path, vigen_error *err)
+int vigen_method_tableau_read(void **state, vigen_sandbox *sb, const char *path, vigen_method_loader load,
+                                vigen_error *err)
 {
     *state = NULL;
     tableau_state *st = calloc(1, sizeof *st);

@@ -30,6 +30,7 @@
 #include <flint/fmpz_poly.h>
 
 #include "method/nodes.h"
+#include "support/strbuf.h"
 
 #define NODES_GUARD 16
 
@@ -45,17 +46,11 @@ typedef struct {
     nodes_fn fn;
 } nodes_family;
 
-/* lookup and dispatch table, and the name list, from nodes.def */
+/* lookup and dispatch table from nodes.def (the name list is families.c's) */
 #define X(name, min_s, fn, description) { #name, min_s, fn },
 static const nodes_family nodes_families[] = {
 #include "method/nodes.def"
 };
-#undef X
-
-#define X(name, min_s, fn, description) #name,
-const char *const vigen_nodes_family_names[] = {
-#include "method/nodes.def"
-    NULL };
 #undef X
 
 #define NODES_NUM_FAMILIES ((slong)(sizeof(nodes_families) / sizeof(nodes_families[0])))
@@ -67,8 +62,6 @@ static const nodes_family *nodes_lookup(const char *name)
         if (strcmp(nodes_families[i].name, name) == 0) return &nodes_families[i];
     return NULL;
 }
-
-int vigen_nodes_is_family(const char *name) { return nodes_lookup(name) != NULL; }
 
 /* ---- helpers ------------------------------------------------------------- */
 

@@ -6,6 +6,7 @@
 #include "method/methods.h"
 #include "method/vocabulary.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 enum {
 #define X(id, name, detect, read, tableau, release, generated, fields, description) VIGEN_METHOD_##id,
@@ -14,27 +15,11 @@ enum {
     VIGEN_METHOD_KINDS
 };
 
-typedef struct {
-    const char *name;
-    int (*detect)(lua_State *L, int idx);
-    int (*read)(void **state, vigen_sandbox *sb, const char *path, vigen_error *err);
-    int (*tableau)(vigen_tableau *t, void *state, slong digits, vigen_error *err);
-    void (*release)(void *state);
-    int generated;
-    const char *fields;
-    const char *description;
-} method_kind;
-
 static const method_kind kinds[] = {
 #define X(id, name, detect, read, tableau, release, generated, fields, description)                            \
     { name, detect, read, tableau, release, generated, fields, description },
 #include "method/methods.def"
 #undef X
-};
-
-struct vigen_method {
-    const method_kind *kind;
-    void *state;
 };
 
 /* Runs protected: 1 = the value the file returned; returns the index of the
@@ -86,6 +71,11 @@ static int run_and_detect(vigen_sandbox **sb, const method_kind **kind, const ch
     return rc;
 }
 
+static int load_default(vigen_method **out, const char *path, vigen_error *err)
+{
+    return vigen_method_load(out, path, NULL, err);
+}
+
 int vigen_method_load(vigen_method **out, const char *path, const vigen_sandbox_limits *limits, vigen_error *err)
 {
     *out = NULL;
@@ -99,27 +89,13 @@ int vigen_method_load(vigen_method **out, const char *path, const vigen_sandbox_
         return vigen_error_set(err, VIGEN_E_MEMORY, "out of memory");
     }
     m->kind = kind;
-    rc = kind->read(&m->state, sb, path, err);
+    rc = kind->read(&m->state, sb, path, load_default, err);
     if (rc != VIGEN_OK) {
         free(m);
         return rc;
     }
     *out = m;
     return VIGEN_OK;
-}
-
-void vigen_method_free(vigen_method *m)
-{
-    if (m == NULL) return;
-    m->kind->release(m->state);
-    free(m);
-}
-
-int vigen_method_is_generated(const vigen_method *m) { return m->kind->generated; }
-
-int vigen_method_tableau(vigen_tableau *t, vigen_method *m, slong digits, vigen_error *err)
-{
-    return m->kind->tableau(t, m->state, digits, err);
 }
 
 int vigen_source_load(vigen_tableau *t, const char *path, slong digits, vigen_error *err)

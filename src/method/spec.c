@@ -20,7 +20,7 @@
 
 #include <lauxlib.h>
 
-#include "core/printable.h"
+#include "support/printable.h"
 #include "lua/ball.h"
 #include "lua/float_text.h"
 #include "lua/quote.h"
@@ -28,6 +28,9 @@
 #include "method/families.h"
 #include "method/vocabulary.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
+#include "support/nearest.h"
+#include "support/nul.h"
 
 static const char *const known_fields[] = { "name", "description", "source", "nodes", "basis", "order", NULL };
 

@@ -23,10 +23,11 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core/expr.h"
-#include "lua/splitting_file.h"
+#include "method/splitting_file.h"
 #include "method/methods.h"
 #include "method/method_tableau.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 static vigen_name_resolver_fn name_resolver;
 
@@ -168,7 +169,8 @@ static void take_info(vigen_tableau *t, vigen_tableau *info)
     t->digits = info->digits;
 }
 
-int vigen_method_splitting_read(void **state, vigen_sandbox *sb, const char *path, vigen_error *err)
+int vigen_method_splitting_read(void **state, vigen_sandbox *sb, const char *path, vigen_method_loader load,
+                                vigen_error *err)
 {
     *state = NULL;
     vigen_splitting sp;
@@ -239,7 +241,8 @@ static int base_path(char **out, const char *base, const char *path, vigen_error
                            "name ('vigen list' lists the names)", path, base);
 }
 
-int vigen_method_composition_read(void **state, vigen_sandbox *sb, const char *path, vigen_error *err)
+int vigen_method_composition_read(void **state, vigen_sandbox *sb, const char *path, vigen_method_loader load,
+                                vigen_error *err)
 {
     *state = NULL;
     composition_state *st = calloc(1, sizeof *st);
@@ -257,7 +260,7 @@ int vigen_method_composition_read(void **state, vigen_sandbox *sb, const char *p
                              "lead back to this file?)", path, MAX_NESTING);
     if (rc == VIGEN_OK) {
         nesting++;
-        rc = vigen_method_load(&st->base, base, NULL, err);
+        rc = load(&st->base, base, err);
         nesting--;
         if (rc != VIGEN_OK) vigen_error_prefix(err, "%s: composition.base: ", path);
     }

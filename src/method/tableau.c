@@ -1,15 +1,16 @@
 /* tableau.c — the tableau record: its balls evaluated from the entry texts,
  * the texts certified from the balls, the tableau file written out (read by
- * lua/tableau_file.c) and the symplecticity residual. */
+ * method/tableau_file.c) and the symplecticity residual. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "lua/quote.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
 #include "vigen/tableau.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
 
 static char **texts_new(slong n)
 {

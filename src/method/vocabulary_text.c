@@ -7,6 +7,7 @@
 
 #include "core/expr.h"
 #include "vigen/method.h"
+#include "support/strbuf.h"
 
 typedef struct { const char *name, *description; } row;
 

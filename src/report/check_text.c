@@ -1,14 +1,15 @@
 /* check_text.c — the text report of `vigen check` (vigen_check_print_text):
  * the lines of each row of check_fields.def that has a text_fn, in the order
  * of text_at.  Texts that may come from the file (the path, the name, notes
- * and problems quoting entries) are printed escaped (vigen/printable.h). */
+ * and problems quoting entries) are printed escaped (support/printable.h). */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
 #include "check/balls.h"
 #include "report/check_fields.h"
 #include "report/check_figures.h"
+#include "support/strbuf.h"
 
 static const char *family_title[VIGEN_CHECK_FAMILIES] = {
     "order", "order for separable H = T(p) + V(q)", "(c, A, b) alone as an RK method",

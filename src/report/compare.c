@@ -6,7 +6,8 @@
 #include "check/balls.h"
 #include "report/check_figures.h"
 #include "report/json.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
+#include "support/strbuf.h"
 
 static const char *const family_word[VIGEN_CHECK_EC_FAMILIES] = {"general", "separable", "nystrom"};
 

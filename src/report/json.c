@@ -1,8 +1,9 @@
 /* json.c — the JSON string writer (see json.h). */
 #include <string.h>
 
-#include "core/printable.h"
+#include "support/printable.h"
 #include "report/json.h"
+#include "support/strbuf.h"
 
 void vigen_json_string(vigen_strbuf *sb, const char *text)
 {

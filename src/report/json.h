@@ -10,6 +10,7 @@
 
 #include <stdio.h>
 #include "vigen/error.h"
+#include "support/strbuf.h"
 
 /* Appends text as a quoted JSON string. */
 void vigen_json_string(vigen_strbuf *sb, const char *text);

@@ -1,15 +1,16 @@
 /* show.c — text, LaTeX, JSON and Lua renderings of a tableau.  Texts from
  * the file (name, description, ...) appear escaped in text and LaTeX
- * (vigen/printable.h: stdout may be a terminal), through the JSON writer in
+ * (support/printable.h: stdout may be a terminal), through the JSON writer in
  * JSON and quoted in Lua. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/decimal.h"
 #include "core/expr.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
 #include "vigen/show.h"
 #include "report/json.h"
+#include "support/strbuf.h"
 
 /* The formats by name, the one list of them. */
 static const struct {
@@ -258,7 +259,7 @@ static void text_summary(vigen_strbuf *sb, const vigen_tableau *t)
     arb_clear(worst);
 }
 
-/* A text of the file, escaped (vigen/printable.h). */
+/* A text of the file, escaped (support/printable.h). */
 static void shown(vigen_strbuf *sb, const char *text)
 {
     vigen_printable_append(sb, text, strlen(text));

@@ -11,8 +11,9 @@
 #include "emit/template.h"
 #include "vigen/check.h"
 #include "vigen/emit.h"
-#include "vigen/progress.h"
+#include "support/progress.h"
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 #ifndef VIGEN_TRY_LINK_LIBS
 #define VIGEN_TRY_LINK_LIBS "-lgsl -lgslcblas -lm"

@@ -1,7 +1,7 @@
 /* gnuplot.c — figures drawn by gnuplot ($GNUPLOT, else gnuplot), run as a
  * program on a script in the private working directory.  The data (CSV)
  * and the SVG are written into the plot directory as one atomic unit
- * (vigen/file.h); the PNG, binary, is copied to a temporary file beside its
+ * (support/file.h); the PNG, binary, is copied to a temporary file beside its
  * target, synced and renamed over it, so that it too appears whole or not
  * at all (its temporary file is removed by the guards if the process is
  * ended meanwhile). */
@@ -14,9 +14,10 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "core/file.h"
-#include "core/guard.h"
+#include "support/file.h"
+#include "support/guard.h"
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 /* A PNG is a few hundred kilobytes; more is not one of ours. */
 #define TRY_MAX_IMAGE (64u << 20)

@@ -12,6 +12,8 @@
 #include "emit/template.h"
 #include "vigen/library.h"
 #include "try/try_internal.h"
+#include "support/strbuf.h"
+#include "support/nearest.h"
 
 static int is_file(const char *path)
 {

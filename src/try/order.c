@@ -9,9 +9,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "vigen/progress.h"
+#include "support/progress.h"
 #include "report/json.h"
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 /* Coarsest steps per period when neither --h nor --steps-per-period is given. */
 #define TRY_ORDER_BASE 64

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 /* A CSV field: the label with commas and quotes replaced. */
 static void csv_label(vigen_strbuf *sb, const char *prefix, const char *label)

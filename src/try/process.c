@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 int try_process_run(char *const *argv, const char *log_path, int *not_found)
 {

@@ -3,7 +3,7 @@
  * is removed whatever happens. */
 #include <stdlib.h>
 #include <string.h>
-#include "vigen/progress.h"
+#include "support/progress.h"
 #include "try/try_internal.h"
 
 const char *try_cc(const vigen_try_options *opt)

@@ -77,7 +77,7 @@ void try_lagrangian_print(FILE *out);
  * is built in and opt's problem has no Lagrangian (point vortices). */
 int try_lagrangian_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err);
 
-/* ---- check.c: the problem checked before a run ------------------------ */
+/* ---- problem_check.c: the problem checked before a run ---------------- */
 /* The problem of opt (created already once by try_plan_make) checked at its
  * initial value with vigen_problem_check, and with vigen_lagrangian_check
  * when one of the n methods is a built-in Lagrangian integrator:
@@ -97,7 +97,7 @@ int try_build_method(try_build *b, size_t k, const char *method, const try_paths
                      vigen_error *err);
 void try_build_clear(try_build *b);
 
-/* ---- run.c: one run of a driver ---------------------------------------- */
+/* ---- run_record.c: one run of a driver --------------------------------- */
 /* Runs the driver of b on the problem for steps steps of h, sampling every
  * `every` steps, and fills r (r->label is b's).  A failed step is a result
  * (r->failed); VIGEN_E_TEMPLATE when the driver cannot run or writes
@@ -107,7 +107,7 @@ int try_run_driver(vigen_try_result *r, const try_build *b, const vigen_try_opti
                    unsigned long steps, unsigned long every, vigen_error *err);
 void try_result_clear(vigen_try_result *r);
 
-/* ---- setup.c: the problem, h and the number of steps ------------------- */
+/* ---- run_plan.c: the problem, h and the number of steps ---------------- */
 typedef struct {
     double period, time, h;
     unsigned long steps;

@@ -4,9 +4,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "vigen/progress.h"
+#include "support/progress.h"
 #include "report/json.h"
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 /* Coarsest steps per period when none is given, and the final time in
  * periods when --time is not given: long enough for the global error to

@@ -4,7 +4,7 @@
  * (SIGINT, SIGTERM, SIGHUP) or the time cap (SIGALRM) ends the process.
  *
  * The handlers run before those installed earlier (the guards of
- * vigen/guard.h), which they then call: they kill the child being waited for
+ * support/guard.h), which they then call: they kill the child being waited for
  * (a compiler, a driver, gnuplot, which might otherwise write into the
  * directory after it is gone) and unlink the registered files and rmdir the
  * directory, all async-signal-safe calls on data filled before. */
@@ -18,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 enum { MAX_FILES = 512, NAME_LEN = 64, DIR_LEN = 3072 };
 

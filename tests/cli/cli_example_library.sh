@@ -43,6 +43,15 @@ cmake --install "$BUILD" --prefix "$T/prefix0" >"$T/log" 2>&1 || die "cmake --in
 for f in lib/libvigen.a include/vigen/vigen.h include/vigen/status.def lib/cmake/vigen/FindArb.cmake; do
   check '[ -f "$T/prefix0/$f" ]' "installed $f"
 done
+# the installed headers are the public ones (include/vigen/ and the runtime's),
+# none of the support library's
+for h in "$SRC"/src/support/*.h; do
+  check '[ ! -e "$T/prefix0/include/vigen/$(basename "$h")" ] && [ ! -e "$T/prefix0/include/support" ]' \
+    "$(basename "$h") of the support library not installed"
+done
+for h in "$SRC"/include/vigen/*.h; do
+  check '[ -f "$T/prefix0/include/vigen/$(basename "$h")" ]' "public header $(basename "$h") installed"
+done
 mv "$T/prefix0" "$T/prefix"
 cp -r "$SRC/examples/library" "$T/src"
 cmake -S "$T/src" -B "$T/build" -DCMAKE_PREFIX_PATH="$T/prefix" -DCMAKE_BUILD_TYPE=Release \

@@ -1,10 +1,10 @@
 /* fuzz_tableau.c — libFuzzer harness for the tableau loader: the input is
  * run as a tableau file in a sandbox with the method vocabulary and small
  * caps, the table it returns is read by the tableau reader
- * (src/lua/tableau_file.h), and a tableau read is evaluated at a modest
+ * (src/method/tableau_file.h), and a tableau read is evaluated at a modest
  * precision (vigen_tableau_evaluate), written back as a tableau file and
  * that text read again. */
-#include "lua/tableau_file.h"
+#include "method/tableau_file.h"
 #include "method/vocabulary.h"
 #include "vigen/tableau.h"
 #include "fuzz_common.h"

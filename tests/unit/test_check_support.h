@@ -45,6 +45,7 @@
 #include "core/decimal.h"
 #include "core/expr.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 /* ---------------------------------------------------------------- helpers */
 

@@ -13,9 +13,10 @@
  * that calls it) and checks the rest; with both present the whole program
  * is built and checked. */
 #include "test_emit_harness.h"
-#include "core/file.h"
+#include "support/file.h"
 #define KEPLER_DOUBLE_ONLY
 #include "test_dense_kepler.h"
+#include "support/strbuf.h"
 
 /* Removes from code the lines from the one holding `from` through the
  * one where the next match of `to` ends (the same line when to is NULL).  Returns 0 when

@@ -34,6 +34,7 @@
 #include "method/spec.h"
 #include "vigen/tableau.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 static char tmpdir[256];
 static int have_clang;

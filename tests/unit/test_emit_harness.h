@@ -17,6 +17,7 @@
 #include "vigen/emit.h"
 #include "vigen/method.h"
 #include "vigen/tableau.h"
+#include "support/strbuf.h"
 #include "testlib.h"
 
 /* What every emitted stepper must compile under (strict C11, warnings as errors). */

@@ -25,6 +25,7 @@
  *     call (a NaN Hessian) VIGEN_ENONFINITE.
  * The emitted code compiles warning-free under the harness's flags. */
 #include "test_emit_harness.h"
+#include "support/strbuf.h"
 
 /* status codes of the runtime (vigen/runtime.h; the values are stable) */
 enum { VIGEN_EINVAL = 1, VIGEN_ESINGULAR = 5, VIGEN_ENONFINITE = 6 };

@@ -33,6 +33,7 @@
  *   - Gauss-3 and Lobatto IIIA-IIIB 3 (tableaux/published) agree with their
  *     general steppers too, with and without start_force. */
 #include "test_emit_harness.h"
+#include "support/strbuf.h"
 
 static char *run(const char *exe, const char *args)
 {

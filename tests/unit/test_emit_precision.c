@@ -28,6 +28,7 @@
  *   - the Taylor series the driver uses for cos and sin in __float128 agrees
  *     with cosl and sinl to long double precision. */
 #include "test_emit_harness.h"
+#include "support/strbuf.h"
 
 static int have_clang;
 

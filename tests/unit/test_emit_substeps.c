@@ -33,6 +33,7 @@
  *     unequal masses, compensated and plain);
  *   - the emitted code is warning-free under the strict flags (gcc, clang). */
 #include "test_emit_harness.h"
+#include "support/strbuf.h"
 #include <float.h>
 
 static const char *const driver_lines[] = {

@@ -23,8 +23,9 @@
 #include <unistd.h>
 #include "testlib.h"
 #include "vigen/emit.h"
-#include "core/file.h"
+#include "support/file.h"
 #include "emit/template.h"
+#include "support/strbuf.h"
 
 
 static void standard_slots(vigen_slots *S)

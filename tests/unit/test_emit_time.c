@@ -24,6 +24,7 @@
  *     summation (the naive double sum is thousands of units off there), and
  *     bit for bit equal to that naive sum without compensation. */
 #include "test_emit_harness.h"
+#include "support/strbuf.h"
 
 typedef struct {
     const char *file, *name;

@@ -13,6 +13,7 @@
 #include <string.h>
 #include <flint/fmpq.h>
 #include "test_expr.h"
+#include "support/strbuf.h"
 
 /* ---- helpers ----------------------------------------------------------- */
 

@@ -36,6 +36,7 @@
 #include <string.h>
 #include <vigen/lagrangian.h>
 #include "test_emit_harness.h"
+#include "support/strbuf.h"
 
 #define NOUNUSED (void)t; (void)c
 

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "report/json.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 static char *render(const char *text)
 {

@@ -6,7 +6,8 @@
  * x = 1.5 - 0.5 cos 2t, y = 0.5 sin 2t (the Lorentz force, solved by hand),
  * with canonical angular momentum conserved. */
 #include "test_emit_harness.h"
-#include "core/file.h"
+#include "support/file.h"
+#include "support/strbuf.h"
 
 /* The first ```c block after the heading, as a heap string (NULL if none). */
 static char *code_block(const char *text, const char *heading)

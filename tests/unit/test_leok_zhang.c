@@ -19,6 +19,7 @@
 #include "method/galerkin.h"
 #include "method/spec.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 static const char *const pairs[][2] = {
     {"leok_zhang_ex2_c0", "leok_zhang_ex2_i"},    {"leok_zhang_ex2_c12", "leok_zhang_ex2_ii"},

@@ -15,6 +15,7 @@
 
 #include "method/nodes.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 #define NUM_FAMILIES 8
 

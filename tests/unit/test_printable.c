@@ -1,13 +1,15 @@
 /* test_printable.c — escaping untrusted text for terminals (vigen_printable,
- * src/core/printable.c) and the refusal of NUL bytes.  The expectations are
+ * src/support/printable.c) and the refusal of NUL bytes.  The expectations are
  * written by hand from RFC 3629 (section 4: the well-formed UTF-8 byte
  * sequences, as ABNF) and from the escapes the header promises; the random
  * test checks the output with a validator built from that ABNF, row by row, a
  * different formulation from the decoder's lead-byte table. */
 #include <stdlib.h>
 #include <string.h>
-#include "core/printable.h"
+#include "support/printable.h"
 #include "testlib.h"
+#include "support/strbuf.h"
+#include "support/nul.h"
 
 static void expect_n(const char *text, size_t len, const char *want)
 {

@@ -30,6 +30,7 @@
 #include "test_emit_harness.h"
 #include <stdint.h>
 #include "vigen/runtime.h"
+#include "support/strbuf.h"
 
 enum { N = 60, K = 23, DIM = 3 };
 

@@ -12,6 +12,7 @@
 #include "lua/sandbox.h"
 #include "method/vocabulary.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 static int contains(const char *haystack, const char *needle)
 {

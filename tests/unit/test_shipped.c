@@ -14,6 +14,8 @@
 #include "core/decimal.h"
 #include "vigen/tableau.h"
 #include "testlib.h"
+#include "support/strbuf.h"
+#include "support/file.h"
 
 static char *slurp(const char *path)
 {

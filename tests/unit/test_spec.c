@@ -10,6 +10,7 @@
 #include "method/spec.h"
 #include "vigen/method.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 static char *tmpdir;
 static char **written;          /* files to remove at the end */

@@ -17,6 +17,7 @@
 #include <time.h>
 #include "vigen/trees.h"
 #include "testlib.h"
+#include "support/strbuf.h"
 
 static const long A038055[11] = {0, 2, 4, 14, 52, 214, 916, 4116, 18996, 89894, 433196};
 static const long A000081[11] = {0, 1, 1, 2, 4, 9, 20, 48, 115, 286, 719};

@@ -1,8 +1,8 @@
 /* tableau_file.h — reading a tableau file: the table it returns, checked
  * entry by entry, into a vigen_tableau (texts only; vigen_tableau_evaluate
  * makes the balls).  The format is described in vigen/tableau.h. */
-#ifndef VIGEN_TABLEAU_FILE_H
-#define VIGEN_TABLEAU_FILE_H
+#ifndef VIGEN_METHOD_TABLEAU_FILE_H
+#define VIGEN_METHOD_TABLEAU_FILE_H
 
 #include <lua.h>
 #include "lua/sandbox.h"
@@ -21,7 +21,7 @@ int vigen_tableau_file_detect(lua_State *L, int idx);
 int vigen_tableau_from_table(vigen_tableau *t, vigen_sandbox *sb, const char *path, vigen_error *err);
 
 /* Shared with the readers of other kinds of method file (splitting and
- * composition files, src/lua/splitting_file.c): */
+ * composition files, src/method/splitting_file.c): */
 
 /* The entry on top of the Lua stack (a string: an exact expression or a
  * decimal; or a small Lua integer) into *out, a fresh string; messages name

@@ -15,8 +15,9 @@
 #include <sys/types.h>
 #include <unistd.h>
 
-#include "core/file.h"
-#include "core/guard.h"
+#include "support/file.h"
+#include "support/guard.h"
+#include "support/strbuf.h"
 
 /* What the user can do about a file that cannot be opened or read. */
 static const char *read_hint(int errnum)
@@ -79,7 +80,7 @@ int vigen_read_file(char **data, size_t *len, const char *path, size_t max_len, 
  * success all new; no temporary file is left.
  *   1. Each new text goes to a temporary file created by mkstemp next to its
  *      target (TARGET.tmp.XXXXXX: unique, so two processes writing the same
- *      file never share one), registered with the guards (vigen/guard.h),
+ *      file never share one), registered with the guards (support/guard.h),
  *      which remove it if a signal or a cap ends the process; written,
  *      fsync'ed and closed, each step checked.  A failure here removes the
  *      temporary files: the targets were never touched.

@@ -1,4 +1,4 @@
-/* progress.c — the progress line of vigen/progress.h: a thread that wakes
+/* progress.c — the progress line of support/progress.h: a thread that wakes
  * every 100 ms and, once a second has passed, redraws "prefix: text (Ns)"
  * with a carriage return.  The thread blocks every signal, so that the
  * process's handlers (the guards, the working directory's cleanup) run in
@@ -11,7 +11,7 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "vigen/progress.h"
+#include "support/progress.h"
 
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static pthread_t ticker;

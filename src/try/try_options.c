@@ -1,10 +1,11 @@
-/* options.c — the options of `vigen try` and `vigen order` as the command
+/* try_options.c — the options of `vigen try` and `vigen order` as the command
  * line gives them (texts) made into vigen_try_options, with messages naming
  * the option and what it takes. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 static int positive(double *out, const char *name, const char *text, vigen_error *err)
 {

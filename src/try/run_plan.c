@@ -1,4 +1,4 @@
-/* plan.c — what a run integrates: the problem and its parameters checked by
+/* run_plan.c — what a run integrates: the problem and its parameters checked by
  * the problem library itself, the step from --h or --steps-per-period and
  * the period, the number of steps from --time or the problem's default. */
 #include <math.h>

@@ -9,8 +9,8 @@
  *     ...
  *     vigen_progress_end();
  */
-#ifndef VIGEN_PROGRESS_H
-#define VIGEN_PROGRESS_H
+#ifndef VIGEN_SUPPORT_PROGRESS_H
+#define VIGEN_SUPPORT_PROGRESS_H
 
 /* Starts the clock (and, on a terminal, the thread that draws the line);
  * prefix starts the line. */

@@ -4,10 +4,12 @@
  * its memory cap lifted. */
 #include <stdlib.h>
 #include <string.h>
-#include "core/printable.h"
-#include "lua/splitting_file.h"
-#include "lua/tableau_file.h"
+#include "support/printable.h"
+#include "method/splitting_file.h"
+#include "method/tableau_file.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
+#include "support/nul.h"
 
 static int has_field(lua_State *L, int idx, const char *key)
 {

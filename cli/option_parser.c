@@ -1,4 +1,4 @@
-/* options.c — the tables of commands.def as arrays, and the one option
+/* option_parser.c — the tables of commands.def as arrays, and the one option
  * parser every command uses: --opt VALUE, --opt=VALUE, -o VALUE, flags, the
  * global options anywhere on the line, did-you-mean for mistyped options. */
 #include <stdarg.h>
@@ -6,7 +6,9 @@
 #include <string.h>
 #include <strings.h>
 #include "cli.h"
-#include "vigen/printable.h"
+#include "support/printable.h"
+#include "support/strbuf.h"
+#include "support/nearest.h"
 
 const vigen_cli_command vigen_cli_commands[VIGEN_CMD_COUNT] = {
 #define COMMAND(name, operand, ask, summary, help) { #name, operand, ask, summary, help },

@@ -2,7 +2,7 @@
  * cap, a cap on the memory the arithmetic (FLINT, arb, MPFR, GMP) holds,
  * FLINT's aborts turned into a clean failure, and SIGINT, SIGTERM and SIGHUP
  * handled; in every case the temporary files of output being written
- * (vigen/file.h) are removed, so that no partial output is left.
+ * (support/file.h) are removed, so that no partial output is left.
  *
  * A cap that is reached, an arithmetic operation FLINT gives up on, or the
  * arithmetic running out of memory ends the process at once: one line on
@@ -15,9 +15,10 @@
  * was interrupted rather than a failure).  While output files are being
  * renamed into place these signals wait (vigen_write_files_atomic), so that
  * a pair of files is never left half replaced. */
-#ifndef VIGEN_PUBLIC_GUARD_H
-#define VIGEN_PUBLIC_GUARD_H
+#ifndef VIGEN_SUPPORT_GUARD_H
+#define VIGEN_SUPPORT_GUARD_H
 
+#include <signal.h>
 #include <stddef.h>
 
 typedef struct {
@@ -36,5 +37,22 @@ void vigen_guard_set_caps(const vigen_guard_caps *caps);
 
 /* The most bytes the arithmetic held at once since vigen_guard_install. */
 size_t vigen_guard_arith_peak(void);
+
+/* The registry of temporary output files that the guards remove when they
+ * end the process, and the blocking of the signals they handle while files
+ * are renamed into place. */
+
+/* Blocks SIGINT, SIGTERM, SIGHUP and SIGALRM (the old mask into *old), and
+ * restores the mask; a signal that came meanwhile is handled at the
+ * restore. */
+void vigen_guard_block(sigset_t *old);
+void vigen_guard_unblock(const sigset_t *old);
+
+/* Registers path (copied) as a temporary file to remove if the process is
+ * ended by a guard; returns its slot, or -1 when the registry is full or the
+ * path too long.  vigen_guard_temp_drop forgets it (slot < 0: nothing).  Call
+ * both with the signals blocked. */
+int vigen_guard_temp_add(const char *path);
+void vigen_guard_temp_drop(int slot);
 
 #endif

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/error.h"
-#include "core/strbuf.h"
+#include "support/strbuf.h"
 
 void *vigen_xrealloc(void *p, size_t n)
 {

@@ -13,11 +13,11 @@
  * backslash is kept, so that escaping is idempotent (a message escaped twice
  * reads the same); the result is for display, not meant to be read back.
  */
-#ifndef VIGEN_PRINTABLE_H
-#define VIGEN_PRINTABLE_H
+#ifndef VIGEN_SUPPORT_PRINTABLE_H
+#define VIGEN_SUPPORT_PRINTABLE_H
 
 #include <stddef.h>
-#include "vigen/error.h"
+#include "support/strbuf.h"
 
 /* The escaped copy of text (heap, free with free); NULL for NULL. */
 char *vigen_printable(const char *text);
@@ -25,5 +25,11 @@ char *vigen_printable(const char *text);
 /* Appends the escaped form of the len bytes at text to sb; a NUL byte among
  * them is written \0. */
 void vigen_printable_append(vigen_strbuf *sb, const char *text, size_t len);
+
+/* Length (1 to 4) of the well-formed UTF-8 sequence (RFC 3629: no overlong
+ * form, no surrogate, nothing above U+10FFFF) starting at p, of which at most
+ * left bytes may be read; 0 when the byte at p starts none.  Sets *cp to its
+ * code point when it returns > 0. */
+int vigen_utf8_decode(const char *p, size_t left, unsigned long *cp);
 
 #endif

@@ -1,4 +1,4 @@
-/* check.c — the problem of a run checked before anything is built or
+/* problem_check.c — the problem of a run checked before anything is built or
  * integrated (vigen/diagnostics.h): its Hamiltonian at the standard initial
  * value, and its Lagrangian there too when a built-in Lagrangian method is
  * among the methods.  A problem that fails stops the run with the check's

@@ -4,6 +4,7 @@
 #include <string.h>
 #include <strings.h>
 #include "vigen/error.h"
+#include "support/nearest.h"
 
 static size_t edit_distance(const char *a, const char *b)
 {

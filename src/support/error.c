@@ -4,8 +4,8 @@
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/error.h"
-#include "core/printable.h"
-#include "core/strbuf.h"
+#include "support/printable.h"
+#include "support/strbuf.h"
 
 void vigen_error_init(vigen_error *err) { err->code = VIGEN_OK; err->message = NULL; }
 

@@ -1,12 +1,12 @@
-/* plan.h — the structure of a PRK step the emitter finds in a tableau:
+/* step_plan.h — the structure of a PRK step the emitter finds in a tableau:
  * stages with equal rows share their values and gradients, zero coefficients
  * drop out, and when the dependency graph of stage values, gradients and
  * the updates of q and p is acyclic the step is explicit, written as an
  * ordered list of operations on work arrays X0, X1, ...; the gradient at the
  * end of a step is reused at the start of the next (first same as last)
  * when the graph allows it. */
-#ifndef VIGEN_EMIT_PLAN_H
-#define VIGEN_EMIT_PLAN_H
+#ifndef VIGEN_EMIT_STEP_PLAN_H
+#define VIGEN_EMIT_STEP_PLAN_H
 
 #include "emit/literals.h"
 

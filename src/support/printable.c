@@ -1,8 +1,8 @@
-/* printable.c — escaping untrusted text for terminals (vigen/printable.h)
- * and refusing strings with NUL bytes (core/printable.h). */
+/* printable.c — untrusted text escaped for terminals (support/printable.h). */
 #include <stdlib.h>
 #include <string.h>
-#include "core/printable.h"
+#include "support/printable.h"
+#include "support/strbuf.h"
 
 int vigen_utf8_decode(const char *text, size_t left, unsigned long *cp)
 {
@@ -89,12 +89,4 @@ char *vigen_printable(const char *text)
     vigen_strbuf_init(&sb);
     vigen_printable_append(&sb, text, strlen(text));
     return sb.data;
-}
-
-int vigen_refuse_nul(const char *text, size_t len, const char *path, const char *entry, vigen_error *err)
-{
-    const char *nul = memchr(text, '\0', len);
-    if (nul == NULL) return VIGEN_OK;
-    return vigen_error_set(err, VIGEN_E_SPEC, "%s: %s contains a NUL byte (\\0 at byte %zu); remove it", path, entry,
-                           (size_t)(nul - text) + 1);
 }

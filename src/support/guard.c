@@ -1,4 +1,4 @@
-/* guard.c — the guards of a vigen process (vigen/guard.h): the registry of
+/* guard.c — the guards of a vigen process (support/guard.h): the registry of
  * temporary output files, the handlers that remove them (SIGINT, SIGTERM,
  * SIGHUP, the wall-clock timer's SIGALRM), the counting memory functions of
  * FLINT and GMP with their cap, and FLINT's abort handler.
@@ -21,7 +21,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
-#include "core/guard.h"
+#include "support/guard.h"
 
 /* ---- the registry of temporary files ------------------------------------ */
 

@@ -1,11 +1,12 @@
-/* plan.c — the structure of a PRK step (see plan.h): classes of equal
+/* step_plan.c — the structure of a PRK step (see step_plan.h): classes of equal
  * rows, the dependency graph and its order (Kahn's algorithm), first same
  * as last, and the explicit step as a list of operations with correctly
  * rounded merged coefficients. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "emit/plan.h"
+#include "emit/step_plan.h"
+#include "support/strbuf.h"
 
 enum { K_TEMP = 0, K_ZERO = 1, K_END = 2 };
 

@@ -12,9 +12,12 @@
 #include <lauxlib.h>
 #include "core/decimal.h"
 #include "core/expr.h"
-#include "core/printable.h"
-#include "lua/tableau_file.h"
+#include "support/printable.h"
+#include "method/tableau_file.h"
 #include "vigen/limits.h"
+#include "support/strbuf.h"
+#include "support/nearest.h"
+#include "support/nul.h"
 
 static void raw_getfield(lua_State *L, int idx, const char *key)
 {

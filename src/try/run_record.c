@@ -1,4 +1,4 @@
-/* run.c — one run of a compiled driver: its arguments, and its record file
+/* run_record.c — one run of a compiled driver: its arguments, and its record file
  * (the format is documented in templates/try/driver.c.in) read into a
  * vigen_try_result with the measures of vigen/try.h. */
 #define _POSIX_C_SOURCE 200809L
@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "try/try_internal.h"
+#include "support/strbuf.h"
 
 void try_result_clear(vigen_try_result *r)
 {

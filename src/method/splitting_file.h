@@ -2,8 +2,8 @@
  * written as published, a sequence of kicks and drifts, or a base method
  * composed with steps gamma_i h.  The conversion to a PRK tableau is
  * method/splitting.c. */
-#ifndef VIGEN_SPLITTING_FILE_H
-#define VIGEN_SPLITTING_FILE_H
+#ifndef VIGEN_METHOD_SPLITTING_FILE_H
+#define VIGEN_METHOD_SPLITTING_FILE_H
 
 #include <lua.h>
 #include "lua/sandbox.h"
