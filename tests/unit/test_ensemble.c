@@ -1,4 +1,4 @@
-/* test_ensemble.c — vigen_integrate_ensemble (runtime/src/ensemble.c) with
+/* test_ensemble.c — vigen_integrate_ensemble (runtime/drive/ensemble.c) with
  * steppers emitted at build time (tests/CMakeLists.txt: Gauss s = 2 and
  * Stormer-Verlet from tableaux/published), on an ensemble of Kepler orbits
  * of eccentricities 0 to 0.7.  Asserted:

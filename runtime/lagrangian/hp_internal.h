@@ -1,9 +1,9 @@
-/* hp_impl.h — what the trapezoidal variational integrator uses of the
+/* hp_internal.h — what the trapezoidal variational integrator uses of the
  * Hamilton–Pontryagin stepper (internal to the runtime): a step between two
  * given times, so that a grid's times are used as given rather than
  * re-accumulated from steps, and write access to the statistics. */
-#ifndef VIGEN_HP_IMPL_H
-#define VIGEN_HP_IMPL_H
+#ifndef VIGEN_HP_INTERNAL_H
+#define VIGEN_HP_INTERNAL_H
 
 #include <vigen/lagrangian.h>
 

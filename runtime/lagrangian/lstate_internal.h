@@ -1,4 +1,4 @@
-/* state.h — saved states of the Lagrangian integrators (internal to the
+/* lstate_internal.h — saved states of the Lagrangian integrators (internal to the
  * runtime): the header, the payload moves and the trailer that
  * vigen_hp_state_* and vigen_midpoint_vi_state_* share.
  *

@@ -31,8 +31,8 @@
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_permutation.h>
 #include <vigen/lagrangian.h>
-#include "lsolve.h"
-#include "state.h"
+#include "lsolve_internal.h"
+#include "lstate_internal.h"
 
 struct vigen_midpoint_vi {
     vigen_lagrangian lag;
@@ -423,7 +423,7 @@ void vigen_midpoint_vi_free(vigen_midpoint_vi *w)
 
 /* ---- saved states ----------------------------------------------------------- */
 
-/* The payload in its order (state.h): the flag first, as vigen_lstate_check
+/* The payload in its order (lstate_internal.h): the flag first, as vigen_lstate_check
  * reads it, then the statistics, times and arrays. */
 static size_t mvi_state_walk(void *ws, void *buf, int save)
 {

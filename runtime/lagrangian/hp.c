@@ -30,10 +30,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "hp_impl.h"
-#include "lsolve.h"
-#include "state.h"
-#include "vmap.h"
+#include "hp_internal.h"
+#include "lsolve_internal.h"
+#include "lstate_internal.h"
+#include "vmap_internal.h"
 
 struct vigen_hp {
     vigen_lagrangian lag;
@@ -385,7 +385,7 @@ int vigen_hp_step(vigen_hp *w, double *t, double *q, double *p, double h)
 
 /* ---- saved states ----------------------------------------------------------- */
 
-/* The payload in its order (state.h): the flags first, as
+/* The payload in its order (lstate_internal.h): the flags first, as
  * vigen_lstate_check reads them, then the statistics, times and arrays. */
 static size_t state_walk(void *ws, void *buf, int save)
 {

@@ -10,7 +10,7 @@
  * same step from (q1, p1).  For L = 1/2 m v^2 - V(q) it is the leapfrog. */
 #include <stdlib.h>
 #include <string.h>
-#include "hp_impl.h"
+#include "hp_internal.h"
 
 struct vigen_trapezoidal_vi {
     vigen_hp *hp;

@@ -1,8 +1,8 @@
-/* state.c — the saved-state buffer of the Lagrangian integrators (state.h):
+/* lstate.c — the saved-state buffer of the Lagrangian integrators (lstate_internal.h):
  * the header, the moves of a payload between workspace and buffer, the
  * FNV-1a trailer and the checks made before anything is loaded. */
 #include <string.h>
-#include "state.h"
+#include "lstate_internal.h"
 
 _Static_assert(sizeof(vigen_lstate_header) == 192, "the state header has no padding");
 
