@@ -16,6 +16,8 @@
  *     output time at a step end gets that step's state bit for bit, and the
  *     steps, final state and the integrator's statistics are those of
  *     vigen_integrate bit for bit (the flow touches nothing the steps read);
+ *     a type without a vector field (and no Hamiltonian given) is refused
+ *     before any step;
  *   - events: the zero crossings of q, exactly at pi - atan 2 + k pi,
  *     located with the method's O(h^2) error (ratio 4 as h halves);
  *   - ensembles: trajectories from a prototype workspace on 1 and 2 threads
@@ -142,6 +144,12 @@ static void test_field(void)
 
 /* ---- output at any time ------------------------------------------------------- */
 
+static double q_of(double t, const double *q, const double *p, void *ctx)
+{
+    (void)t; (void)p; (void)ctx;
+    return q[0];
+}
+
 enum { NOUT = 23 };
 
 /* The worst error at NOUT off-grid times in [0, 4 pi] with step h; also
@@ -183,6 +191,23 @@ static double dense_error(int m, double h)
     return worst;
 }
 
+/* A type without a vector field and no Hamiltonian given: refused before
+ * any step. */
+static void test_no_field(void)
+{
+    const vigen_stepper_type *T = NULL;
+    void *w = make(VIGEN_LAGRANGIAN_HP_MIDPOINT, &ho, NULL, &T);
+    if (w == NULL) return;
+    vigen_stepper_type bare = *T;
+    bare.vector_field = NULL;
+    double t = 0, q = 1, p = 0.5, t_out = 1, qo, po, t_ev[1];
+    size_t n = 7;
+    CHECK(vigen_integrate_at(&bare, w, &t, &q, &p, 0.1, &t_out, 1, &qo, &po, NULL) == VIGEN_EINVAL);
+    CHECK(vigen_integrate_events(&bare, w, &t, &q, &p, 0.1, 10, q_of, 0, 0, NULL, t_ev, 1, &n) == VIGEN_EINVAL);
+    CHECK(t == 0 && q == 1 && p == 0.5 && n == 0 && T->stats(w)->steps == 0);
+    T->free(w);
+}
+
 static void test_dense(void)
 {
     for (int m = 0; m < NMETHODS; m++) {
@@ -195,12 +220,6 @@ static void test_dense(void)
 }
 
 /* ---- events --------------------------------------------------------------- */
-
-static double q_of(double t, const double *q, const double *p, void *ctx)
-{
-    (void)t; (void)p; (void)ctx;
-    return q[0];
-}
 
 enum { NEV = 3 };
 
@@ -291,6 +310,7 @@ static void test_restart(void)
 int main(void)
 {
     test_field();
+    test_no_field();
     test_dense();
     test_events();
     test_ensemble();

@@ -236,8 +236,9 @@ int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, vo
  * NULL when max_events is 0) in order, *n_events receives the number
  * found.  terminal nonzero: the run stops at the first event with (t, q, p)
  * set to the extension's state there (the steps before it are untouched);
- * the workspace then holds a state it did not produce, which an emitted
- * stepper detects on its next step (it restarts its compensation).
+ * the workspace then holds a state it did not produce, which every
+ * integrator of the runtime detects on its next step (it restarts its
+ * compensation and history).
  * Returns VIGEN_SUCCESS (also after a terminal event), VIGEN_EINVAL (NULL
  * pointer, h zero or not finite, direction not -1, 0 or +1),
  * VIGEN_ENOMEM, VIGEN_ENONFINITE (g, a slope or an interpolated state not
