@@ -44,6 +44,14 @@ void vigen_poincare_stepper_free(vigen_poincare_stepper *s)
 
 vigen_poincare *vigen_poincare_stepper_transform(const vigen_poincare_stepper *s) { return s ? s->pc : NULL; }
 
+int vigen_poincare_stepper_integrate(vigen_poincare_stepper *s, double *t, double *q, double *p, double dtau,
+                                     double t_end, unsigned long max_steps, unsigned long every,
+                                     vigen_poincare_observer_fn obs, void *obs_ctx, vigen_poincare_result *res)
+{
+    if (s == NULL) return VIGEN_EINVAL;
+    return vigen_poincare_integrate(s->T, s->w, s->pc, t, q, p, dtau, t_end, max_steps, every, obs, obs_ctx, res);
+}
+
 static int ps_step(void *ws, double *t, double *q, double *p, double h)
 {
     vigen_poincare_stepper *s = ws;

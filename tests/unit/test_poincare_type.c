@@ -3,7 +3,9 @@
  * stepper integrating K and the density g = r^(3/2) on Kepler e = 0.9
  * (period 2 pi).  Asserted, each against a source outside the type's code:
  *   - n steps through the type are the n fictive steps of
- *     vigen_poincare_integrate (capped at n steps) bit for bit;
+ *     vigen_poincare_integrate (capped at n steps) bit for bit, and the
+ *     driver continues either trajectory to a physical time with the same
+ *     bits;
  *   - output at physical times (vigen_integrate_at with the fictive step
  *     as h) has the error of the reference from Kepler's equation falling
  *     at order min(4, 4) = 4 as the fictive step halves (ratio near 16),
@@ -56,6 +58,16 @@ static void test_same_steps(void)
     CHECK(res.capped && res.steps == 500);
     CHECK_MSG(t2 == t && memcmp(q2, q, sizeof q) == 0 && memcmp(p2, p, sizeof p) == 0,
               "the type's steps differ from vigen_poincare_integrate's: t %.17g vs %.17g", t, t2);
+    /* on to t_end, 2 later: the driver after the type's steps continues the
+     * trajectory, as the driver alone does */
+    vigen_poincare_result r1, r2;
+    const double t_end = t + 2;
+    CHECK(vigen_poincare_stepper_integrate(s, &t, q, p, 0.05, t_end, 0, 0, NULL, NULL, &r1) == VIGEN_SUCCESS);
+    CHECK(vigen_poincare_integrate(&gauss2_type, w, pc, &t2, q2, p2, 0.05, t_end, 0, 0, NULL, NULL, &r2) ==
+          VIGEN_SUCCESS);
+    CHECK_MSG(t == t_end && t2 == t && memcmp(q2, q, sizeof q) == 0 && memcmp(p2, p, sizeof p) == 0 &&
+                  r1.steps == r2.steps && r1.tau == r2.tau,
+              "the type's trajectory continued by the driver differs from the driver's own");
     gauss2_type.free(w);
     vigen_poincare_free(pc);
     T->free(s);

@@ -156,6 +156,12 @@ void vigen_poincare_stepper_free(vigen_poincare_stepper *s);
 /* Its transformed problem: messages (vigen_poincare_message) and
  * evaluation counts. */
 vigen_poincare *vigen_poincare_stepper_transform(const vigen_poincare_stepper *s);
+/* vigen_poincare_integrate with the stepper, workspace and transformed
+ * problem of s: to a physical time t_end, the last step shortened.  Steps
+ * through the type and this driver continue each other's trajectory. */
+int vigen_poincare_stepper_integrate(vigen_poincare_stepper *s, double *t, double *q, double *p, double dtau,
+                                     double t_end, unsigned long max_steps, unsigned long every,
+                                     vigen_poincare_observer_fn obs, void *obs_ctx, vigen_poincare_result *res);
 
 /* The last failure in one line ("" when none). */
 const char *vigen_poincare_message(const vigen_poincare *pc);
