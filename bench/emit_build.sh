@@ -13,7 +13,7 @@ for n in emit_g2 emit_g2k emit_g2f; do "$VIGEN" emit "$SRC/tests/data/emit/gauss
 for n in emit_sv emit_svk emit_svf; do "$VIGEN" emit "$SRC/tests/data/emit/verlet.lua" --name $n -o "$OUT" -q; done
 for prog in emit_bench emit_icount; do
     gcc -std=c11 -O2 -g -Wall -Wextra -Wpedantic -I"$SRC/runtime/include" -I"$OUT" -I"$SRC/bench" \
-        "$SRC/bench/$prog.c" "$OUT/emit_g2.c" "$OUT/emit_sv.c" "$SRC"/runtime/src/*.c \
+        "$SRC/bench/$prog.c" "$OUT/emit_g2.c" "$OUT/emit_sv.c" "$SRC"/runtime/{core,drive,diagnostics,lagrangian,poincare}/*.c \
         -lgsl -lgslcblas -lm -o "$OUT/$prog"
     echo "built $OUT/$prog"
 done

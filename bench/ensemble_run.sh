@@ -28,7 +28,7 @@ for n in g2 g2d; do
 done
 FLAGS="-std=c11 -O3 -Wall -Wextra -Wpedantic"
 gcc $FLAGS -fopenmp -I"$SRC/runtime/include" -I"$OUT" "$SRC/bench/ensemble_bench.c" "$OUT/ens_sv.c" \
-    "$OUT/ens_y4.c" "$OUT/ens_g2.c" "$SRC"/runtime/src/*.c -lgsl -lgslcblas -lm -o "$OUT/ensemble_bench"
+    "$OUT/ens_y4.c" "$OUT/ens_g2.c" "$SRC"/runtime/{core,drive,diagnostics,lagrangian,poincare}/*.c -lgsl -lgslcblas -lm -o "$OUT/ensemble_bench"
 
 echo "## $(date -u '+%Y-%m-%d %H:%M UTC'), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores, gcc $(gcc -dumpfullversion) ($FLAGS)"
 echo "load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"

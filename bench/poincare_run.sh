@@ -8,6 +8,6 @@ OUT=$(mktemp -d)
 trap 'rm -rf "$OUT"' EXIT
 gcc -std=c11 -O2 -Wall -Wextra -Wpedantic -I"$SRC/runtime/include" -I"$SRC/tests/data/emit/golden" \
     -I"$SRC/runtime/problems" "$SRC/bench/poincare_kepler.c" "$SRC/tests/data/emit/golden/gauss2.c" \
-    "$SRC"/runtime/src/*.c "$SRC"/runtime/src/lagrangian/*.c "$SRC"/runtime/problems/*.c \
+    "$SRC"/runtime/{core,drive,diagnostics,lagrangian,poincare}/*.c "$SRC"/runtime/problems/*.c \
     -lgsl -lgslcblas -lm -o "$OUT/poincare_kepler"
 "$OUT/poincare_kepler" "$@"

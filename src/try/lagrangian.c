@@ -1,19 +1,21 @@
 /* lagrangian.c — the Lagrangian integrators `vigen try` knows by name
  * (vigen/lagrangian.h, docs/lagrangian.md).  They have no tableau: the
- * driver calls the runtime's stepper on the problem's Lagrangian, selected
- * by the slot KIND of templates/try/driver.c.in.  Their order is the one
+ * driver makes the runtime's integrator on the problem's Lagrangian with
+ * vigen_lagrangian_integrator_alloc (the slot KIND of
+ * templates/try/driver.c.in is its number) and drives it through its
+ * stepper type, as it drives an emitted stepper.  Their order is the one
  * the literature proves (2 for each), not one the checker certifies. */
 #include <string.h>
+#include "vigen/lagrangian.h"
 #include "vigen/problems.h"
 #include "try/try_internal.h"
 
-/* The order of the rows is the KIND the driver switches on. */
 static const try_lagrangian_method methods[] = {
-    { "hp-trapezoidal", 0, 2,
+    { "hp-trapezoidal", VIGEN_LAGRANGIAN_HP_TRAPEZOIDAL, 2,
       "Hamilton-Pontryagin integrator, trapezoidal discrete Lagrangian (Stormer-Verlet for L = T - V)" },
-    { "hp-midpoint", 1, 2, "Hamilton-Pontryagin integrator, midpoint discrete Lagrangian (implicit midpoint for L = T - V)" },
-    { "midpoint-vi", 2, 2, "mid-point variational integrator of Cresson-Safi, with the inverse Legendre map" },
-    { "trapezoidal-vi", 3, 2, "trapezoidal variational integrator, one-step form (the leapfrog for L = T - V)" },
+    { "hp-midpoint", VIGEN_LAGRANGIAN_HP_MIDPOINT, 2, "Hamilton-Pontryagin integrator, midpoint discrete Lagrangian (implicit midpoint for L = T - V)" },
+    { "midpoint-vi", VIGEN_LAGRANGIAN_MIDPOINT_VI, 2, "mid-point variational integrator of Cresson-Safi, with the inverse Legendre map" },
+    { "trapezoidal-vi", VIGEN_LAGRANGIAN_TRAPEZOIDAL_VI, 2, "trapezoidal variational integrator, one-step form (the leapfrog for L = T - V)" },
 };
 
 const char *try_lagrangian_name(size_t k)

@@ -103,7 +103,7 @@ int main(void)
     if (ok) {
         char *src = vigen_strdup_printf("%s/kepler_sim.c", harness_dir);
         char *exe = vigen_strdup_printf("%s/kepler_sim", harness_dir);
-        const char *diag = have_check ? "runtime/src/diagnostics*.c" : "";   /* the checks' sources */
+        const char *diag = have_check ? "runtime/diagnostics/*.c" : "";   /* the checks' sources */
         char *cmd = vigen_strdup_printf("gcc %s -O2 -I%s %s %s/fr4.c %s %s -lgsl -lgslcblas -lm -o %s", HARNESS_CFLAGS,
                                         harness_dir, src, harness_dir, diag, harness_lib, exe);
         CHECK(harness_write(src, code));

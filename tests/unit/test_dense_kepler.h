@@ -2,8 +2,8 @@
  * share: the Kepler problem H = |p|^2 / 2 - 1 / |q| (semi-major axis 1,
  * period 2 pi) started at periapsis, its exact solution from Kepler's
  * equation, and a stepper type for long double and __float128 written here
- * (Yoshida's triple jump of the Stormer-Verlet step, order 4), whose
- * workspace begins with its problem as an emitted one does
+ * (Yoshida's triple jump of the Stormer-Verlet step, order 4) with the
+ * dimension and vector field the drivers take from a type
  * (KEPLER_DOUBLE_ONLY defined: the double problem only).
  *
  * Exact solution (Goldstein, Classical Mechanics, sec. 3.8): with the mean
@@ -65,7 +65,7 @@
     }
 
 /* Yoshida's triple jump of kick-drift-kick Verlet for separable H in the
- * real type R; its workspace begins with the problem. */
+ * real type R: a stepper type of one's own, with the flow for the drivers. */
 #define YOSHIDA_DEFINE(R, S, CBRT)                                                                         \
     typedef struct {                                                                                       \
         vigen_hamiltonian##S sys;                                                                          \
@@ -105,10 +105,20 @@
         return &((const yoshida_ws##S *)w)->stats;                                                         \
     }                                                                                                      \
     static inline void yoshida_free##S(void *w) { free(w); }                                               \
+    static inline size_t yoshida_dim##S(const void *w) { return ((const yoshida_ws##S *)w)->sys.dim; }     \
+    static inline int yoshida_field##S(void *ws, R t, const R *q, const R *p, R *dq, R *dp)                \
+    {                                                                                                      \
+        yoshida_ws##S *w = ws;                                                                             \
+        w->sys.dHdp(t, q, p, dq, w->sys.ctx);                                                              \
+        w->sys.dHdq(t, q, p, dp, w->sys.ctx);                                                              \
+        for (int i = 0; i < 2; i++) dp[i] = -dp[i];                                                        \
+        return VIGEN_SUCCESS;                                                                              \
+    }                                                                                                      \
     static const vigen_stepper_type##S yoshida_type##S = {                                                 \
         .name = "yoshida4", .stages = 3, .order = 4, .explicit_separable = 1,                              \
         .alloc = yoshida_alloc##S, .step = yoshida_step##S, .reset = yoshida_reset##S,                     \
         .stats = yoshida_stats##S, .free = yoshida_free##S,                                                \
+        .dim = yoshida_dim##S, .vector_field = yoshida_field##S,                                           \
     };
 
 KEPLER_DEFINE(double, , sqrt, sin, cos, floor)

@@ -593,14 +593,10 @@ int main(void)
 
     /* the runtime, compiled once from its sources */
     char *cmd;
-    cmd = vigen_strdup_printf("gcc -std=c11 -O2 -Wall -Wextra -Wpedantic -Werror -Iruntime/include "
-                              "-c runtime/src/status.c -o %s/status.o && "
-                              "gcc -std=c11 -O2 -Wall -Wextra -Wpedantic -Werror -Iruntime/include "
-                              "-c runtime/src/newton.c -o %s/newton.o && "
-                              "gcc -std=c11 -O2 -Wall -Wextra -Wpedantic -Werror -Iruntime/include "
-                              "-c runtime/src/real.c -o %s/real.o && "
-                              "ar rcs %s/librt.a %s/status.o %s/newton.o %s/real.o",
-                              tmpdir, tmpdir, tmpdir, tmpdir, tmpdir, tmpdir, tmpdir);
+    cmd = vigen_strdup_printf("for f in runtime/core/*.c runtime/drive/*.c; do "
+                              "gcc -std=c11 -O2 -Wall -Wextra -Wpedantic -Werror -Iruntime/include -c \"$f\" "
+                              "-o %s/rt_$(basename \"$f\" .c).o || exit 1; done && ar rcs %s/librt.a %s/rt_*.o",
+                              tmpdir, tmpdir, tmpdir);
     CHECK(run_cmd(cmd) == 0);
     free(cmd);
     char *lib = vigen_strdup_printf("%s/librt.a", tmpdir);

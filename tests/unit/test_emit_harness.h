@@ -81,15 +81,12 @@ static int harness_init(const char *tag)
     vigen_strbuf cmd;
     vigen_strbuf_init(&cmd);
     vigen_strbuf_append(&cmd, "");
-    const char *srcs[] = { "status", "newton", "real" };
-    for (int k = 0; k < 3; k++)
-        vigen_strbuf_printf(&cmd, "gcc %s -O2 -c runtime/src/%s.c -o %s/%s.o && ", HARNESS_CFLAGS, srcs[k],
-                            harness_dir, srcs[k]);
-    /* the Lagrangian integrators, for drivers that compare them with emitted steppers */
-    vigen_strbuf_printf(&cmd, "for f in runtime/src/lagrangian/*.c; do gcc %s -O2 -c \"$f\" -o %s/lag_$(basename \"$f\" .c).o"
-                        " || exit 1; done && ", HARNESS_CFLAGS, harness_dir);
-    vigen_strbuf_printf(&cmd, "ar rcs %s/librt.a %s/status.o %s/newton.o %s/real.o %s/lag_*.o", harness_dir, harness_dir,
-                        harness_dir, harness_dir, harness_dir);
+    /* the runtime's core and drivers, and the Lagrangian integrators for
+     * drivers that compare them with emitted steppers */
+    vigen_strbuf_printf(&cmd, "for f in runtime/core/*.c runtime/drive/*.c runtime/lagrangian/*.c; do "
+                        "gcc %s -O2 -c \"$f\" -o %s/rt_$(basename \"$f\" .c).o || exit 1; done && ",
+                        HARNESS_CFLAGS, harness_dir);
+    vigen_strbuf_printf(&cmd, "ar rcs %s/librt.a %s/rt_*.o", harness_dir, harness_dir);
     int ok = harness_run(cmd.data) == 0;
     vigen_strbuf_clear(&cmd);
     harness_lib = vigen_strdup_printf("%s/librt.a", harness_dir);

@@ -1,4 +1,4 @@
-/* test_ensemble.c — vigen_integrate_ensemble (runtime/src/ensemble.c) with
+/* test_ensemble.c — vigen_integrate_ensemble (runtime/drive/ensemble.c) with
  * steppers emitted at build time (tests/CMakeLists.txt: Gauss s = 2 and
  * Stormer-Verlet from tableaux/published), on an ensemble of Kepler orbits
  * of eccentricities 0 to 0.7.  Asserted:
@@ -11,8 +11,9 @@
  *   - a trajectory started at NaN is reported (VIGEN_ENONFINITE, 0 steps,
  *     state unchanged) and every other trajectory finishes with the bits it
  *     has without the failing one; the return value is that status;
- *   - a mechanical problem through the alloc hook (NAME_alloc_mechanical)
- *     gives the scalar bits too;
+ *   - a mechanical problem through the alloc hook (NAME_alloc_mechanical),
+ *     or cloned by the type from a prototype workspace, gives the scalar
+ *     bits too;
  *   - invalid arguments: VIGEN_EINVAL with nothing touched. */
 #include <math.h>
 #include <stdlib.h>
@@ -177,6 +178,16 @@ int main(void)
     }
     CHECK_MSG(same_bits(two.q, ref.q, 2 * N) && same_bits(two.p, ref.p, 2 * N) && same_bits(two.t, ref.t, N),
               "mechanical Verlet: ensemble and scalar loop differ");
+
+    /* the same problem from a prototype workspace: the type clones it (no
+     * dimension given: the type's) and the prototype steps nothing */
+    ens_verlet_workspace *proto = ens_verlet_alloc_mechanical(&mech, NULL);
+    vigen_ensemble ep = { .type = &ens_verlet_type, .threads = 2, .prototype = proto };
+    CHECK(run_ensemble(&two, &ep, h) == VIGEN_SUCCESS);
+    CHECK_MSG(same_bits(two.q, ref.q, 2 * N) && same_bits(two.p, ref.p, 2 * N) && same_bits(two.t, ref.t, N),
+              "mechanical Verlet from a prototype: ensemble and scalar loop differ");
+    CHECK(ens_verlet_stats(proto)->steps == 0);
+    ens_verlet_free(proto);
 
     /* invalid arguments: nothing touched */
     vigen_ensemble bad = { .type = &ens_verlet_type, .sys = &sys, .threads = 2 };

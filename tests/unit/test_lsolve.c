@@ -1,5 +1,5 @@
 /* test_lsolve.c — the Newton solver shared by the Lagrangian integrators
- * (runtime/src/lagrangian/lsolve.h): solutions of systems whose roots are
+ * (runtime/lagrangian/lsolve_internal.h): solutions of systems whose roots are
  * known in closed form, with the caller's Jacobian and with differences,
  * badly scaled equations, singular Jacobians, callbacks that fail or give
  * NaN (damped steps back into the finite region), divergence, the
@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 #include <vigen/runtime.h>
-#include "lsolve.h"
+#include "lsolve_internal.h"
 #include "testlib.h"
 
 /* circle x^2 + y^2 = 4 meets the diagonal x = y at (sqrt 2, sqrt 2) */

@@ -1,5 +1,5 @@
 /* test_midpoint_vi.c — the mid-point variational integrator
- * (runtime/src/lagrangian/midpoint_vi.c), each property against a formula
+ * (runtime/lagrangian/midpoint_vi.c), each property against a formula
  * that does not come from the code under test:
  *   - L = |v|^2/2 - V(q), V anharmonic and anisotropic: the positions of the
  *     one-step (Cresson–Safi) map satisfy the Wendlandt–Marsden two-step

@@ -16,17 +16,22 @@ extern "C" {
 
 /* ---- an ensemble over the cores ----------------------------------------- */
 /* What every trajectory of the ensemble is integrated with.  One workspace
- * is made per thread, by alloc(alloc_ctx) when alloc is set (for instance a
- * wrapper of NAME_alloc_mechanical), else by type->alloc(sys, opt). */
+ * is made per thread: by alloc(alloc_ctx) when alloc is set, else by
+ * type->clone(prototype) when prototype is set (any integrator: an emitted
+ * stepper's workspace from NAME_alloc_mechanical, a Lagrangian integrator,
+ * a Poincare-transformed stepper), else by type->alloc(sys, opt). */
 typedef struct {
-    const vigen_stepper_type *type;   /* the emitted stepper: NAME_type */
-    const vigen_hamiltonian *sys;     /* the problem (NULL when alloc is set) */
-    const vigen_solver_options *opt;  /* NULL = defaults (ignored when alloc is set) */
-    void *(*alloc)(void *alloc_ctx);  /* optional workspace maker; NULL = type->alloc */
+    const vigen_stepper_type *type;   /* the integrator: NAME_type, vigen_hp_type, ... */
+    const vigen_hamiltonian *sys;     /* the problem (NULL when alloc or prototype is set) */
+    const vigen_solver_options *opt;  /* NULL = defaults (only with sys) */
+    void *(*alloc)(void *alloc_ctx);  /* optional workspace maker */
     void *alloc_ctx;
-    size_t dim;                       /* dimension of q and p; 0 = sys->dim */
+    size_t dim;                       /* dimension of q and p; 0 = sys->dim, or
+                                         type->dim(prototype) */
     int threads;                      /* 0 = OpenMP's default (OMP_NUM_THREADS, else
                                          every core); 1 = serial */
+    const void *prototype;            /* a workspace of type to clone (only read; it
+                                         steps no trajectory) */
 } vigen_ensemble;
 
 /* Integrates ntraj trajectories of the problem, each nsteps steps of size h
@@ -43,7 +48,8 @@ typedef struct {
  * when every trajectory succeeded, else the status of the failed trajectory
  * of lowest index; VIGEN_EINVAL (a NULL pointer or type, no dimension, h
  * not finite) and VIGEN_ENOMEM (a workspace could not be made) before any
- * trajectory is touched, status[] then untouched too.  Built without
+ * trajectory is touched, status[] then untouched too (also for a type
+ * without reset, or without clone when prototype is the source).  Built without
  * OpenMP, the runtime runs the trajectories one after the other (same
  * results). */
 int vigen_integrate_ensemble(const vigen_ensemble *e, size_t ntraj, double *t, double *q, double *p, double h,

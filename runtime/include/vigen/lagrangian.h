@@ -38,6 +38,21 @@
  * The buffer has the layout of an emitted stepper's (docs/emit.md).  The
  * problem itself (the callbacks and the velocity map) is not in it: give
  * the new integrator the same one.
+ *
+ * Stepper types: vigen_hp_type, vigen_midpoint_vi_type (its one-step map)
+ * and vigen_trapezoidal_vi_type (its one-step map) drive a workspace of
+ * each through the runtime's drivers: vigen_integrate, output at any time
+ * (vigen_integrate_at), events (vigen_integrate_events), ensembles
+ * (vigen_integrate_ensemble with the workspace as prototype) and restart.
+ * Their alloc is NULL (they are made from a Lagrangian, not a Hamiltonian:
+ * use X_alloc, or vigen_lagrangian_integrator_alloc, and clone); their
+ * vector field is the flow of the Lagrangian in (q, p): v from the inverse
+ * Legendre map dL/dv(t, q, v) = p by Newton (the runtime's stopping rule,
+ * started from the last step's velocity; a solve that does not converge is
+ * the driver's error status, never a result), q' = v, p' = dL/dq(t, q, v).
+ * The continuous extension then has the error O(h^4), and output at any
+ * time the order min(2, 4) = 2 of these integrators.  Evaluating the flow
+ * leaves the integrator's statistics and later steps untouched.
  */
 #ifndef VIGEN_LAGRANGIAN_H
 #define VIGEN_LAGRANGIAN_H
@@ -90,6 +105,26 @@ typedef struct {
                                    NULL = zeros */
     void *ctx;
 } vigen_velocity_map;
+
+/* ---- every integrator through its stepper type --------------------------- */
+
+extern const vigen_stepper_type vigen_hp_type;
+extern const vigen_stepper_type vigen_midpoint_vi_type;
+extern const vigen_stepper_type vigen_trapezoidal_vi_type;
+
+enum {
+    VIGEN_LAGRANGIAN_HP_TRAPEZOIDAL = 0,   /* vigen_hp, VIGEN_HP_TRAPEZOIDAL, trivial map */
+    VIGEN_LAGRANGIAN_HP_MIDPOINT = 1,      /* vigen_hp, VIGEN_HP_MIDPOINT, trivial map */
+    VIGEN_LAGRANGIAN_MIDPOINT_VI = 2,      /* vigen_midpoint_vi (needs g) */
+    VIGEN_LAGRANGIAN_TRAPEZOIDAL_VI = 3    /* vigen_trapezoidal_vi */
+};
+
+/* A workspace of the integrator `method` (above) for lag (g: the inverse
+ * Legendre map, used by VIGEN_LAGRANGIAN_MIDPOINT_VI only; opt NULL =
+ * defaults), and its type in *type (may be NULL).  NULL (and *type NULL)
+ * when the method is unknown, g is missing where needed, or X_alloc fails. */
+void *vigen_lagrangian_integrator_alloc(int method, const vigen_lagrangian *lag, vigen_lgrad_fn g,
+                                        const vigen_solver_options *opt, const vigen_stepper_type **type);
 
 /* VIGEN_SUCCESS when lag (and phi, which may be NULL) can be integrated:
  * dim > 0, the required callbacks present, phi->dim == lag->dim, Daphi given
@@ -151,6 +186,9 @@ int vigen_midpoint_vi_step(vigen_midpoint_vi *w, double *t, double *q, double *p
 int vigen_midpoint_vi_step2(vigen_midpoint_vi *w, double t0, double t1, double t2,
                             const double *q0, const double *q1, double *q2);
 const vigen_stats *vigen_midpoint_vi_stats(const vigen_midpoint_vi *w);
+/* Forget the history and statistics (the next one-step call starts a new
+ * trajectory). */
+void vigen_midpoint_vi_reset(vigen_midpoint_vi *w);
 void vigen_midpoint_vi_free(vigen_midpoint_vi *w);
 /* The state of the one-step form (the two-step form keeps none). */
 size_t vigen_midpoint_vi_state_size(const vigen_midpoint_vi *w);
@@ -180,6 +218,7 @@ int vigen_trapezoidal_vi_step2(vigen_trapezoidal_vi *w, double t0, double t1, do
 int vigen_trapezoidal_vi_integrate(vigen_trapezoidal_vi *w, const double *times, size_t ntimes,
                                    double *q, double *p, double *qs, double *ps, size_t *done);
 const vigen_stats *vigen_trapezoidal_vi_stats(const vigen_trapezoidal_vi *w);
+void vigen_trapezoidal_vi_reset(vigen_trapezoidal_vi *w);   /* vigen_hp_reset of its stepper */
 void vigen_trapezoidal_vi_free(vigen_trapezoidal_vi *w);
 /* The state of the Hamilton-Pontryagin stepper it runs (named vigen_hp). */
 size_t vigen_trapezoidal_vi_state_size(const vigen_trapezoidal_vi *w);

@@ -128,6 +128,41 @@ int vigen_poincare_integrate(const vigen_stepper_type *T, void *w, vigen_poincar
                              unsigned long every, vigen_poincare_observer_fn obs, void *obs_ctx,
                              vigen_poincare_result *res);
 
+/* ---- the transformed stepper as a stepper type ---------------------------- */
+/* A workspace of vigen_poincare_type: its own vigen_poincare for pb (kept:
+ * pb->sys by pointer, as vigen_poincare_alloc does) and a workspace of the
+ * stepper T (T->alloc with opt, NULL = defaults) for its K.  Its step
+ * (t, q, p, h) is one fictive step h from the physical state (t, q, p): q
+ * and p of dimension dim, and t the physical time, advanced by the step's
+ * own amount (about g h).  A step from the state the last step returned
+ * continues the trajectory (same level e, fictive time); any other state
+ * starts one, as vigen_poincare_integrate does.  Through the type:
+ *   vigen_integrate        n fictive steps (no stop at a physical time: use
+ *                          vigen_poincare_integrate for that);
+ *   vigen_integrate_at,    interpolated in the physical times the steps
+ *   vigen_integrate_events returned, with the physical flow (dH/dp, -dH/dq)
+ *                          as slopes; output times are physical times, h the
+ *                          fictive step (its sign that of the run);
+ *   vigen_integrate_ensemble  with the workspace as prototype (clone makes
+ *                          a new vigen_poincare and inner workspace);
+ *   state_size/get/set     the trajectory and the inner workspace's state.
+ * Its alloc is NULL, its order -1 (that of T), its statistics T's (fictive
+ * steps).  NULL when T has no alloc, or pb or memory fails. */
+typedef struct vigen_poincare_stepper vigen_poincare_stepper;
+extern const vigen_stepper_type vigen_poincare_type;
+vigen_poincare_stepper *vigen_poincare_stepper_alloc(const vigen_stepper_type *T, const vigen_poincare_problem *pb,
+                                                     const vigen_solver_options *opt);
+void vigen_poincare_stepper_free(vigen_poincare_stepper *s);
+/* Its transformed problem: messages (vigen_poincare_message) and
+ * evaluation counts. */
+vigen_poincare *vigen_poincare_stepper_transform(const vigen_poincare_stepper *s);
+/* vigen_poincare_integrate with the stepper, workspace and transformed
+ * problem of s: to a physical time t_end, the last step shortened.  Steps
+ * through the type and this driver continue each other's trajectory. */
+int vigen_poincare_stepper_integrate(vigen_poincare_stepper *s, double *t, double *q, double *p, double dtau,
+                                     double t_end, unsigned long max_steps, unsigned long every,
+                                     vigen_poincare_observer_fn obs, void *obs_ctx, vigen_poincare_result *res);
+
 /* The last failure in one line ("" when none). */
 const char *vigen_poincare_message(const vigen_poincare *pc);
 const vigen_poincare_stats *vigen_poincare_get_stats(const vigen_poincare *pc);

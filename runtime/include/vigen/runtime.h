@@ -21,7 +21,13 @@
  *     size_t NAME_state_size(const NAME_workspace *w);   bytes of a saved state
  *     int  NAME_state_get(const NAME_workspace *w, void *buf);   restart state (docs/emit.md)
  *     int  NAME_state_set(NAME_workspace *w, const void *buf);   VIGEN_ESTATE if not this stepper's
- *     extern const vigen_stepper_type NAME_type;   for vigen_integrate
+ *     extern const vigen_stepper_type NAME_type;   for the drivers (below,
+ *                                and vigen_integrate_ensemble of vigen/ensemble.h)
+ *
+ * The drivers take any integrator as a vigen_stepper_type and a workspace
+ * (runtime_real.h): emitted steppers, the Lagrangian integrators
+ * (vigen/lagrangian.h) and Poincare-transformed steppers (vigen/poincare.h)
+ * alike.
  *
  * NAME_step returns VIGEN_SUCCESS (0) or a status code below; on failure t, q
  * and p are left unchanged (bit for bit) and NAME_stats(w)->last_iterations

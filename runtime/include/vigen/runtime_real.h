@@ -41,12 +41,25 @@ typedef struct {
     const VIGEN_REAL *inv_mass;
 } VIGEN_SFX(vigen_mechanical);
 
-/* A stepper as a const type object (GSL style), for the driver. */
+/* An integrator as a const type object (GSL style): the one seam through
+ * which every driver of the runtime (vigen_integrate, output at any time,
+ * events, ensembles, restart, vigen_poincare_integrate) reaches it, with
+ * nothing but the type and a workspace.  Emitted steppers have NAME_type;
+ * the Lagrangian integrators vigen_hp_type, vigen_midpoint_vi_type and
+ * vigen_trapezoidal_vi_type (vigen/lagrangian.h); a Poincare-transformed
+ * stepper vigen_poincare_type (vigen/poincare.h).  Fields are only ever
+ * appended, so that positional initialisers of older types still compile
+ * (the missing fields are then NULL, and the drivers that need them say
+ * VIGEN_EINVAL). */
 typedef struct {
-    const char *name;          /* tableau name */
+    const char *name;          /* tableau or integrator name */
     int stages;
     int order;                 /* order certified by the checker for general H, -1 not decided */
     int explicit_separable;    /* 1 when explicit for separable H */
+    /* A workspace for the Hamiltonian sys (NULL opt = defaults); NULL for
+     * integrators made from another problem (a Lagrangian, a Poincare
+     * transformation): make their workspace with their own alloc, and more
+     * of them with clone. */
     void *(*alloc)(const VIGEN_SFX(vigen_hamiltonian) *sys, const vigen_solver_options *opt);
     int (*step)(void *w, VIGEN_REAL *t, VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h);
     void (*reset)(void *w);
@@ -60,7 +73,29 @@ typedef struct {
     size_t (*state_size)(const void *w);
     int (*state_get)(const void *w, void *buf);
     int (*state_set)(void *w, const void *buf);
+    /* The dimension of q and of p. */
+    size_t (*dim)(const void *w);
+    /* The flow of the workspace's problem at (t, q, p): q' into dq, p' into
+     * dp (dim entries each), in the time the step advances (for a
+     * Hamiltonian q' = dH/dp, p' = -dH/dq).  It feeds the continuous
+     * extension of output at any time and events.  It leaves what later
+     * steps read untouched (a run with it is bit for bit a run without) and
+     * returns VIGEN_SUCCESS or an error status (an inverse Legendre map that
+     * did not converge, a problem that cannot be evaluated), never an
+     * unconverged result.  Not thread-safe with steps of the same workspace. */
+    int (*vector_field)(void *w, VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, VIGEN_REAL *dq,
+                        VIGEN_REAL *dp);
+    /* A fresh workspace (no history, statistics zero) of the same
+     * integrator, problem and options; NULL when out of memory.  Ensembles
+     * make one per thread from a prototype. */
+    void *(*clone)(const void *w);
 } VIGEN_SFX(vigen_stepper_type);
+
+/* The vector field of every emitted stepper type: the flow of the problem
+ * its workspace begins with (NAME_alloc's vigen_hamiltonian, or the
+ * mechanical problem of NAME_alloc_mechanical: q' = M^-1 p, p' = f). */
+int VIGEN_SFX(vigen_prk_vector_field)(void *w, VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p,
+                                      VIGEN_REAL *dq, VIGEN_REAL *dp);
 
 /* Observer: called with the step count done so far; nonzero return stops. */
 typedef int (*VIGEN_SFX(vigen_observer_fn))(unsigned long step, VIGEN_REAL t, const VIGEN_REAL *q,
@@ -127,23 +162,23 @@ static inline VIGEN_REAL VIGEN_SFX(vigen_twosum_next)(VIGEN_REAL x, VIGEN_REAL d
 /* Compensated sum of an array of this type. */
 VIGEN_REAL VIGEN_SFX(vigen_sum_kahan)(const VIGEN_REAL *x, size_t n);
 
-/* ---- output at any time and events (dense_impl.h, events_impl.h) -------- */
+/* ---- output at any time and events (runtime/drive) ------------------ */
 /* Both drivers step exactly as vigen_integrate does (the same calls of
  * T->step, so the steps and the final state are those of vigen_integrate
  * bit for bit) and look between step ends through a continuous extension:
- * on a step from (t0, y0) to (t1, y1), y = (q, p), the cubic Hermite
- * polynomial through y0 and y1 with the slopes f(y0), f(y1) of the flow
- * (q' = dH/dp, p' = -dH/dq).  Its error is O(h^4), like the method's own
- * global error for order 4 and below it for orders 1 to 3.  The slopes cost
- * one dH/dq and one dH/dp per step end, evaluated only for the steps that
- * hold an output time or an event (a slope at a step end serves both steps
- * that share it); other steps cost nothing beyond the stepper's work.
+ * on a step from (t0, y0) to (t1, y1), y = (q, p), with t0 and t1 the
+ * times the step started from and returned (not t0 + h: a Poincare step
+ * advances t by its own amount), the cubic Hermite polynomial through y0
+ * and y1 with the slopes f(y0), f(y1) of the flow.  Its error is O(h^4),
+ * so that the output has the error O(h^min(p, 4)) of a method of order p.
+ * The slopes cost one evaluation of the flow per step end, only for the
+ * steps that hold an output time or an event (a slope at a step end serves
+ * both steps that share it); other steps cost nothing beyond the
+ * stepper's work.
  *
- * The problem comes from the workspace: every workspace of an emitted
- * stepper begins with its problem (the vigen_hamiltonian given to
- * NAME_alloc, then the vigen_mechanical and the diagonal of M^-1 of
- * NAME_alloc_mechanical, whose H has dH/dq = -f and dH/dp = M^-1 p).  For
- * a stepper type of your own, pass the problem to the _sys variants. */
+ * The flow is the type's vector_field (and its dim the dimension); the
+ * _sys variants take a Hamiltonian instead (q' = dH/dp, p' = -dH/dq),
+ * which overrides it, for a stepper type without a vector field. */
 
 /* An event function; events are the sign changes of g along the solution.
  * It returns the real type (the root is refined in that type). */
@@ -154,8 +189,9 @@ typedef VIGEN_REAL (*VIGEN_SFX(vigen_event_fn))(VIGEN_REAL t, const VIGEN_REAL *
 /* What a dense-output or event run cost beyond the steps themselves. */
 typedef struct {
     unsigned long steps;           /* steps taken */
-    unsigned long dHdq_evals;      /* slopes of the extension: calls of dH/dq (or of the force) */
-    unsigned long dHdp_evals;      /* calls of dH/dp (M^-1 p for a mechanical problem) */
+    unsigned long dHdq_evals;      /* slopes of the extension: calls of dH/dq (or of the
+                                      type's vector field, counted here and in dHdp_evals) */
+    unsigned long dHdp_evals;      /* calls of dH/dp */
     unsigned long event_evals;     /* calls of the event function */
     unsigned long root_iterations; /* root finder iterations, all events together */
 } vigen_dense_stats;
@@ -163,24 +199,26 @@ typedef struct {
 
 /* Steps with h from *t (h may be negative) until the last of the n_out
  * output times t_out is reached, and writes the state at t_out[k] into
- * q_out[k dim ..], p_out[k dim ..] (dim from the workspace's problem).
+ * q_out[k dim ..], p_out[k dim ..] (dim = T->dim(w), or sys->dim).
  * t_out must be monotone in the direction of h (equal times allowed) and
  * not before *t; an output time equal to a step end (or to the start) gets
  * that state exactly.  On return t, q, p hold the last step's state (past
  * or at the last output time) and *done (may be NULL) the steps taken.
  * Returns VIGEN_SUCCESS, VIGEN_EINVAL (NULL pointer, h zero or not finite,
- * output times out of order or before *t, a workspace without a problem:
- * nothing is stepped or written; also when the steps have not reached the
- * last output time after 5/4 of (t_last - t)/h + 16 steps, h too small to
- * move t), VIGEN_ENOMEM, VIGEN_ENONFINITE (a slope or an interpolated
- * state not finite) or the stepper's status (the state left at the last
- * good step, the outputs before it written). */
+ * output times out of order or before *t, a type without vector field
+ * and dim and no sys: nothing is stepped or written; also when the steps
+ * have not reached the last output time after 5/4 of (t_last - t)/h + 16
+ * steps and, at the average advance of t per step seen so far, would not
+ * either: h too small to move t), VIGEN_ENOMEM, VIGEN_ENONFINITE (a slope
+ * or an interpolated state not finite), the vector field's status or the
+ * stepper's status (the state left at the last good step, the outputs
+ * before it written). */
 int VIGEN_SFX(vigen_integrate_at)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t, VIGEN_REAL *q,
                                   VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
                                   VIGEN_REAL *q_out, VIGEN_REAL *p_out, unsigned long *done);
 
-/* The same with the problem given (sys; NULL = the workspace's) and the
- * cost reported in *st (may be NULL). */
+/* The same with the flow given by a Hamiltonian (sys; NULL = the type's
+ * vector field) and the cost reported in *st (may be NULL). */
 int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, void *w,
                                       const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL *t, VIGEN_REAL *q,
                                       VIGEN_REAL *p, VIGEN_REAL h, const VIGEN_REAL *t_out, size_t n_out,
@@ -198,8 +236,9 @@ int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, vo
  * NULL when max_events is 0) in order, *n_events receives the number
  * found.  terminal nonzero: the run stops at the first event with (t, q, p)
  * set to the extension's state there (the steps before it are untouched);
- * the workspace then holds a state it did not produce, which an emitted
- * stepper detects on its next step (it restarts its compensation).
+ * the workspace then holds a state it did not produce, which every
+ * integrator of the runtime detects on its next step (it restarts its
+ * compensation and history).
  * Returns VIGEN_SUCCESS (also after a terminal event), VIGEN_EINVAL (NULL
  * pointer, h zero or not finite, direction not -1, 0 or +1),
  * VIGEN_ENOMEM, VIGEN_ENONFINITE (g, a slope or an interpolated state not
@@ -210,9 +249,9 @@ int VIGEN_SFX(vigen_integrate_events)(const VIGEN_SFX(vigen_stepper_type) *T, vo
                                       VIGEN_SFX(vigen_event_fn) g, int direction, int terminal, void *ctx,
                                       VIGEN_REAL *t_events, size_t max_events, size_t *n_events);
 
-/* The same with the problem given (sys; NULL = the workspace's) and the
- * cost reported in *st (may be NULL; st->steps tells where a terminal
- * event stopped the run). */
+/* The same with the flow given by a Hamiltonian (sys; NULL = the type's
+ * vector field) and the cost reported in *st (may be NULL; st->steps tells
+ * where a terminal event stopped the run). */
 int VIGEN_SFX(vigen_integrate_events_sys)(const VIGEN_SFX(vigen_stepper_type) *T, void *w,
                                           const VIGEN_SFX(vigen_hamiltonian) *sys, VIGEN_REAL *t, VIGEN_REAL *q,
                                           VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,

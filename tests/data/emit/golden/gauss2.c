@@ -998,9 +998,16 @@ static void gauss2_free_v(void *w) { gauss2_free(w); }
 static size_t gauss2_state_size_v(const void *w) { return gauss2_state_size(w); }
 static int gauss2_state_get_v(const void *w, void *buf) { return gauss2_state_get(w, buf); }
 static int gauss2_state_set_v(void *w, const void *buf) { return gauss2_state_set(w, buf); }
+static size_t gauss2_dim_v(const void *w) { return ((const gauss2_workspace *)w)->n; }
+static void *gauss2_clone_v(const void *w)
+{
+    const gauss2_workspace *x = w;
+    return x->sys.dHdq ? (void *)gauss2_alloc(&x->sys, &x->opt) : (void *)gauss2_alloc_mechanical(&x->mech, &x->opt);
+}
 
 const vigen_stepper_type gauss2_type = {
     "gauss2", 2, 4, 0,
     gauss2_alloc_v, gauss2_step_v, gauss2_reset_v, gauss2_stats_v, gauss2_free_v,
-    gauss2_state_size_v, gauss2_state_get_v, gauss2_state_set_v
+    gauss2_state_size_v, gauss2_state_get_v, gauss2_state_set_v,
+    gauss2_dim_v, vigen_prk_vector_field, gauss2_clone_v
 };

@@ -1123,9 +1123,16 @@ static void verlet_free_v(void *w) { verlet_free(w); }
 static size_t verlet_state_size_v(const void *w) { return verlet_state_size(w); }
 static int verlet_state_get_v(const void *w, void *buf) { return verlet_state_get(w, buf); }
 static int verlet_state_set_v(void *w, const void *buf) { return verlet_state_set(w, buf); }
+static size_t verlet_dim_v(const void *w) { return ((const verlet_workspace *)w)->n; }
+static void *verlet_clone_v(const void *w)
+{
+    const verlet_workspace *x = w;
+    return x->sys.dHdq ? (void *)verlet_alloc(&x->sys, &x->opt) : (void *)verlet_alloc_mechanical(&x->mech, &x->opt);
+}
 
 const vigen_stepper_type verlet_type = {
     "stormer_verlet", 2, 2, 1,
     verlet_alloc_v, verlet_step_v, verlet_reset_v, verlet_stats_v, verlet_free_v,
-    verlet_state_size_v, verlet_state_get_v, verlet_state_set_v
+    verlet_state_size_v, verlet_state_get_v, verlet_state_set_v,
+    verlet_dim_v, vigen_prk_vector_field, verlet_clone_v
 };

@@ -1,7 +1,7 @@
 /* ensemble.c — vigen_integrate_ensemble: independent trajectories of one
  * problem shared among OpenMP threads, one workspace per thread, a status
- * per trajectory (vigen/ensemble.h).  Without OpenMP the same loop runs
- * serially. */
+ * per trajectory (vigen/ensemble.h), through the stepper type only.
+ * Without OpenMP the same loop runs serially. */
 #include <stdlib.h>
 #include "vigen/ensemble.h"
 
@@ -20,14 +20,20 @@ int vigen_ensemble_max_threads(void)
 
 static void *make_workspace(const vigen_ensemble *e)
 {
-    return e->alloc ? e->alloc(e->alloc_ctx) : e->type->alloc(e->sys, e->opt);
+    if (e->alloc) return e->alloc(e->alloc_ctx);
+    if (e->prototype) return e->type->clone(e->prototype);
+    return e->type->alloc(e->sys, e->opt);
 }
 
 int vigen_integrate_ensemble(const vigen_ensemble *e, size_t ntraj, double *t, double *q, double *p, double h,
                              unsigned long nsteps, int *status, unsigned long *steps)
 {
-    if (e == NULL || e->type == NULL || (e->sys == NULL && e->alloc == NULL) || status == NULL) return VIGEN_EINVAL;
-    const size_t dim = e->dim ? e->dim : e->sys ? e->sys->dim : 0;
+    if (e == NULL || e->type == NULL || e->type->reset == NULL || status == NULL) return VIGEN_EINVAL;
+    if (e->alloc == NULL && e->prototype == NULL && (e->sys == NULL || e->type->alloc == NULL)) return VIGEN_EINVAL;
+    if (e->alloc == NULL && e->prototype && e->type->clone == NULL) return VIGEN_EINVAL;
+    size_t dim = e->dim;
+    if (dim == 0 && e->sys) dim = e->sys->dim;
+    if (dim == 0 && e->prototype && e->type->dim) dim = e->type->dim(e->prototype);
     if (dim == 0 || (e->sys && e->sys->dim != dim) || !(h - h == 0)) return VIGEN_EINVAL;
     if (ntraj == 0) return VIGEN_SUCCESS;
     if (t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;

@@ -1,27 +1,6 @@
-/* real_impl.h — runtime functions repeated for each real type (included by
- * real.c with VIGEN_REAL, VIGEN_SFX, VIGEN_EPS and VIGEN_SQRT defined). */
-
-int VIGEN_SFX(vigen_integrate)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t,
-                               VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,
-                               unsigned long every, VIGEN_SFX(vigen_observer_fn) obs, void *obs_ctx,
-                               unsigned long *done)
-{
-    unsigned long k = 0;
-    int status = VIGEN_SUCCESS;
-    if (done) *done = 0;
-    if (T == NULL || w == NULL || t == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
-    if (obs && obs(0, *t, q, p, obs_ctx)) return VIGEN_ESTOPPED;
-    while (k < nsteps) {
-        status = T->step(w, t, q, p, h);
-        if (status != VIGEN_SUCCESS) break;
-        k++;
-        if (obs && ((every && k % every == 0) || k == nsteps)) {
-            if (obs(k, *t, q, p, obs_ctx)) { status = VIGEN_ESTOPPED; break; }
-        }
-    }
-    if (done) *done = k;
-    return status;
-}
+/* numeric_real.h — finite-difference Jacobians, the type's epsilon and
+ * compensated sums, repeated for each real type (instantiated by numeric.c
+ * through each_real.h). */
 
 /* Moves *x by a step relative to max(|*x|, 1) and returns the step actually
  * represented. */

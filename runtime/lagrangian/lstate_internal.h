@@ -1,6 +1,7 @@
-/* state.h — saved states of the Lagrangian integrators (internal to the
- * runtime): the header, the payload moves and the trailer that
- * vigen_hp_state_* and vigen_midpoint_vi_state_* share.
+/* lstate_internal.h — saved states of the Lagrangian integrators (internal
+ * to the runtime): the header, the payload moves, the trailer and the
+ * state_size, state_get and state_set that vigen_hp_state_* and
+ * vigen_midpoint_vi_state_* are.
  *
  * The buffer has the layout of an emitted stepper's saved state
  * (docs/emit.md, "Saved states"): a header of 192 bytes, the payload, and
@@ -33,11 +34,6 @@ typedef struct {
     uint64_t size;             /* bytes of the whole buffer */
 } vigen_lstate_header;
 
-/* The header of a state of `name` (at most 31 characters) with these sizes,
- * rule and options, size bytes long. */
-void vigen_lstate_header_init(vigen_lstate_header *h, const char *name, size_t dim, size_t params, int rule,
-                              const vigen_solver_options *opt, size_t size);
-
 /* A pass over a payload: save (workspace to buffer), load (buffer to
  * workspace) or, with buf NULL, only measure.  pos starts after the header. */
 typedef struct {
@@ -51,25 +47,36 @@ void vigen_lstate_reals(vigen_lstate_io *io, double *x, size_t n);
 void vigen_lstate_flag(vigen_lstate_io *io, int *x);              /* as 64 bits */
 void vigen_lstate_stats(vigen_lstate_io *io, vigen_stats *s);     /* ten counters of 64 bits */
 
-/* After a save pass: the trailer at io->pos.  The buffer's size is then
- * io->pos + 8. */
-void vigen_lstate_seal(vigen_lstate_io *io);
+/* Ends a pass: after a save into a buffer, writes the trailer at io->pos.
+ * Returns the buffer's size, trailer included. */
+size_t vigen_lstate_end(vigen_lstate_io *io);
 
 /* A payload pass of one integrator: moves its payload between the
- * workspace w and buf (see vigen_lstate_io) and returns the buffer's size,
- * trailer included; it seals the buffer after a save. */
+ * workspace w and buf (see vigen_lstate_io), flags first, and returns
+ * vigen_lstate_end's size. */
 typedef size_t (*vigen_lstate_walk_fn)(void *w, void *buf, int save);
 
-/* The header h and w's payload into buf.  w is only read. */
-int vigen_lstate_save(void *w, vigen_lstate_walk_fn walk, const vigen_lstate_header *h, void *buf);
-/* The payload of buf into w after vigen_lstate_check(buf, want, nflags,
- * flag_max) passed; its status otherwise, w unchanged.  buf is only read. */
-int vigen_lstate_load(void *w, vigen_lstate_walk_fn walk, const vigen_lstate_header *want, const void *buf,
-                      size_t nflags, uint64_t flag_max);
+/* What an integrator's saved state is: the header's name (at most 31
+ * characters), dimension, parameters, rule and options, the payload walk,
+ * and the largest value each of its first nflags flags may take. */
+typedef struct {
+    const char *name;
+    size_t dim, params;
+    int rule;
+    const vigen_solver_options *opt;
+    vigen_lstate_walk_fn walk;
+    size_t nflags;
+    uint64_t flag_max;
+} vigen_lstate_kind;
 
-/* VIGEN_SUCCESS when buf starts with `want`, holds want->size bytes whose
- * trailer matches, and its first `nflags` 64-bit flags after the header are
- * at most `flag_max`; VIGEN_ESTATE otherwise. */
-int vigen_lstate_check(const void *buf, const vigen_lstate_header *want, size_t nflags, uint64_t flag_max);
+/* X_state_size, X_state_get and X_state_set of every Lagrangian integrator
+ * (vigen/lagrangian.h), given its workspace w (not NULL) and kind.  Sizing
+ * and saving only read w.  get: VIGEN_EINVAL for a NULL buf.  set:
+ * VIGEN_EINVAL for a NULL buf; VIGEN_ESTATE, w unchanged, unless buf starts
+ * with w's header, holds that many bytes whose trailer matches, and its
+ * flags are in range; buf is only read. */
+size_t vigen_lstate_size(const void *w, const vigen_lstate_kind *k);
+int vigen_lstate_get(const void *w, const vigen_lstate_kind *k, void *buf);
+int vigen_lstate_set(void *w, const vigen_lstate_kind *k, const void *buf);
 
 #endif

@@ -9,25 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <vigen/poincare.h>
-
-struct vigen_poincare {
-    vigen_poincare_problem pb;
-    size_t n;                  /* dimension of q; K has n + 1 */
-    vigen_hamiltonian K;
-    vigen_poincare_stats stats;
-    /* the common part of both gradients of K at the point (cq, cp):
-     * hpe = H + e, g and its gradient; cache_status its verdict */
-    double *cq, *cp, *dgdq, *dgdp;
-    double hpe, g, dgdt;
-    int cache_ok, cache_status;
-    int err;                   /* first density failure seen inside a step */
-    /* the trajectory: extended state, fictive time, the physical time reported */
-    double *Q, *P, *Qs, *Ps;
-    double tau, t_rep;
-    int have;
-    char msg[256];
-};
+#include "poincare_internal.h"
 
 static void pc_say(vigen_poincare *pc, const char *fmt, ...)
 {
@@ -288,6 +270,22 @@ static int pc_failed(vigen_poincare *pc, int st, double t)
     return st;
 }
 
+int vigen_poincare_begin(vigen_poincare *pc, double t, const double *q, const double *p)
+{
+    const size_t n = pc->n;
+    const int same = pc->have && t == pc->t_rep && memcmp(q, pc->Q, n * sizeof(double)) == 0
+                     && memcmp(p, pc->P, n * sizeof(double)) == 0;
+    return same ? VIGEN_SUCCESS : pc_start(pc, t, q, p);
+}
+
+int vigen_poincare_fictive_step(vigen_poincare *pc, const vigen_stepper_type *T, void *w, double dtau)
+{
+    const double t0 = pc->Q[pc->n];
+    pc->err = 0;
+    const int st = T->step(w, &pc->tau, pc->Q, pc->P, dtau);
+    return st == VIGEN_SUCCESS ? st : pc_failed(pc, st, t0);
+}
+
 int vigen_poincare_integrate(const vigen_stepper_type *T, void *w, vigen_poincare *pc, double *t, double *q,
                              double *p, double dtau, double t_end, unsigned long max_steps,
                              unsigned long every, vigen_poincare_observer_fn obs, void *obs_ctx,
@@ -309,13 +307,8 @@ int vigen_poincare_integrate(const vigen_stepper_type *T, void *w, vigen_poincar
                    "dtau nonzero and of the sign of t_end - t", dtau, t_end, *t);
         return VIGEN_EINVAL;
     }
-    int st = VIGEN_SUCCESS;
-    const int same = pc->have && *t == pc->t_rep && memcmp(q, pc->Q, n * sizeof(double)) == 0
-                     && memcmp(p, pc->P, n * sizeof(double)) == 0;
-    if (!same) {
-        st = pc_start(pc, *t, q, p);
-        if (st != VIGEN_SUCCESS) return st;
-    }
+    int st = vigen_poincare_begin(pc, *t, q, p);
+    if (st != VIGEN_SUCCESS) return st;
     const double dir = dtau > 0 ? 1.0 : -1.0;
     unsigned long k = 0;
     int finished = (t_end == *t);
@@ -325,9 +318,8 @@ int vigen_poincare_integrate(const vigen_stepper_type *T, void *w, vigen_poincar
         const double tau0 = pc->tau, t0 = pc->Q[n];
         memcpy(pc->Qs, pc->Q, bytes);
         memcpy(pc->Ps, pc->P, bytes);
-        pc->err = 0;
-        st = T->step(w, &pc->tau, pc->Q, pc->P, dtau);
-        if (st != VIGEN_SUCCESS) { st = pc_failed(pc, st, t0); break; }
+        st = vigen_poincare_fictive_step(pc, T, w, dtau);
+        if (st != VIGEN_SUCCESS) break;
         const double ahead = dir * (pc->Q[n] - t_end);
         if (ahead >= 0) {
             if (ahead > 0) {

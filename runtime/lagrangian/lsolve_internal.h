@@ -1,4 +1,4 @@
-/* lsolve.h — the Newton solver shared by the Lagrangian integrators
+/* lsolve_internal.h — the Newton solver shared by the Lagrangian integrators
  * (internal to the runtime, not installed).
  *
  * Solves a small square system r(x) = 0 by Newton's method with GSL LU, the

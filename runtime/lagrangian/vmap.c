@@ -3,7 +3,7 @@
  * the Hamilton–Pontryagin equations are written with. */
 #include <math.h>
 #include <stdlib.h>
-#include "vmap.h"
+#include "vmap_internal.h"
 
 void vigen_vmap_value(const vigen_velocity_map *phi, size_t n, double h, const double *q0,
                       const double *q1, const double *dq, const double *a, double *v)

@@ -1,4 +1,4 @@
-/* vmap.h — evaluating a velocity map phi_h(q0, q1; a) and the transposed
+/* vmap_internal.h — evaluating a velocity map phi_h(q0, q1; a) and the transposed
  * products of its derivatives that the Hamilton–Pontryagin equations need
  * (internal to the runtime).  A NULL map is the trivial one,
  * phi = (q1 - q0)/h, whose derivatives -I/h and I/h are applied exactly. */

@@ -1,11 +1,11 @@
-/* dense_impl.h — the continuous extension of a run of steps and output at
- * any time (vigen_integrate_at), repeated for each real type (included by
- * real.c with VIGEN_REAL, VIGEN_SFX and VIGEN_EPS defined).  events_impl.h
- * uses the extension too.
+/* dense_real.h — the continuous extension of a run of steps and output at
+ * any time (vigen_integrate_at), repeated for each real type (instantiated
+ * by integrate.c through core/each_real.h).  events_real.h uses
+ * the extension too.
  *
  * The extension on a step from (t0, y0) to (t1, y1), y = (q, p), is the
- * cubic Hermite polynomial with the flow's slopes f = (dH/dp, -dH/dq) at
- * both ends: with h = t1 - t0 and s = (t - t0) / h,
+ * cubic Hermite polynomial with the flow's slopes f = (q', p') at both ends
+ * (the stepper type's vector field, or (dH/dp, -dH/dq) of a given H): with h = t1 - t0 and s = (t - t0) / h,
  *     y(s) = (1 + 2s)(1 - s)^2 y0 + s^2 (3 - 2s) y1 + h s (1 - s)^2 f(y0) - h s^2 (1 - s) f(y1).
  * It reproduces y0 and y1 exactly (the weights are exactly 0 and 1 there)
  * and interpolates a smooth solution with error h^4 max|y''''| / 384; the
@@ -14,23 +14,11 @@
  * the s-stage Gauss collocation polynomial has order s only, and the
  * stages of explicit splitting methods are not points of the solution. */
 
-/* The problem of a workspace from NAME_alloc_mechanical, seen as H:
- * dH/dq = -f(t, q), dH/dp = M^-1 p. */
 typedef struct {
-    const VIGEN_SFX(vigen_mechanical) *mech;
-    const VIGEN_REAL *im;
-} VIGEN_SFX(vigen_dense_mech);
-
-/* The first members of every emitted workspace (templates/prk). */
-typedef struct {
-    VIGEN_SFX(vigen_hamiltonian) sys;
-    VIGEN_SFX(vigen_mechanical) mech;
-    VIGEN_REAL *im;
-} VIGEN_SFX(vigen_dense_head);
-
-typedef struct {
-    VIGEN_SFX(vigen_hamiltonian) sys;  /* the problem (a copy; adapted for a mechanical one) */
-    VIGEN_SFX(vigen_dense_mech) adapter;
+    const VIGEN_SFX(vigen_stepper_type) *T;
+    void *w;
+    const VIGEN_SFX(vigen_hamiltonian) *sys;  /* the problem given to a _sys driver, else NULL:
+                                                 the slopes come from T->vector_field */
     size_t n;
     VIGEN_REAL *mem;
     VIGEN_REAL *y0, *f0, *f1, *y;      /* 2 n each: start state, slopes at start and end, scratch */
@@ -39,53 +27,24 @@ typedef struct {
     vigen_dense_stats *st;
 } VIGEN_SFX(vigen_dense);
 
-static void VIGEN_SFX(vigen_dense_mech_dHdq)(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p,
-                                            VIGEN_REAL *out, void *ctx)
-{
-    const VIGEN_SFX(vigen_dense_mech) *a = ctx;
-    (void)p;
-    a->mech->force(t, q, out, a->mech->ctx);
-    for (size_t k = 0; k < a->mech->dim; k++) out[k] = -out[k];
-}
-
-static void VIGEN_SFX(vigen_dense_mech_dHdp)(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p,
-                                            VIGEN_REAL *out, void *ctx)
-{
-    const VIGEN_SFX(vigen_dense_mech) *a = ctx;
-    (void)t;
-    (void)q;
-    for (size_t k = 0; k < a->mech->dim; k++) out[k] = a->im[k] * p[k];
-}
-
-/* Takes the problem (sys, or the workspace's when NULL) and the buffers.
- * VIGEN_EINVAL when there is no usable problem, VIGEN_ENOMEM. */
-static int VIGEN_SFX(vigen_dense_open)(VIGEN_SFX(vigen_dense) *d, const void *w,
+/* Takes the flow (sys, or the type's vector field when sys is NULL) and the
+ * buffers.  VIGEN_EINVAL when there is no usable flow, VIGEN_ENOMEM. */
+static int VIGEN_SFX(vigen_dense_open)(VIGEN_SFX(vigen_dense) *d, const VIGEN_SFX(vigen_stepper_type) *T, void *w,
                                       const VIGEN_SFX(vigen_hamiltonian) *sys, vigen_dense_stats *st)
 {
     memset(d, 0, sizeof *d);
     d->st = st;
+    d->T = T;
+    d->w = w;
     if (sys) {
-        d->sys = *sys;
+        if (sys->dHdq == NULL || sys->dHdp == NULL) return VIGEN_EINVAL;
+        d->sys = sys;
+        d->n = sys->dim;
     } else {
-        /* An emitted workspace begins with its vigen_hamiltonian; the
-         * mechanical problem and M^-1 follow, laid out as in the head. */
-        const char *base = w;
-        d->sys = *(const VIGEN_SFX(vigen_hamiltonian) *)w;
-        if (d->sys.dHdq == NULL || d->sys.dHdp == NULL) {
-            const VIGEN_SFX(vigen_mechanical) *mech =
-                (const VIGEN_SFX(vigen_mechanical) *)(base + offsetof(VIGEN_SFX(vigen_dense_head), mech));
-            const VIGEN_REAL *const *im =
-                (const VIGEN_REAL *const *)(base + offsetof(VIGEN_SFX(vigen_dense_head), im));
-            if (mech->force == NULL || *im == NULL || mech->dim != d->sys.dim) return VIGEN_EINVAL;
-            d->adapter.mech = mech;
-            d->adapter.im = *im;
-            d->sys.dHdq = VIGEN_SFX(vigen_dense_mech_dHdq);
-            d->sys.dHdp = VIGEN_SFX(vigen_dense_mech_dHdp);
-            d->sys.ctx = &d->adapter;
-        }
+        if (T->vector_field == NULL || T->dim == NULL) return VIGEN_EINVAL;
+        d->n = T->dim(w);
     }
-    d->n = d->sys.dim;
-    if (d->n == 0 || d->sys.dHdq == NULL || d->sys.dHdp == NULL) return VIGEN_EINVAL;
+    if (d->n == 0) return VIGEN_EINVAL;
     if (d->n > (size_t)-1 / (8 * sizeof(VIGEN_REAL))) return VIGEN_ENOMEM;
     d->mem = malloc(8 * d->n * sizeof(VIGEN_REAL));
     if (d->mem == NULL) return VIGEN_ENOMEM;
@@ -120,18 +79,25 @@ static int VIGEN_SFX(vigen_dense_finite)(const VIGEN_REAL *x, size_t n)
     return 1;
 }
 
-/* f = (dH/dp, -dH/dq) at (t, q, p). */
+/* f = (q', p') at (t, q, p): (dH/dp, -dH/dq) of the given problem, or the
+ * type's vector field. */
 static int VIGEN_SFX(vigen_dense_slope)(VIGEN_SFX(vigen_dense) *d, VIGEN_REAL t, const VIGEN_REAL *q,
                                        const VIGEN_REAL *p, VIGEN_REAL *f)
 {
     const size_t n = d->n;
-    d->sys.dHdp(t, q, p, f, d->sys.ctx);
-    d->sys.dHdq(t, q, p, f + n, d->sys.ctx);
-    for (size_t k = 0; k < n; k++) f[n + k] = -f[n + k];
+    int status = VIGEN_SUCCESS;
+    if (d->sys) {
+        d->sys->dHdp(t, q, p, f, d->sys->ctx);
+        d->sys->dHdq(t, q, p, f + n, d->sys->ctx);
+        for (size_t k = 0; k < n; k++) f[n + k] = -f[n + k];
+    } else {
+        status = d->T->vector_field(d->w, t, q, p, f, f + n);
+    }
     if (d->st) {
         d->st->dHdp_evals++;
         d->st->dHdq_evals++;
     }
+    if (status != VIGEN_SUCCESS) return status;
     return VIGEN_SFX(vigen_dense_finite)(f, 2 * n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
@@ -200,11 +166,12 @@ int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, vo
     }
     /* The steps needed, with room for the rounding of t; a step too small
      * to move t would otherwise never reach the last output time. */
-    const VIGEN_REAL needed = n_out ? (t_out[n_out - 1] - *t) / h : 0;
+    const VIGEN_REAL t_start = *t;
+    VIGEN_REAL needed = n_out ? (t_out[n_out - 1] - *t) / h : 0;
     if (!(needed < (VIGEN_REAL)(ULONG_MAX / 2))) return VIGEN_EINVAL;
-    const unsigned long cap = (unsigned long)(needed + needed / 4) + 16;
+    unsigned long cap = (unsigned long)(needed + needed / 4) + 16;
     if (n_out == 0) return VIGEN_SUCCESS;
-    status = VIGEN_SFX(vigen_dense_open)(&d, w, sys, st);
+    status = VIGEN_SFX(vigen_dense_open)(&d, T, w, sys, st);
     if (status != VIGEN_SUCCESS) {
         VIGEN_SFX(vigen_dense_close)(&d);
         return status;
@@ -216,8 +183,17 @@ int VIGEN_SFX(vigen_integrate_at_sys)(const VIGEN_SFX(vigen_stepper_type) *T, vo
     }
     while (k < n_out && status == VIGEN_SUCCESS) {
         if (steps == cap) {
-            status = VIGEN_EINVAL;
-            break;
+            /* A step that does not advance t by h (a Poincare workspace
+             * steps in fictive time) is judged by the average advance of
+             * the steps taken: none, or too little to finish, is h too
+             * small to move t. */
+            const VIGEN_REAL rate = (*t - t_start) / (VIGEN_REAL)steps;
+            needed = dir * rate > 0 ? (t_out[n_out - 1] - *t) / rate : (VIGEN_REAL)ULONG_MAX;
+            if (!(needed < (VIGEN_REAL)(ULONG_MAX / 4))) {
+                status = VIGEN_EINVAL;
+                break;
+            }
+            cap = steps + (unsigned long)(needed + needed / 4) + 16;
         }
         VIGEN_SFX(vigen_dense_begin)(&d, *t, q, p);
         status = T->step(w, t, q, p, h);

@@ -1,8 +1,9 @@
-/* state.c — the saved-state buffer of the Lagrangian integrators (state.h):
- * the header, the moves of a payload between workspace and buffer, the
- * FNV-1a trailer and the checks made before anything is loaded. */
+/* lstate.c — the saved-state buffer of the Lagrangian integrators
+ * (lstate_internal.h): the header, the moves of a payload between workspace
+ * and buffer, the FNV-1a trailer, the checks made before anything is
+ * loaded, and the state_size/get/set every integrator offers. */
 #include <string.h>
-#include "state.h"
+#include "lstate_internal.h"
 
 _Static_assert(sizeof(vigen_lstate_header) == 192, "the state header has no padding");
 
@@ -15,8 +16,10 @@ static uint64_t fnv(uint64_t hash, const void *data, size_t len)
     return hash;
 }
 
-void vigen_lstate_header_init(vigen_lstate_header *h, const char *name, size_t dim, size_t params, int rule,
-                              const vigen_solver_options *opt, size_t size)
+/* The header of a state of `name` with these sizes, rule and options,
+ * size bytes long. */
+static void header_init(vigen_lstate_header *h, const char *name, size_t dim, size_t params, int rule,
+                        const vigen_solver_options *opt, size_t size)
 {
     memset(h, 0, sizeof *h);
     memcpy(h->magic, "vigen-st", 8);
@@ -76,13 +79,19 @@ void vigen_lstate_stats(vigen_lstate_io *io, vigen_stats *s)
     }
 }
 
-void vigen_lstate_seal(vigen_lstate_io *io)
+size_t vigen_lstate_end(vigen_lstate_io *io)
 {
-    const uint64_t sum = fnv(FNV_START, io->buf, io->pos);
-    memcpy(io->buf + io->pos, &sum, sizeof sum);
+    if (io->buf && io->save) {
+        const uint64_t sum = fnv(FNV_START, io->buf, io->pos);
+        memcpy(io->buf + io->pos, &sum, sizeof sum);
+    }
+    return io->pos + sizeof(uint64_t);
 }
 
-int vigen_lstate_check(const void *buf, const vigen_lstate_header *want, size_t nflags, uint64_t flag_max)
+/* VIGEN_SUCCESS when buf starts with `want`, holds want->size bytes whose
+ * trailer matches, and its first `nflags` 64-bit flags after the header are
+ * at most `flag_max`; VIGEN_ESTATE otherwise. */
+static int check(const void *buf, const vigen_lstate_header *want, size_t nflags, uint64_t flag_max)
 {
     const unsigned char *b = buf;
     const size_t end = (size_t)want->size - sizeof(uint64_t);
@@ -97,17 +106,30 @@ int vigen_lstate_check(const void *buf, const vigen_lstate_header *want, size_t 
     return VIGEN_SUCCESS;
 }
 
-int vigen_lstate_save(void *w, vigen_lstate_walk_fn walk, const vigen_lstate_header *h, void *buf)
+/* Measuring and saving only read w (the walk takes it without const). */
+size_t vigen_lstate_size(const void *w, const vigen_lstate_kind *k) { return k->walk((void *)(uintptr_t)w, NULL, 1); }
+
+static void header_of(const void *w, const vigen_lstate_kind *k, vigen_lstate_header *h)
 {
-    memcpy(buf, h, sizeof *h);
-    walk(w, buf, 1);
+    header_init(h, k->name, k->dim, k->params, k->rule, k->opt, vigen_lstate_size(w, k));
+}
+
+int vigen_lstate_get(const void *w, const vigen_lstate_kind *k, void *buf)
+{
+    if (buf == NULL) return VIGEN_EINVAL;
+    vigen_lstate_header h;
+    header_of(w, k, &h);
+    memcpy(buf, &h, sizeof h);
+    k->walk((void *)(uintptr_t)w, buf, 1);
     return VIGEN_SUCCESS;
 }
 
-int vigen_lstate_load(void *w, vigen_lstate_walk_fn walk, const vigen_lstate_header *want, const void *buf,
-                      size_t nflags, uint64_t flag_max)
+int vigen_lstate_set(void *w, const vigen_lstate_kind *k, const void *buf)
 {
-    int st = vigen_lstate_check(buf, want, nflags, flag_max);
-    if (st == VIGEN_SUCCESS) walk(w, (void *)(uintptr_t)buf, 0);   /* loading only reads the buffer */
+    if (buf == NULL) return VIGEN_EINVAL;
+    vigen_lstate_header h;
+    header_of(w, k, &h);
+    int st = check(buf, &h, k->nflags, k->flag_max);
+    if (st == VIGEN_SUCCESS) k->walk(w, (void *)(uintptr_t)buf, 0);   /* loading only reads the buffer */
     return st;
 }

@@ -31,8 +31,9 @@
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_permutation.h>
 #include <vigen/lagrangian.h>
-#include "lsolve.h"
-#include "state.h"
+#include "lfield_internal.h"
+#include "lsolve_internal.h"
+#include "lstate_internal.h"
 
 struct vigen_midpoint_vi {
     vigen_lagrangian lag;
@@ -61,6 +62,7 @@ struct vigen_midpoint_vi {
     double *gq, *gv, *xq, *xv, *sq, *sv;   /* differences: base, point, shifted gradients */
     gsl_matrix *A;
     gsl_permutation *perm;
+    vigen_lfield field;         /* the flow for output at any time and events */
 };
 /* Of these, a saved state (vigen_midpoint_vi_state_get) holds what later
  * steps read: history, the statistics, tlast, ct, hprev, hprev2, qlast,
@@ -395,7 +397,8 @@ vigen_midpoint_vi *vigen_midpoint_vi_alloc(const vigen_lagrangian *lag, vigen_lg
     w->ls = vigen_lsolve_alloc(n);
     w->A = gsl_matrix_alloc(n, n);
     w->perm = gsl_permutation_alloc(n);
-    if (w->mem == NULL || w->ls == NULL || w->A == NULL || w->perm == NULL) {
+    const int field = vigen_lfield_init(&w->field, &w->lag, &w->opt);
+    if (w->mem == NULL || w->ls == NULL || w->A == NULL || w->perm == NULL || field != VIGEN_SUCCESS) {
         vigen_midpoint_vi_free(w);
         return NULL;
     }
@@ -411,19 +414,27 @@ vigen_midpoint_vi *vigen_midpoint_vi_alloc(const vigen_lagrangian *lag, vigen_lg
 
 const vigen_stats *vigen_midpoint_vi_stats(const vigen_midpoint_vi *w) { return &w->stats; }
 
+void vigen_midpoint_vi_reset(vigen_midpoint_vi *w)
+{
+    if (w == NULL) return;
+    memset(&w->stats, 0, sizeof w->stats);
+    w->history = 0;   /* the next step starts a trajectory: no compensation, no velocity to extrapolate */
+}
+
 void vigen_midpoint_vi_free(vigen_midpoint_vi *w)
 {
     if (w == NULL) return;
     vigen_lsolve_free(w->ls);
     if (w->A) gsl_matrix_free(w->A);
     if (w->perm) gsl_permutation_free(w->perm);
+    vigen_lfield_clear(&w->field);
     free(w->mem);
     free(w);
 }
 
 /* ---- saved states ----------------------------------------------------------- */
 
-/* The payload in its order (state.h): the flag first, as vigen_lstate_check
+/* The payload in its order (lstate_internal.h): the flag first, as vigen_lstate_check
  * reads it, then the statistics, times and arrays. */
 static size_t mvi_state_walk(void *ws, void *buf, int save)
 {
@@ -437,35 +448,66 @@ static size_t mvi_state_walk(void *ws, void *buf, int save)
     for (size_t i = 0; i < sizeof scalars / sizeof scalars[0]; i++) vigen_lstate_reals(&io, scalars[i], 1);
     double *const arrays[] = { w->qlast, w->plast, w->cq, w->cp, w->vprev, w->vprev2 };
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) vigen_lstate_reals(&io, arrays[i], n);
-    if (buf && save) vigen_lstate_seal(&io);
-    return io.pos + sizeof(uint64_t);
+    return vigen_lstate_end(&io);
 }
 
-/* Measuring and saving only read w (the walk takes it without const). */
-static void mvi_state_header(const vigen_midpoint_vi *w, vigen_lstate_header *h)
+/* history is 0 .. 2 */
+static vigen_lstate_kind mvi_state_kind(const vigen_midpoint_vi *w)
 {
-    vigen_lstate_header_init(h, "vigen_midpoint_vi", w->n, 0, w->g != NULL, &w->opt,
-                             mvi_state_walk((vigen_midpoint_vi *)w, NULL, 1));
+    return (vigen_lstate_kind){ "vigen_midpoint_vi", w->n, 0, w->g != NULL, &w->opt, mvi_state_walk, 1, 2 };
 }
 
 size_t vigen_midpoint_vi_state_size(const vigen_midpoint_vi *w)
 {
-    return w ? mvi_state_walk((vigen_midpoint_vi *)w, NULL, 1) : 0;
+    if (w == NULL) return 0;
+    const vigen_lstate_kind k = mvi_state_kind(w);
+    return vigen_lstate_size(w, &k);
 }
 
 int vigen_midpoint_vi_state_get(const vigen_midpoint_vi *w, void *buf)
 {
-    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
-    vigen_lstate_header h;
-    mvi_state_header(w, &h);
-    return vigen_lstate_save((vigen_midpoint_vi *)w, mvi_state_walk, &h, buf);
+    if (w == NULL) return VIGEN_EINVAL;
+    const vigen_lstate_kind k = mvi_state_kind(w);
+    return vigen_lstate_get(w, &k, buf);
 }
 
-/* history is 0 .. 2 */
 int vigen_midpoint_vi_state_set(vigen_midpoint_vi *w, const void *buf)
 {
-    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
-    vigen_lstate_header h;
-    mvi_state_header(w, &h);
-    return vigen_lstate_load(w, mvi_state_walk, &h, buf, 1, 2);
+    if (w == NULL) return VIGEN_EINVAL;
+    const vigen_lstate_kind k = mvi_state_kind(w);
+    return vigen_lstate_set(w, &k, buf);
 }
+
+/* ---- the stepper type ------------------------------------------------------- */
+
+/* The flow, Newton started from the last step's velocity (zero before the
+ * first step). */
+static int mvi_field(void *ws, double t, const double *q, const double *p, double *dq, double *dp)
+{
+    vigen_midpoint_vi *w = ws;
+    return vigen_lfield_eval(&w->field, w->history ? w->vprev : NULL, t, q, p, dq, dp);
+}
+
+static int mvi_type_step(void *w, double *t, double *q, double *p, double h)
+{
+    return vigen_midpoint_vi_step(w, t, q, p, h);
+}
+static void mvi_type_reset(void *w) { vigen_midpoint_vi_reset(w); }
+static const vigen_stats *mvi_type_stats(const void *w) { return vigen_midpoint_vi_stats(w); }
+static void mvi_type_free(void *w) { vigen_midpoint_vi_free(w); }
+static size_t mvi_type_state_size(const void *w) { return vigen_midpoint_vi_state_size(w); }
+static int mvi_type_state_get(const void *w, void *buf) { return vigen_midpoint_vi_state_get(w, buf); }
+static int mvi_type_state_set(void *w, const void *buf) { return vigen_midpoint_vi_state_set(w, buf); }
+static size_t mvi_type_dim(const void *w) { return ((const vigen_midpoint_vi *)w)->n; }
+static void *mvi_type_clone(const void *ws)
+{
+    const vigen_midpoint_vi *w = ws;
+    return vigen_midpoint_vi_alloc(&w->lag, w->g, &w->opt);
+}
+
+const vigen_stepper_type vigen_midpoint_vi_type = {
+    "vigen_midpoint_vi", 1, 2, 0,
+    NULL, mvi_type_step, mvi_type_reset, mvi_type_stats, mvi_type_free,
+    mvi_type_state_size, mvi_type_state_get, mvi_type_state_set,
+    mvi_type_dim, mvi_field, mvi_type_clone
+};

@@ -10,11 +10,12 @@
  * same step from (q1, p1).  For L = 1/2 m v^2 - V(q) it is the leapfrog. */
 #include <stdlib.h>
 #include <string.h>
-#include "hp_impl.h"
+#include "hp_internal.h"
 
 struct vigen_trapezoidal_vi {
     vigen_hp *hp;
     vigen_lagrangian lag;
+    vigen_solver_options opt;   /* as given (clones are made with them) */
     size_t n;
     double *v, *lv0, *lv1, *lq1, *q, *p;   /* one block */
 };
@@ -34,6 +35,8 @@ vigen_trapezoidal_vi *vigen_trapezoidal_vi_alloc(const vigen_lagrangian *lag,
     }
     w->hp = hp;
     w->lag = *lag;
+    if (opt) w->opt = *opt;
+    else vigen_solver_options_default(&w->opt);
     w->n = lag->dim;
     w->v = b;
     w->lv0 = b + w->n;
@@ -55,6 +58,11 @@ void vigen_trapezoidal_vi_free(vigen_trapezoidal_vi *w)
 const vigen_stats *vigen_trapezoidal_vi_stats(const vigen_trapezoidal_vi *w)
 {
     return w ? vigen_hp_stats(w->hp) : NULL;
+}
+
+void vigen_trapezoidal_vi_reset(vigen_trapezoidal_vi *w)
+{
+    if (w) vigen_hp_reset(w->hp);
 }
 
 int vigen_trapezoidal_vi_step(vigen_trapezoidal_vi *w, double *t, double *q, double *p, double h)
@@ -141,3 +149,30 @@ int vigen_trapezoidal_vi_state_set(vigen_trapezoidal_vi *w, const void *buf)
 {
     return w ? vigen_hp_state_set(w->hp, buf) : VIGEN_EINVAL;
 }
+
+/* ---- the stepper type: the one-step map ------------------------------------- */
+
+static int tvi_step(void *w, double *t, double *q, double *p, double h) { return vigen_trapezoidal_vi_step(w, t, q, p, h); }
+static void tvi_reset(void *w) { vigen_trapezoidal_vi_reset(w); }
+static const vigen_stats *tvi_stats(const void *w) { return vigen_trapezoidal_vi_stats(w); }
+static void tvi_free(void *w) { vigen_trapezoidal_vi_free(w); }
+static size_t tvi_state_size(const void *w) { return vigen_trapezoidal_vi_state_size(w); }
+static int tvi_state_get(const void *w, void *buf) { return vigen_trapezoidal_vi_state_get(w, buf); }
+static int tvi_state_set(void *w, const void *buf) { return vigen_trapezoidal_vi_state_set(w, buf); }
+static size_t tvi_dim(const void *w) { return ((const vigen_trapezoidal_vi *)w)->n; }
+static int tvi_field(void *w, double t, const double *q, const double *p, double *dq, double *dp)
+{
+    return vigen_hp_vector_field(((vigen_trapezoidal_vi *)w)->hp, t, q, p, dq, dp);
+}
+static void *tvi_clone(const void *ws)
+{
+    const vigen_trapezoidal_vi *w = ws;
+    return vigen_trapezoidal_vi_alloc(&w->lag, &w->opt);
+}
+
+const vigen_stepper_type vigen_trapezoidal_vi_type = {
+    "vigen_trapezoidal_vi", 1, 2, 0,
+    NULL, tvi_step, tvi_reset, tvi_stats, tvi_free,
+    tvi_state_size, tvi_state_get, tvi_state_set,
+    tvi_dim, tvi_field, tvi_clone
+};

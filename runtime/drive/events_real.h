@@ -1,6 +1,6 @@
-/* events_impl.h — sign changes of an event function along a run of steps
- * (vigen_integrate_events), repeated for each real type (included by real.c
- * after dense_impl.h, whose continuous extension it searches).
+/* events_real.h — sign changes of an event function along a run of steps
+ * (vigen_integrate_events), repeated for each real type (instantiated by
+ * integrate.c after dense_real.h, whose continuous extension it searches).
  *
  * A step whose end values of g have opposite signs is searched in the
  * extension's parameter s in [0, 1] (t = t0 + s h): GSL's Brent solver
@@ -130,7 +130,7 @@ int VIGEN_SFX(vigen_integrate_events_sys)(const VIGEN_SFX(vigen_stepper_type) *T
     if (status != VIGEN_SUCCESS) return status;
     if (g == NULL || n_events == NULL || (max_events > 0 && t_events == NULL) || direction < -1 || direction > 1)
         return VIGEN_EINVAL;
-    status = VIGEN_SFX(vigen_dense_open)(&d, w, sys, st);
+    status = VIGEN_SFX(vigen_dense_open)(&d, T, w, sys, st);
     if (status != VIGEN_SUCCESS) {
         VIGEN_SFX(vigen_dense_close)(&d);
         return status;

@@ -1,5 +1,5 @@
 /* lsolve.c — Newton's method for the small implicit systems of the
- * Lagrangian integrators (see lsolve.h for the choices made). */
+ * Lagrangian integrators (see lsolve_internal.h for the choices made). */
 #include <float.h>
 #include <math.h>
 #include <stdlib.h>
@@ -9,7 +9,7 @@
 #include <gsl/gsl_matrix.h>
 #include <gsl/gsl_permutation.h>
 #include <gsl/gsl_vector.h>
-#include "lsolve.h"
+#include "lsolve_internal.h"
 
 /* Halvings of a Newton step that lands where the residual is not finite
  * (a factor 1/1024 at most) before the solve gives up. */

@@ -30,10 +30,11 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "hp_impl.h"
-#include "lsolve.h"
-#include "state.h"
-#include "vmap.h"
+#include "hp_internal.h"
+#include "lfield_internal.h"
+#include "lsolve_internal.h"
+#include "lstate_internal.h"
+#include "vmap_internal.h"
 
 struct vigen_hp {
     vigen_lagrangian lag;
@@ -43,7 +44,7 @@ struct vigen_hp {
     size_t n, m, N;             /* dim, parameters, unknowns n + m */
     vigen_solver_options opt;
     vigen_stats stats;
-    vigen_lsolve *ls, *inv;     /* the step's system (N) and the Legendre inversion (n) */
+    vigen_lsolve *ls;           /* the step's system (N) */
     int exact_jac;
     /* the system being solved */
     double t0, t1, h;
@@ -59,6 +60,7 @@ struct vigen_hp {
     int have_end;
     double t_end, *q_end, *p_end;
     double ct, *cq, *cp, *qn, *pn, *cqn, *cpn, *dq, *dp;
+    vigen_lfield field;         /* the Legendre inversion: the predictor's and the flow's */
 };
 /* Of these, a saved state (vigen_hp_state_get) holds what later steps read:
  * nhist, have_end, the statistics, t_end, ct, tm_h, tm_prev, q_end, p_end,
@@ -134,22 +136,6 @@ static int jacobian(const double *x, double *J, void *ctx)
 
 /* ---- the Legendre inversion dL/dv(t_n, q_n, v) = p_n -------------------- */
 
-static int legendre_residual(const double *v, double *r, void *ctx)
-{
-    vigen_hp *w = ctx;
-    w->lag.dLdv(w->t0, w->q0, v, r, w->lag.ctx);
-    w->stats.dHdp_evals++;
-    for (size_t i = 0; i < w->n; i++) r[i] -= w->p0[i];
-    return VIGEN_SUCCESS;
-}
-
-static int legendre_jacobian(const double *v, double *J, void *ctx)
-{
-    vigen_hp *w = ctx;
-    w->lag.d2Ldv2(w->t0, w->q0, v, J, w->lag.ctx);
-    return VIGEN_SUCCESS;
-}
-
 /* The velocity at (t_n, q_n, p_n) into w->v: Newton from v = 0, then from
  * v = p_n when d2L/dv2 is singular at 0.  VIGEN_ESINGULAR when it is at
  * both; any other failure leaves the predictor v = 0 (the step's own solve
@@ -157,14 +143,10 @@ static int legendre_jacobian(const double *v, double *J, void *ctx)
 static int legendre_velocity(vigen_hp *w)
 {
     const size_t n = w->n;
-    vigen_lsolve_jacobian_fn jf = w->lag.d2Ldv2 ? legendre_jacobian : NULL;
-    int st = VIGEN_ESINGULAR;
-    for (int attempt = 0; attempt < 2 && st == VIGEN_ESINGULAR; attempt++) {
-        for (size_t i = 0; i < n; i++) w->v[i] = attempt == 0 ? 0.0 : w->p0[i];
-        st = vigen_lsolve_run(w->inv, w->v, legendre_residual, jf, w, &w->opt, &w->stats);
-    }
+    int st = vigen_lfield_velocity(&w->field, NULL, w->t0, w->q0, w->p0, &w->stats);
     if (st == VIGEN_ESINGULAR) return st;
-    if (st != VIGEN_SUCCESS) memset(w->v, 0, n * sizeof(double));
+    if (st == VIGEN_SUCCESS) memcpy(w->v, w->field.v, n * sizeof(double));
+    else memset(w->v, 0, n * sizeof(double));
     return VIGEN_SUCCESS;
 }
 
@@ -197,11 +179,11 @@ vigen_hp *vigen_hp_alloc(const vigen_lagrangian *lag, int rule, const vigen_velo
     /* one block for every array: the vectors of n, a and a0, x and r, 3 n x n, D */
     double *buf = calloc(nvec * n + 2 * m + 2 * w->N + 3 * n * n + nd, sizeof(double));
     w->ls = vigen_lsolve_alloc(w->N);
-    w->inv = vigen_lsolve_alloc(n);
-    if (buf == NULL || w->ls == NULL || w->inv == NULL) {
+    const int field = vigen_lfield_init(&w->field, &w->lag, &w->opt);
+    if (buf == NULL || w->ls == NULL || field != VIGEN_SUCCESS) {
         free(buf);
         vigen_lsolve_free(w->ls);
-        vigen_lsolve_free(w->inv);
+        vigen_lfield_clear(&w->field);
         free(w);
         return NULL;
     }
@@ -224,7 +206,7 @@ void vigen_hp_free(vigen_hp *w)
 {
     if (w == NULL) return;
     vigen_lsolve_free(w->ls);
-    vigen_lsolve_free(w->inv);
+    vigen_lfield_clear(&w->field);
     free(w->block);
     free(w);
 }
@@ -385,7 +367,7 @@ int vigen_hp_step(vigen_hp *w, double *t, double *q, double *p, double h)
 
 /* ---- saved states ----------------------------------------------------------- */
 
-/* The payload in its order (state.h): the flags first, as
+/* The payload in its order (lstate_internal.h): the flags first, as
  * vigen_lstate_check reads them, then the statistics, times and arrays. */
 static size_t state_walk(void *ws, void *buf, int save)
 {
@@ -401,31 +383,70 @@ static size_t state_walk(void *ws, void *buf, int save)
     double *const arrays[] = { w->q_end, w->p_end, w->cq, w->cp, w->vh, w->vh_prev };
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) vigen_lstate_reals(&io, arrays[i], n);
     vigen_lstate_reals(&io, w->a, w->m);
-    if (buf && save) vigen_lstate_seal(&io);
-    return io.pos + sizeof(uint64_t);
-}
-
-/* Measuring and saving only read w (the walk takes it without const). */
-static void state_header(const vigen_hp *w, vigen_lstate_header *h)
-{
-    vigen_lstate_header_init(h, "vigen_hp", w->n, w->m, w->rule, &w->opt, state_walk((vigen_hp *)w, NULL, 1));
-}
-
-size_t vigen_hp_state_size(const vigen_hp *w) { return w ? state_walk((vigen_hp *)w, NULL, 1) : 0; }
-
-int vigen_hp_state_get(const vigen_hp *w, void *buf)
-{
-    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
-    vigen_lstate_header h;
-    state_header(w, &h);
-    return vigen_lstate_save((vigen_hp *)w, state_walk, &h, buf);
+    return vigen_lstate_end(&io);
 }
 
 /* nhist is 0 .. 2, have_end 0 or 1 */
+static vigen_lstate_kind state_kind(const vigen_hp *w)
+{
+    return (vigen_lstate_kind){ "vigen_hp", w->n, w->m, w->rule, &w->opt, state_walk, 2, 2 };
+}
+
+size_t vigen_hp_state_size(const vigen_hp *w)
+{
+    if (w == NULL) return 0;
+    const vigen_lstate_kind k = state_kind(w);
+    return vigen_lstate_size(w, &k);
+}
+
+int vigen_hp_state_get(const vigen_hp *w, void *buf)
+{
+    if (w == NULL) return VIGEN_EINVAL;
+    const vigen_lstate_kind k = state_kind(w);
+    return vigen_lstate_get(w, &k, buf);
+}
+
 int vigen_hp_state_set(vigen_hp *w, const void *buf)
 {
-    if (w == NULL || buf == NULL) return VIGEN_EINVAL;
-    vigen_lstate_header h;
-    state_header(w, &h);
-    return vigen_lstate_load(w, state_walk, &h, buf, 2, 2);
+    if (w == NULL) return VIGEN_EINVAL;
+    const vigen_lstate_kind k = state_kind(w);
+    return vigen_lstate_set(w, &k, buf);
 }
+
+/* ---- the stepper type ------------------------------------------------------- */
+
+/* The flow, Newton started from the last step's velocity v_{n+1/2} (zero
+ * before the first step). */
+int vigen_hp_vector_field(vigen_hp *w, double t, const double *q, const double *p, double *dq, double *dp)
+{
+    if (w == NULL || q == NULL || p == NULL || dq == NULL || dp == NULL) return VIGEN_EINVAL;
+    return vigen_lfield_eval(&w->field, w->vh, t, q, p, dq, dp);
+}
+
+static void *type_clone(const void *ws)
+{
+    const vigen_hp *w = ws;
+    vigen_velocity_map map = w->map;
+    map.a0 = w->a0;   /* the copy made at alloc, not the caller's array */
+    return vigen_hp_alloc(&w->lag, w->rule, w->phi ? &map : NULL, &w->opt);
+}
+
+static int type_step(void *w, double *t, double *q, double *p, double h) { return vigen_hp_step(w, t, q, p, h); }
+static void type_reset(void *w) { vigen_hp_reset(w); }
+static const vigen_stats *type_stats(const void *w) { return vigen_hp_stats(w); }
+static void type_free(void *w) { vigen_hp_free(w); }
+static size_t type_state_size(const void *w) { return vigen_hp_state_size(w); }
+static int type_state_get(const void *w, void *buf) { return vigen_hp_state_get(w, buf); }
+static int type_state_set(void *w, const void *buf) { return vigen_hp_state_set(w, buf); }
+static size_t type_dim(const void *w) { return ((const vigen_hp *)w)->n; }
+static int type_field(void *w, double t, const double *q, const double *p, double *dq, double *dp)
+{
+    return vigen_hp_vector_field(w, t, q, p, dq, dp);
+}
+
+const vigen_stepper_type vigen_hp_type = {
+    "vigen_hp", 1, 2, 0,
+    NULL, type_step, type_reset, type_stats, type_free,
+    type_state_size, type_state_get, type_state_set,
+    type_dim, type_field, type_clone
+};
