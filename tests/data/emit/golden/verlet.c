@@ -74,8 +74,9 @@
 /* Number of arrays of length dim in the workspace block. */
 #define VERLET_NARRAYS 29
 
-/* sys, mech and im stay first and in this order: vigen_integrate_at and
- * vigen_integrate_events read the problem there (runtime/src/dense_impl.h). */
+/* sys, mech and im stay first and in this order: the flow the drivers use
+ * for output at any time and events (vigen_prk_vector_field, the type's
+ * vector_field) reads the problem there. */
 struct verlet_workspace {
     vigen_hamiltonian sys;
     vigen_mechanical mech;     /* the problem of verlet_alloc_mechanical */
