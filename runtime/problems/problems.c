@@ -153,14 +153,6 @@ static int parse_params(const problem_row *row, const char *text, double *values
     return VIGEN_SUCCESS;
 }
 
-int pbi_set_dim(vigen_problem *pb, size_t dim)
-{
-    pb->dim = dim;
-    pb->q0 = calloc(dim, sizeof *pb->q0);
-    pb->p0 = calloc(dim, sizeof *pb->p0);
-    return pb->q0 && pb->p0 ? VIGEN_SUCCESS : VIGEN_ENOMEM;
-}
-
 int vigen_problem_create(vigen_problem **out, const char *name, const char *params, char *why,
                          size_t why_size)
 {

@@ -24,7 +24,7 @@ struct vigen_problem {
     vigen_hamiltonian ham;        /* ctx = this problem */
     vigen_lagrangian lag;         /* dim 0: none; ctx = this problem */
     vigen_lgrad_fn legendre_inverse;
-    double t0, *q0, *p0;          /* dim each, allocated by problems.c */
+    double t0, *q0, *p0;          /* dim each, allocated by pbi_set_dim */
     double period, default_time;
     size_t ninvariants;
     const char *const *invariant_names;
@@ -34,7 +34,7 @@ struct vigen_problem {
 };
 
 /* Allocates q0 and p0 (dim entries each, zeroed) after setting pb->dim;
- * VIGEN_ENOMEM when memory runs out. */
+ * VIGEN_ENOMEM when memory runs out (initial_value.c). */
 int pbi_set_dim(vigen_problem *pb, size_t dim);
 
 /* Unit mass (mechanics.c): out = v (dim entries), for dL/dv, dH/dp and the

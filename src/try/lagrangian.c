@@ -4,10 +4,11 @@
  * vigen_lagrangian_integrator_alloc (the slot KIND of
  * templates/try/driver.c.in is its number) and drives it through its
  * stepper type, as it drives an emitted stepper.  Their order is the one
- * the literature proves (2 for each), not one the checker certifies. */
+ * the literature proves (2 for each), not one the checker certifies.  The
+ * table alone, below the files that use it: locate.c offers its names,
+ * problem_check.c checks the problem against its methods. */
 #include <string.h>
 #include "vigen/lagrangian.h"
-#include "vigen/problems.h"
 #include "try/try_internal.h"
 
 static const try_lagrangian_method methods[] = {
@@ -34,22 +35,4 @@ void try_lagrangian_print(FILE *out)
 {
     for (size_t k = 0; k < sizeof methods / sizeof methods[0]; k++)
         fprintf(out, "%-16s %s\n", methods[k].name, methods[k].description);
-}
-
-int try_lagrangian_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err)
-{
-    for (size_t k = 0; k < n; k++) {
-        const try_lagrangian_method *m = try_method_is_file(names[k]) ? NULL : try_lagrangian_find(names[k]);
-        if (m == NULL) continue;
-        vigen_problem *pb = NULL;
-        if (vigen_problem_create(&pb, opt->problem, opt->params ? opt->params : "", NULL, 0) != VIGEN_SUCCESS)
-            return vigen_error_set(err, VIGEN_E_USAGE, "%s: cannot create the problem %s", m->name, opt->problem);
-        int has = vigen_problem_lagrangian(pb, NULL) != NULL;
-        vigen_problem_free(pb);
-        if (!has)
-            return vigen_error_set(err, VIGEN_E_USAGE,
-                                   "%s: the problem %s has no Lagrangian (its Hamiltonian is degenerate); choose a "
-                                   "tableau method or another problem", m->name, opt->problem);
-    }
-    return VIGEN_OK;
 }

@@ -73,11 +73,11 @@ const try_lagrangian_method *try_lagrangian_find(const char *name);
 const char *try_lagrangian_name(size_t k);
 /* One line each: name and description. */
 void try_lagrangian_print(FILE *out);
+
+/* ---- problem_check.c: the problem checked before a run ---------------- */
 /* VIGEN_E_USAGE naming the method and the problem when one of the n methods
  * is built in and opt's problem has no Lagrangian (point vortices). */
 int try_lagrangian_check(size_t n, const char *const *names, const vigen_try_options *opt, vigen_error *err);
-
-/* ---- problem_check.c: the problem checked before a run ---------------- */
 /* The problem of opt (created already once by try_plan_make) checked at its
  * initial value with vigen_problem_check, and with vigen_lagrangian_check
  * when one of the n methods is a built-in Lagrangian integrator:
