@@ -6,7 +6,8 @@
  * check runs on every round after the others, `vigen help checks` lists it,
  * the report has its member (initialised, reset each round, cleared), the
  * JSON object its key and the text report its line at its place, in the
- * check's words when it gives them and the value's otherwise.
+ * check's words when it gives them and the value's otherwise.  A second
+ * row reports a figure, a ball: the largest residual of the same conditions.
  *
  * The check: a PRK method whose parts satisfy a_ij + a_(s+1-i)(s+1-j) = b_j
  * is symmetric (Hairer, Lubich, Wanner, Geometric Numerical Integration,
@@ -15,6 +16,7 @@
  * it; symplectic Euler is not symmetric (its adjoint is the other variant,
  * HLW V.1), so no tableau of it can satisfy it.
  */
+#include <math.h>
 #include "test_check_support.h"
 #include "vigen/method.h"
 #include "check/check_internal.h"
@@ -57,6 +59,32 @@ int chk_symmetric(chk_round *r, vigen_error *err)
     return VIGEN_OK;
 }
 
+/* The second row's function: a figure, the largest residual of the
+ * conditions of chk_symmetric (no verdict, nothing decided). */
+int chk_symmetry_defect(chk_round *r, vigen_error *err)
+{
+    (void)err;
+    ctx_t *cx = r->cx;
+    arb_ptr defect = r->rep->symmetry_defect.value;
+    slong s = cx->s;
+    arb_t d;
+    arb_init(d);
+    arb_zero(defect);
+    for (int part = 0; part < (cx->has_At ? 2 : 1); part++) {
+        int M = part ? M_AT : M_A, W = part ? M_BT : M_B;
+        for (slong i = 0; i < s; i++)
+            for (slong j = 0; j < s; j++) {
+                arb_add(d, chk_get(cx, M, i, j, NULL), chk_get(cx, M, s - 1 - i, s - 1 - j, NULL), cx->prec);
+                arb_sub(d, d, chk_get(cx, W, j, 0, NULL), cx->prec);
+                arb_abs(d, d);
+                arb_max(defect, defect, d, cx->prec);
+            }
+    }
+    r->rep->symmetry_defect.set = 1;
+    arb_clear(d);
+    return VIGEN_OK;
+}
+
 static int check_rel(vigen_check_report *rep, const char *rel)
 {
     char path[1024];
@@ -74,24 +102,28 @@ static int check_rel(vigen_check_report *rep, const char *rel)
     return rc;
 }
 
-/* `vigen help checks`: the new check last, with its description */
+/* `vigen help checks`: the new checks last, with their descriptions */
 static void test_listed(void)
 {
     char *list = vigen_check_list_text();
-    const char *line = strstr(list, "\n  symmetric ");
-    CHECK_MSG(line != NULL, "%s", list);
-    if (line) {
-        CHECK(strstr(line, "a_ij + a_(s+1-i)(s+1-j) = b_j in both parts") != NULL);
-        CHECK(strchr(line + 1, '\n')[1] == '\0');
+    const char *line = strstr(list, "\n  symmetric "), *second = strstr(list, "\n  symmetry_defect ");
+    CHECK_MSG(line != NULL && second != NULL, "%s", list);
+    if (line && second) {
+        CHECK(strstr(line, "a_ij + a_(s+1-i)(s+1-j) = b_j in both parts") < second);
+        CHECK(strchr(line + 1, '\n') == second && strchr(second + 1, '\n')[1] == '\0');
     }
     CHECK(strstr(list, "\n  figures ") != NULL && strstr(list, "\n  figures ") < line);
     free(list);
 }
 
-/* The reports of one checked file: the member holds want, the JSON object
- * ends with the new key after the table's last row, the text has the line
- * (the check's words, or the value's) before the verdict. */
-static void check_file(const char *rel, int want, const char *json_value, const char *text_line)
+/* The reports of one checked file: the member holds want, after at least
+ * rounds evaluations (the members are reset before each); the defect is the
+ * number defect (a decimal) or within 10^-30 of 0 (defect NULL); the JSON
+ * object ends with the new keys after the table's last row; the text has
+ * the lines (the check's words, or the value's) between the tree notation
+ * and the verdict. */
+static void check_file(const char *rel, slong rounds, int want, const char *json_value, const char *text_line,
+                       const char *defect)
 {
     vigen_check_report rep;
     if (check_rel(&rep, rel) != VIGEN_OK) {
@@ -100,15 +132,32 @@ static void check_file(const char *rel, int want, const char *json_value, const 
     }
     CHECK_MSG(rep.symmetric.set && rep.symmetric.value == want, "%s: set %d value %d", rel, rep.symmetric.set,
               rep.symmetric.value);
-    CHECK(rep.rounds >= 1);
+    CHECK_MSG(rep.rounds >= rounds, "%s: %ld evaluations", rel, (long)rep.rounds);
+    CHECK(rep.symmetry_defect.set && rep.symmetry_defect.text == NULL);
+    arb_t bound;
+    arb_init(bound);
+    arb_set_str(bound, defect ? defect : "1e-30", 256);
+    if (defect)
+        CHECK(arb_overlaps(rep.symmetry_defect.value, bound) && arb_rel_accuracy_bits(rep.symmetry_defect.value) > 60);
+    else CHECK(arb_lt(rep.symmetry_defect.value, bound));
+    arb_clear(bound);
     char *js = render(&rep, 1), *text = render(&rep, 0);
     char tail[128];
-    snprintf(tail, sizeof(tail), ",\n \"symmetric\": %s}\n", json_value);
-    size_t n = strlen(js), m = strlen(tail);
-    CHECK_MSG(n > m && strcmp(js + n - m, tail) == 0, "%s: JSON ends %s", rel, n > 40 ? js + n - 40 : js);
-    CHECK(strstr(js, "\"exit\": ") != NULL && strstr(js, "\"exit\": ") < js + n - m);
+    snprintf(tail, sizeof(tail), ",\n \"symmetric\": %s, \"symmetry_defect\": ", json_value);
+    const char *at = strstr(js, tail), *exit_at = strstr(js, "\"exit\": ");
+    CHECK_MSG(at && exit_at && exit_at < at, "%s: JSON %s", rel, js);
+    if (at) {
+        char *end;
+        double d = strtod(at + strlen(tail), &end);
+        CHECK_MSG(strcmp(end, "}\n") == 0 && (defect ? d == strtod(defect, NULL) : fabs(d) < 1e-30),
+                  "%s: JSON ends %s", rel, at);
+    }
     const char *line = strstr(text, text_line), *trees = strstr(text, "\ntrees: "), *result = strstr(text, "\nresult ");
-    CHECK_MSG(line && trees && result && trees < line && line < result, "%s:\n%s", rel, text);
+    const char *line2 = strstr(text, "\nsym. defect  ");
+    CHECK_MSG(line && line2 && trees && result && trees < line && line < line2 && line2 < result, "%s:\n%s", rel, text);
+    /* a ball in words: its certain digits, six of an exact 1 */
+    if (line2 && defect && strcmp(defect, "1") == 0)
+        CHECK_MSG(strncmp(line2, "\nsym. defect   1.00000\n", 23) == 0, "%.40s", line2);
     free(js);
     free(text);
     vigen_check_report_clear(&rep);
@@ -119,10 +168,10 @@ static void test_unset(void)
 {
     vigen_check_report rep;
     vigen_check_report_init(&rep);
-    CHECK(!rep.symmetric.set && rep.symmetric.text == NULL);
+    CHECK(!rep.symmetric.set && rep.symmetric.text == NULL && !rep.symmetry_defect.set);
     char *js = render(&rep, 1), *text = render(&rep, 0);
-    CHECK(strstr(js, ",\n \"symmetric\": null}\n") != NULL);
-    CHECK(strstr(text, "symmetric ") == NULL);
+    CHECK(strstr(js, ",\n \"symmetric\": null, \"symmetry_defect\": null}\n") != NULL);
+    CHECK(strstr(text, "symmetric ") == NULL && strstr(text, "sym. defect") == NULL);
     free(js);
     free(text);
     vigen_check_report_clear(&rep);
@@ -131,9 +180,16 @@ static void test_unset(void)
 int main(void)
 {
     test_listed();
-    check_file("tableaux/published/gauss_2.lua", VIGEN_CHECK_YES, "true", "\nsymmetric     yes\n");
-    check_file("tableaux/published/lobatto_iiia_iiib_3.lua", VIGEN_CHECK_YES, "true", "\nsymmetric     yes\n");
-    check_file("tableaux/published/symplectic_euler_p_first.lua", VIGEN_CHECK_NO, "false", "\nsymmetric     no (");
+    check_file("tableaux/published/gauss_2.lua", 1, VIGEN_CHECK_YES, "true", "\nsymmetric     yes\n", NULL);
+    check_file("tableaux/published/lobatto_iiia_iiib_3.lua", 1, VIGEN_CHECK_YES, "true", "\nsymmetric     yes\n",
+               NULL);
+    /* A = (0), At = (1), b = bt = (1) (HLW VI.3): 0 + 0 - 1 and 1 + 1 - 1 */
+    check_file("tableaux/published/symplectic_euler_p_first.lua", 1, VIGEN_CHECK_NO, "false",
+               "\nsymmetric     no (A[1][1] + A[1][1] != b[1])\n", "1");
+    /* Gauss 2 with a_11 = 1/4 + 10^-45: the pairs (1, 1) and (2, 2) are off
+     * by 10^-45, seen after a refinement; (1, 2) and (2, 1) still hold */
+    check_file("tests/data/check/gauss2_1e-45.lua", 2, VIGEN_CHECK_NO, "false",
+               "\nsymmetric     no (A[1][1] + A[2][2] != b[1])\n", "1e-45");
     test_unset();
     TEST_MAIN_END();
 }
