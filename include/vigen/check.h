@@ -299,8 +299,20 @@ typedef struct {
     int fsal;                    /* the first force is the last one of the previous step */
 } vigen_check_cost;
 
-/* What a check found.  The checks of checks.def write it; the reports print
- * it, one row of src/report/check_fields.def per figure. */
+/* The C type of the value of an X_RESULT row of check_fields.def, by the
+ * row's type (BALL values are initialised and cleared with the report, STR
+ * values are from malloc and freed with it). */
+#define VIGEN_CHECK_VALUE_BOOL int
+#define VIGEN_CHECK_VALUE_INT int
+#define VIGEN_CHECK_VALUE_LONG slong
+#define VIGEN_CHECK_VALUE_TRI int
+#define VIGEN_CHECK_VALUE_STR char *
+#define VIGEN_CHECK_VALUE_BALL arb_t
+
+/* What a check found.  The checks of vigen/check_fields.def write it; the
+ * reports print it, one row of that table per figure.  The members below up
+ * to exit_code are written by hand (the X_CHECK rows' findings); a check of
+ * an X_RESULT row has its member generated from its row, at the end. */
 typedef struct {
     char *path, *name;
     slong s, prec;               /* precision of the final round, bits */
@@ -372,6 +384,23 @@ typedef struct {
     int exit_code;               /* 0 consistent, every claim holds (within the precision of the
                                     data counts) and (--against) no entry differs or is
                                     undecided; 1 otherwise */
+
+    /* One member per X_RESULT row of check_fields.def, named as the check:
+     * set when the check reported its value (else the JSON has null and the
+     * text no line), the value, and the check's own words for the text
+     * report (NULL: the value in words). */
+#define X_CHECK(name, fn, description)
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn)
+#define X_RESULT(name, fn, description, type, sep, text_at, label)                                                   \
+    struct {                                                                                                           \
+        int set;                                                                                                       \
+        VIGEN_CHECK_VALUE_##type value;                                                                                \
+        char *text;                                                                                                    \
+    } name;
+#include "vigen/check_fields.def"
+#undef X_CHECK
+#undef X_FIGURE
+#undef X_RESULT
 } vigen_check_report;
 
 /* A report with nothing checked (no claims, no problems); every report is
@@ -402,14 +431,15 @@ int vigen_check_certified_order(const vigen_check_report *rep, int family, int *
  * (VIGEN_E_MATH) naming the failing tree. */
 int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err);
 
-/* The checks the checker runs (checks.def), one line each with what it
+/* The checks the checker runs (the X_CHECK and X_RESULT rows of
+ * vigen/check_fields.def), one line each with what it
  * decides, for `vigen help checks`.  A heap string; free with free(). */
 char *vigen_check_list_text(void);
 
 /* The report of `vigen check` as text (for a reader) or as one JSON object
  * and a newline.  Both print the same figures, one per row of the report
- * table (src/report/check_fields.def: the JSON key, how the value is
- * written, when the figure is reported, where its text lines go), so that a
+ * table (vigen/check_fields.def: the JSON key, how the value is written,
+ * when the figure is reported, where its text lines go), so that a
  * figure cannot be in one report and missing from the other by oversight.
  * Texts from the file are escaped. */
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep);

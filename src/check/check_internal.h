@@ -1,8 +1,8 @@
 /* check_internal.h — what the files of the checker share: the three-valued
  * verdict, entries and their exactness, the evaluation context (ctx_t) that
  * every decision goes through, the row-sum and symplecticity conditions, and
- * the state of one round of checks (chk_round) that the table of checks
- * (checks.def) is run on.  Not installed: nothing outside src/check uses it.
+ * the state of one round of checks (chk_round) that the checks of
+ * vigen/check_fields.def are run on.  Not installed: nothing outside src/check uses it.
  */
 #ifndef VIGEN_CHECK_INTERNAL_H
 #define VIGEN_CHECK_INTERNAL_H
@@ -122,8 +122,8 @@ typedef struct {
 } midpoints;
 
 
-/* One round of every check at one precision: what the checks of checks.def
- * read and write. */
+/* One round of every check at one precision: what the checks of
+ * vigen/check_fields.def read and write. */
 typedef struct {
     vigen_check_report *rep;
     ctx_t *cx;                   /* the checked tableau at this round's precision */
@@ -139,15 +139,22 @@ typedef struct {
     midpoints mid;               /* the tableau at its midpoints (when have_mid) */
 } chk_round;
 
-/* A check: one row of checks.def. */
+/* A check: the function of an X_CHECK or X_RESULT row of
+ * vigen/check_fields.def. */
 typedef int (*chk_check_fn)(chk_round *r, vigen_error *err);
 
-#define X(name, fn, description) int fn(chk_round *r, vigen_error *err);
-#include "check/checks.def"
-#undef X
+#define X_CHECK(name, fn, description) int fn(chk_round *r, vigen_error *err);
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn)
+#define X_RESULT(name, fn, description, type, sep, text_at, label) int fn(chk_round *r, vigen_error *err);
+#include "vigen/check_fields.def"
+#undef X_CHECK
+#undef X_FIGURE
+#undef X_RESULT
 
-/* report_init.c: problems filed into the report, its notes torn down */
+/* report_init.c: problems filed into the report, its notes torn down, the
+ * members of the X_RESULT rows cleared before a round */
 vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind);
+void chk_results_reset(vigen_check_report *rep);
 void chk_problems_clear(vigen_check_report *rep);
 void chk_notes_clear(vigen_check_report *rep);
 
@@ -205,7 +212,7 @@ int chk_lie_error(vigen_check_lie_error *le, const vigen_tableau *t, int p, slon
 void chk_lie_error_clear(vigen_check_lie_error *le);
 slong chk_adequate_prec(const vigen_tableau *t);
 
-/* checks.c: one round of every check of checks.def */
+/* checks.c: one round of every check of vigen/check_fields.def */
 int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,
                   const exactness *ex_against, int P, vigen_error *err);
 

@@ -1,5 +1,6 @@
-/* checks.c — one round of `vigen check`: every check of checks.def, in the
- * table's order, at the precision of the context.  The refinement loop
+/* checks.c — one round of `vigen check`: every check of
+ * vigen/check_fields.def (its X_CHECK and X_RESULT rows), in the table's
+ * order, at the precision of the context.  The refinement loop
  * (refine.c) runs rounds until the verdicts settle.
  */
 #include <string.h>
@@ -14,14 +15,19 @@ typedef struct {
 } chk_check_row;
 
 static const chk_check_row checks[] = {
-#define X(name, fn, description) {name, fn, description},
-#include "check/checks.def"
-#undef X
+#define X_CHECK(name, fn, description) {#name, fn, description},
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn)
+#define X_RESULT(name, fn, description, type, sep, text_at, label) {#name, fn, description},
+#include "vigen/check_fields.def"
+#undef X_CHECK
+#undef X_FIGURE
+#undef X_RESULT
 };
 
 static void report_reset_round(vigen_check_report *rep)
 {
     chk_problems_clear(rep);
+    chk_results_reset(rep);
     rep->against_checked = 0;
     rep->against_differences = 0;
     rep->against_undecided = 0;

@@ -43,9 +43,55 @@ void chk_problems_clear(vigen_check_report *rep)
     rep->nproblems = rep->alloc_problems = 0;
 }
 
+/* The members of the X_RESULT rows: set, value and text, by the value's type
+ * (BALL values hold an arb_t, STR values and texts are from malloc). */
+#define RESULT_INIT_BOOL(v) (void)0
+#define RESULT_INIT_INT(v) (void)0
+#define RESULT_INIT_LONG(v) (void)0
+#define RESULT_INIT_TRI(v) (void)0
+#define RESULT_INIT_STR(v) (void)0
+#define RESULT_INIT_BALL(v) arb_init(v)
+#define RESULT_CLEAR_BOOL(v) (void)0
+#define RESULT_CLEAR_INT(v) (void)0
+#define RESULT_CLEAR_LONG(v) (void)0
+#define RESULT_CLEAR_TRI(v) (void)0
+#define RESULT_CLEAR_STR(v) free(v)
+#define RESULT_CLEAR_BALL(v) arb_clear(v)
+#define X_CHECK(name, fn, description)
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn)
+
+/* every member zero (memset by the caller), BALL values initialised */
+static void results_init(vigen_check_report *rep)
+{
+#define X_RESULT(name, fn, description, type, sep, text_at, label) RESULT_INIT_##type(rep->name.value);
+#include "vigen/check_fields.def"
+#undef X_RESULT
+}
+
+static void results_clear(vigen_check_report *rep)
+{
+#define X_RESULT(name, fn, description, type, sep, text_at, label)                                                   \
+    RESULT_CLEAR_##type(rep->name.value);                                                                              \
+    free(rep->name.text);
+#include "vigen/check_fields.def"
+#undef X_RESULT
+}
+
+void chk_results_reset(vigen_check_report *rep)
+{
+    results_clear(rep);
+#define X_RESULT(name, fn, description, type, sep, text_at, label) memset(&rep->name, 0, sizeof(rep->name));
+#include "vigen/check_fields.def"
+#undef X_RESULT
+    results_init(rep);
+}
+#undef X_CHECK
+#undef X_FIGURE
+
 void vigen_check_report_init(vigen_check_report *rep)
 {
     memset(rep, 0, sizeof(*rep));
+    results_init(rep);
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
         arb_init(rep->orders[f].fail_value);
         arb_init(rep->orders[f].fail_expected);
@@ -107,6 +153,7 @@ void vigen_check_report_clear(vigen_check_report *rep)
     flint_free(rep->rational_denominator);
     flint_free(rep->quadratic_d);
     flint_free(rep->quadratic_denominator);
+    results_clear(rep);
     memset(rep, 0, sizeof(*rep));
 }
 

@@ -1,4 +1,4 @@
-/* check_fields.h — the vocabulary of the rows of check_fields.def (the
+/* check_fields.h — the vocabulary of the rows of vigen/check_fields.def (the
  * conditions and values they are written with), for the two printers that
  * expand them, check_text.c and check_json.c.  Not installed. */
 #ifndef VIGEN_REPORT_CHECK_FIELDS_H

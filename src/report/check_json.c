@@ -1,5 +1,6 @@
 /* check_json.c — the JSON report of `vigen check` (vigen_check_print_json):
- * one object, a member per row of check_fields.def; strings through the one
+ * one object, a member per X_FIGURE and X_RESULT row of
+ * vigen/check_fields.def; strings through the one
  * JSON writer (json.h).  The writers of the CUSTOM rows are here.
  */
 #include <stdlib.h>
@@ -332,18 +333,28 @@ static void json_cost(FILE *out, const vigen_check_report *rep)
 #define JSON_LONG(v) fprintf(out, "%ld", (long)(v))
 #define JSON_TRI(v) json_tri(out, (v))
 #define JSON_STR(v) json_string_or_null(out, (v))
+#define JSON_BALL(v) json_number(out, (v))
 #define JSON_CUSTOM(writer) writer(out, rep)
 
 void vigen_check_print_json(FILE *out, const vigen_check_report *rep)
 {
     int first = 1;
-#define X(key, type, value, sep, when, text_at, text_fn)                                                             \
+#define X_CHECK(name, fn, description)
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn)                                                      \
     if (when) {                                                                                                        \
         fprintf(out, "%s\"" #key "\": ", first ? "{" : SEP_##sep);                                                    \
         JSON_##type(value);                                                                                            \
         first = 0;                                                                                                     \
     }
-#include "report/check_fields.def"
-#undef X
+/* the member of a check's own row: null until the check sets it */
+#define X_RESULT(name, fn, description, type, sep, text_at, label)                                                   \
+    fprintf(out, "%s\"" #name "\": ", first ? "{" : SEP_##sep);                                                       \
+    if (rep->name.set) JSON_##type(rep->name.value);                                                                   \
+    else fputs("null", out);                                                                                           \
+    first = 0;
+#include "vigen/check_fields.def"
+#undef X_CHECK
+#undef X_FIGURE
+#undef X_RESULT
     fputs("}\n", out);
 }

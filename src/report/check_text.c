@@ -1,7 +1,8 @@
 /* check_text.c — the text report of `vigen check` (vigen_check_print_text):
- * the lines of each row of check_fields.def that has a text_fn, in the order
- * of text_at.  Texts that may come from the file (the path, the name, notes
- * and problems quoting entries) are printed escaped (support/printable.h). */
+ * the lines of each row of vigen/check_fields.def that has a place in it
+ * (text_at), in the order of the places.  Texts that may come from the
+ * file (the path, the name, notes and problems quoting entries) are printed
+ * escaped (support/printable.h). */
 #include <stdlib.h>
 #include <string.h>
 #include "vigen/check.h"
@@ -534,6 +535,31 @@ static void text_result(FILE *out, const vigen_check_report *rep)
             rep->exit_code);
 }
 
+/* the value of a check's own row in words */
+#define TEXT_BOOL(v) fputs((v) ? "yes" : "no", out)
+#define TEXT_INT(v) fprintf(out, "%d", (int)(v))
+#define TEXT_LONG(v) fprintf(out, "%ld", (long)(v))
+#define TEXT_TRI(v) fputs(tri_word((v), "yes", "no"), out)
+#define TEXT_STR(v) put_shown((v) ? (v) : "", out)
+#define TEXT_BALL(v) put_figure(out, (v))
+
+/* The line of each X_RESULT row: "label" in the column of the other figures'
+ * names, then the check's own words or its value in words; nothing while
+ * the check has not set it. */
+#define X_CHECK(name, fn, description)
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn)
+#define X_RESULT(name, fn, description, type, sep, text_at, label)                                                   \
+    static void text_result_##name(FILE *out, const vigen_check_report *rep)                                           \
+    {                                                                                                                  \
+        if (!rep->name.set) return;                                                                                    \
+        fprintf(out, "%-13s ", label);                                                                                 \
+        if (rep->name.text) put_shown(rep->name.text, out);                                                            \
+        else TEXT_##type(rep->name.value);                                                                             \
+        fputc('\n', out);                                                                                              \
+    }
+#include "vigen/check_fields.def"
+#undef X_RESULT
+
 void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
 {
     const struct {
@@ -541,12 +567,17 @@ void vigen_check_print_text(FILE *out, const vigen_check_report *rep)
         void (*print)(FILE *, const vigen_check_report *);
         int when;
     } rows[] = {
-#define X(key, type, value, sep, when, text_at, text_fn) {text_at, text_fn, (when) != 0},
-#include "report/check_fields.def"
-#undef X
+#undef X_FIGURE
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn) {text_at, text_fn, (when) != 0},
+#define X_RESULT(name, fn, description, type, sep, text_at, label) {text_at, text_result_##name, 1},
+#include "vigen/check_fields.def"
+#undef X_CHECK
+#undef X_FIGURE
+#undef X_RESULT
     };
     enum { NROWS = sizeof(rows) / sizeof(rows[0]) };
-    /* the rows in increasing text_at (distinct places, a few dozen rows) */
+    /* the rows in increasing text_at (distinct places, a few dozen rows;
+     * text_at 0: JSON only) */
     for (int last = 0;;) {
         int next = -1;
         for (int k = 0; k < NROWS; k++)

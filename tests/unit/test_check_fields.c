@@ -1,11 +1,12 @@
-/* test_check_fields.c — the report table (src/report/check_fields.def) and
- * the two reports that expand it: every row is a JSON key of its own; a row
- * has text lines exactly when it names a place and a function for them, at a
- * place of its own; the JSON object of a checked file has the members the
+/* test_check_fields.c — the report table (vigen/check_fields.def) and
+ * the code that expands it: the checks come first and `vigen help checks`
+ * lists them in their order; every figure is a JSON key of its own; a row
+ * has text lines exactly when it names a place and a function for them, at
+ * a place of its own; the JSON object of a checked file has the members the
  * rows say, in their order, each once at the top level, and the text report
  * prints the figures in the order of their places.  Also vigen_check_file:
  * FILE and FILE2 loaded and checked, an unreadable file an error with
- * nothing checked.
+ * nothing checked.  (A check added by one row: test_check_extension.c.)
  *
  * The expectations are the table's own statements (keys, conditions,
  * places) and the report's documented lines ("row sums", "symplectic", ...),
@@ -15,13 +16,18 @@
 #include "vigen/method.h"
 #include "report/check_fields.h"
 
+/* the figures of the JSON object: X_FIGURE and X_RESULT rows (the latter
+ * with the text function the printer makes for them) */
+#define X_CHECK(name, fn, description)
 static const struct {
     const char *key, *type, *text_fn;
     int text_at;
 } rows[] = {
-#define X(key, type, value, sep, when, text_at, text_fn) {#key, #type, #text_fn, text_at},
-#include "report/check_fields.def"
-#undef X
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn) {#key, #type, #text_fn, text_at},
+#define X_RESULT(name, fn, description, type, sep, text_at, label) {#name, #type, text_at ? "text_result" : "NULL", text_at},
+#include "vigen/check_fields.def"
+#undef X_FIGURE
+#undef X_RESULT
 };
 enum { NROWS = sizeof(rows) / sizeof(rows[0]) };
 
@@ -40,6 +46,54 @@ static void test_rows(void)
                       rows[j].key, rows[i].text_at);
         }
     }
+}
+
+/* The checks: every X_CHECK row before the figures (the checks that write
+ * members by hand run first), names of their own, and `vigen help checks`
+ * lists exactly the checks of the table, in its order. */
+static void test_checks(void)
+{
+    enum { CHECK_ROW, FIGURE_ROW, RESULT_ROW };
+    static const struct {
+        int kind;
+        const char *name, *description;
+    } all[] = {
+#undef X_CHECK
+#define X_CHECK(name, fn, description) {CHECK_ROW, #name, description},
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn) {FIGURE_ROW, #key, NULL},
+#define X_RESULT(name, fn, description, type, sep, text_at, label) {RESULT_ROW, #name, description},
+#include "vigen/check_fields.def"
+#undef X_CHECK
+#undef X_FIGURE
+#undef X_RESULT
+#define X_CHECK(name, fn, description)
+    };
+    enum { NALL = sizeof(all) / sizeof(all[0]) };
+    char *list = vigen_check_list_text();
+    const char *at = strchr(list, '\n');
+    int checks = 0, seen_figure = 0;
+    for (int i = 0; i < NALL; i++) {
+        if (all[i].kind == FIGURE_ROW) {
+            seen_figure = 1;
+            continue;
+        }
+        checks++;
+        CHECK_MSG(all[i].kind != CHECK_ROW || !seen_figure, "X_CHECK row %s after a figure", all[i].name);
+        for (int j = 0; j < i; j++)
+            CHECK_MSG(all[j].kind == FIGURE_ROW || strcmp(all[i].name, all[j].name) != 0, "check %s twice",
+                      all[i].name);
+        /* its line: "  name  description" */
+        CHECK_MSG(at && strncmp(at + 1, "  ", 2) == 0 && strncmp(at + 3, all[i].name, strlen(all[i].name)) == 0 &&
+                      at[3 + strlen(all[i].name)] == ' ',
+                  "check %s not listed in its place", all[i].name);
+        const char *end = at ? strchr(at + 1, '\n') : NULL;
+        size_t dl = strlen(all[i].description);
+        CHECK_MSG(end && (size_t)(end - at) > dl && strncmp(end - dl, all[i].description, dl) == 0,
+                  "check %s: its description", all[i].name);
+        at = end;
+    }
+    CHECK(checks >= 10 && at && at[1] == '\0');
+    free(list);
 }
 
 /* Loads and checks rel (and against_rel, or NULL) from the source tree. */
@@ -64,9 +118,11 @@ static int check_rel(vigen_check_report *rep, const char *rel, const char *again
 static void check_members(const vigen_check_report *rep, const char *js)
 {
     int want[NROWS], n = 0;
-#define X(key, type, value, sep, when, text_at, text_fn) want[n++] = (when) != 0;
-#include "report/check_fields.def"
-#undef X
+#define X_FIGURE(key, type, value, sep, when, text_at, text_fn) want[n++] = (when) != 0;
+#define X_RESULT(name, fn, description, type, sep, text_at, label) want[n++] = 1;
+#include "vigen/check_fields.def"
+#undef X_FIGURE
+#undef X_RESULT
     /* the keys at depth 1: a string after '{' or ',' at depth 1, followed by ':' */
     int depth = 0, next = 0;
     for (const char *p = js; *p; p++) {
@@ -158,6 +214,7 @@ static void test_unreadable(void)
 int main(void)
 {
     test_rows();
+    test_checks();
     test_reports();
     test_unreadable();
     TEST_MAIN_END();

@@ -1,6 +1,6 @@
 /* test_check_support.h — the helpers and tableaux of the checker's tests
  * (test_check_methods.c, test_check_exact.c, test_check_typos.c,
- * test_check_fields.c): the certifying checker (src/check/) on methods whose
+ * test_check_fields.c, test_check_extension.c): the certifying checker (src/check/) on methods whose
  * properties are known from the literature, and on deliberately broken
  * copies.  Each test is an executable of its own, so the tableaux are
  * defined here once per test.
