@@ -21,7 +21,7 @@
  * order 10: 570040).  Trees of order N + 1 need not be stored: iterate the
  * forests of order N and pair each with a root colour.
  *
- * Bracket notation (vigen_tree_append): "b" is a black vertex, "w" a white one,
+ * Bracket notation (vigen_tree_text): "b" is a black vertex, "w" a white one,
  * and x[t1,t2,...] is a vertex x whose children are the subtrees t1, t2, ...
  * (listed simplest first), e.g. b[w,w[b]].
  */
@@ -111,13 +111,10 @@ int vigen_forest_tree_order(const vigen_treeset *ts, const slong *ids, int k);
 ulong vigen_forest_tree_gamma(const vigen_treeset *ts, const slong *ids, int k);
 int vigen_forest_tree_flags(const vigen_treeset *ts, int colour, const slong *ids, int k);
 
-/* Appends the bracket notation of a stored tree, or of the tree (colour,
- * forest), to sb: a growable string of libvigen's own (support/strbuf.h,
- * not installed), for the reports the library writes. */
-typedef struct vigen_strbuf vigen_strbuf;
-void vigen_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, slong id);
-void vigen_forest_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, int colour,
-                              const slong *ids, int k);
+/* The bracket notation of a stored tree, or of the tree (colour, forest):
+ * a new string (release it with free()). */
+char *vigen_tree_text(const vigen_treeset *ts, slong id);
+char *vigen_forest_tree_text(const vigen_treeset *ts, int colour, const slong *ids, int k);
 
 /* One sentence explaining the bracket notation, for reports. */
 const char *vigen_tree_notation_help(void);

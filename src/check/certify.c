@@ -1,30 +1,8 @@
 /* certify.c — what the checker certifies about a tableau, as the claims a
- * file states: the order (Butcher's theorem and the bushy trees beyond the
- * enumerated ones) and symplecticity.  Used by `vigen generate`, which
- * records them in the files it writes, by `vigen emit` (NAME_ORDER) and by
- * `vigen list`. */
+ * file states: the order (certified_order.c) and symplecticity, set in the
+ * tableau.  Used by `vigen generate`, which records them in the files it
+ * writes, by `vigen emit` (NAME_ORDER) and by `vigen list`. */
 #include "check/check_internal.h"
-
-int vigen_check_certified_order(const vigen_check_report *rep, int family, int *at_least, int *undecided)
-{
-    const vigen_check_level *L = &rep->orders[family].level;
-    *at_least = L->capped;
-    *undecided = L->undecided;
-    /* a claim of the file confirmed beyond the enumerated trees is the order */
-    if (family == VIGEN_CHECK_GENERAL && rep->claim_order >= 0 && rep->claim_order_status == VIGEN_CHECK_YES &&
-        !rep->claim_order_separable) {
-        *at_least = *undecided = 0;
-        return rep->claim_order;
-    }
-    /* every enumerated order holds: Butcher's theorem (B, C, D) may prove
-     * more, for every family, and a failing bushy tree bounds it */
-    const vigen_check_theorem *th = &rep->theorem;
-    if (L->capped && th->applies && th->order >= L->value) {
-        *at_least = th->bushy_fail[family == VIGEN_CHECK_GENERAL ? 0 : 1] != th->order + 1;
-        return th->order;
-    }
-    return L->value;
-}
 
 int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err)
 {

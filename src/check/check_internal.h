@@ -11,6 +11,14 @@
 #include <arb_mat.h>
 #include "vigen/check.h"
 #include "check/balls.h"
+#include "vigen/trees.h"
+#include "support/strbuf.h"
+
+/* Appends the bracket notation (vigen/trees.h) of a stored tree, or of the
+ * tree (colour, forest), to sb: the reports build their lines with it
+ * (trees.c; vigen_tree_text gives it as a string to library users). */
+void chk_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, slong id);
+void chk_forest_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, int colour, const slong *ids, int k);
 
 #define CHK_DEFAULT_MAX_ORDER 8
 #define CHK_DEFAULT_MAX_PREC 4096

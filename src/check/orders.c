@@ -55,7 +55,7 @@ static void orders_record(vigen_check_orders *o, int n, int status, int data, co
     char **tree = fails ? &o->fail_tree : &o->undecided_tree;
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
-    vigen_forest_tree_append(&sb, ts, colour, ids, k);
+    chk_forest_tree_append(&sb, ts, colour, ids, k);
     free(*tree);
     *tree = sb.data;
     *order = n;

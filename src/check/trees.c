@@ -3,6 +3,7 @@
 #include <string.h>
 #include "vigen/trees.h"
 #include "support/strbuf.h"
+#include "check/check_internal.h"
 
 const char *vigen_tree_notation_help(void)
 {
@@ -210,22 +211,38 @@ static void append_forest(vigen_strbuf *sb, const vigen_treeset *ts, const slong
     if (k == 0) return;
     vigen_strbuf_append(sb, "[");
     for (int i = k - 1; i >= 0; i--) {           /* simplest (smallest id) first */
-        vigen_tree_append(sb, ts, ids[i]);
+        chk_tree_append(sb, ts, ids[i]);
         if (i > 0) vigen_strbuf_append(sb, ",");
     }
     vigen_strbuf_append(sb, "]");
 }
 
-void vigen_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, slong id)
+void chk_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, slong id)
 {
     const vigen_tree *t = ts->trees + id;
     vigen_strbuf_append(sb, t->colour == VIGEN_TREE_BLACK ? "b" : "w");
     append_forest(sb, ts, ts->child_ids + t->children, t->nchildren);
 }
 
-void vigen_forest_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, int colour,
+void chk_forest_tree_append(vigen_strbuf *sb, const vigen_treeset *ts, int colour,
                               const slong *ids, int k)
 {
     vigen_strbuf_append(sb, colour == VIGEN_TREE_BLACK ? "b" : "w");
     append_forest(sb, ts, ids, k);
+}
+
+char *vigen_tree_text(const vigen_treeset *ts, slong id)
+{
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    chk_tree_append(&sb, ts, id);
+    return sb.data;
+}
+
+char *vigen_forest_tree_text(const vigen_treeset *ts, int colour, const slong *ids, int k)
+{
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    chk_forest_tree_append(&sb, ts, colour, ids, k);
+    return sb.data;
 }
