@@ -11,7 +11,8 @@
 #       "vigen/..." headers;
 #   (e) no two source files (.c, .h, .def) of src/, cli/, include/ and
 #       runtime/ share a name, so that a name says which file it is;
-#   (f) every function declared in a public header include/vigen/*.h has a
+#   (f) every function declared in a public header (include/vigen/*.h and
+#       runtime/include/vigen/*.h, inside extern "C" too) has a
 #       comment: at the end of its line, or a comment block right above it or
 #       above the declarations it is grouped with (no blank line between);
 #   (g) vigen.h includes every public header, and only those;
@@ -121,6 +122,9 @@ FNR == 1 { depth = 0; incomment = 0; delete text }
     }
     if (!documented) print FILENAME ":" FNR ": " name
   }
+  # the braces of extern "C" { ... } (C++ linkage) enclose declarations, not a body
+  if (code ~ /^[ \t]*extern[ \t]+"C"[ \t]*\{/) next
+  if (code ~ /^[ \t]*\}[ \t]*$/ && depth == 0) next
   n = gsub(/\{/, "{", code); m = gsub(/\}/, "}", code); depth += n - m
 }
 ' include/vigen/*.h runtime/include/vigen/*.h)

@@ -174,6 +174,8 @@ typedef struct {
     double alpha;
     size_t first, count;
 } vigen_poincare_power;
+/* The density function of vigen_poincare_power (a vigen_poincare_density_fn):
+ * returns g at (t, q, p) and writes its derivatives into dgdq, dgdp, dgdt. */
 double vigen_poincare_density_power(double t, const double *q, const double *p, double *dgdq, double *dgdp,
                                     double *dgdt, void *ctx);
 

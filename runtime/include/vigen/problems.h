@@ -44,6 +44,8 @@ typedef struct {
     size_t nparams;
 } vigen_problem_info;
 
+/* The problems of the collection: how many, the i-th (in the order of
+ * problems.def), and one by name. */
 size_t vigen_problem_count(void);
 const vigen_problem_info *vigen_problem_info_at(size_t i);      /* NULL past the end */
 const vigen_problem_info *vigen_problem_info_find(const char *name); /* NULL if unknown */
@@ -59,6 +61,8 @@ int vigen_problem_create(vigen_problem **out, const char *name, const char *para
                          size_t why_size);
 void vigen_problem_free(vigen_problem *pb);
 
+/* What a created problem is: its collection entry, the value of one of its
+ * parameters, its dimension. */
 const vigen_problem_info *vigen_problem_info_of(const vigen_problem *pb);
 double vigen_problem_param_value(const vigen_problem *pb, const char *name); /* NaN if none */
 size_t vigen_problem_dim(const vigen_problem *pb);                  /* dimension of q (= of p) */

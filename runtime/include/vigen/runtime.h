@@ -199,6 +199,8 @@ static inline int vigen_iter_judge(vigen_iter_monitor *m, double delta, double t
  * GSL's aborting error handler is switched off by vigen_newton_alloc. */
 typedef struct vigen_newton vigen_newton;
 
+/* The solver of an s-stage method in dimension n (NULL when memory runs out),
+ * and its release. */
 vigen_newton *vigen_newton_alloc(size_t stages, size_t dim);
 void vigen_newton_free(vigen_newton *nw);
 double *vigen_newton_hessian(vigen_newton *nw);              /* buffer to fill */
