@@ -30,45 +30,45 @@ static void mech_gradient(const void *self, const double *x, double *g)
 static int mech_validate(const vigen_mechanical *sys, double t, const double *q, vigen_problem_report *rep)
 {
     if (sys == NULL || q == NULL)
-        return dg_report_set(rep, VIGEN_EINVAL, "the problem check needs the problem and the positions q (a NULL pointer was given)");
+        return vigen_dg_report_set(rep, VIGEN_EINVAL, "the problem check needs the problem and the positions q (a NULL pointer was given)");
     if (sys->dim == 0 || sys->force == NULL)
-        return dg_report_set(rep, VIGEN_EINVAL, "the mechanical problem is incomplete: it needs dim > 0 and force");
-    if (dg_state_check(rep, t, "q", q, NULL, NULL, sys->dim) != VIGEN_SUCCESS) return rep->status;
-    size_t k = sys->inv_mass ? dg_first_nonfinite(sys->inv_mass, sys->dim) : sys->dim;
+        return vigen_dg_report_set(rep, VIGEN_EINVAL, "the mechanical problem is incomplete: it needs dim > 0 and force");
+    if (vigen_dg_state_check(rep, t, "q", q, NULL, NULL, sys->dim) != VIGEN_SUCCESS) return rep->status;
+    size_t k = sys->inv_mass ? vigen_dg_first_nonfinite(sys->inv_mass, sys->dim) : sys->dim;
     if (k < sys->dim)
-        return dg_report_set(rep, VIGEN_EINVAL, "inv_mass[%zu] is %g: the inverse masses must be finite", k,
+        return vigen_dg_report_set(rep, VIGEN_EINVAL, "inv_mass[%zu] is %g: the inverse masses must be finite", k,
                              sys->inv_mass[k]);
     return VIGEN_SUCCESS;
 }
 
 int vigen_mechanical_check(const vigen_mechanical *sys, double t, const double *q, vigen_problem_report *rep)
 {
-    dg_report_start(rep);
+    vigen_dg_report_start(rep);
     if (mech_validate(sys, t, q, rep) != VIGEN_SUCCESS) return rep->status;
     size_t n = sys->dim;
     double *g = n <= (size_t)-1 / sizeof(double) / 2 ? malloc(2 * n * sizeof(double)) : NULL;
-    if (g == NULL) return dg_report_set(rep, VIGEN_ENOMEM, "out of memory checking the problem (dimension %zu)", n);
+    if (g == NULL) return vigen_dg_report_set(rep, VIGEN_ENOMEM, "out of memory checking the problem (dimension %zu)", n);
     double *s = g + n;
     mech_self self = { sys, t };
-    dg_function f = { n, 1, sys->V ? mech_value : NULL, mech_gradient, &self, "V", { "force", NULL },
+    vigen_dg_function f = { n, 1, sys->V ? mech_value : NULL, mech_gradient, &self, "V", { "force", NULL },
                       { "q", NULL }, { -1, 1 } };
-    int rc = dg_state_values(&f, q, g, rep);
+    int rc = vigen_dg_state_values(&f, q, g, rep);
     if (rc == VIGEN_SUCCESS) {
-        dg_tally grad;
-        rc = dg_check_points(&f, q, s, &grad, NULL, NULL, &rep->points);
+        vigen_dg_tally grad;
+        rc = vigen_dg_check_points(&f, q, s, &grad, NULL, NULL, &rep->points);
         rep->gradient_checked = grad.compared > 0;
         if (rc == VIGEN_ENOMEM)
-            dg_report_set(rep, VIGEN_ENOMEM, "out of memory checking the problem (dimension %zu)", n);
+            vigen_dg_report_set(rep, VIGEN_ENOMEM, "out of memory checking the problem (dimension %zu)", n);
         else if (grad.flagged.found)
-            dg_report_mismatch(rep, &f, &grad.flagged, VIGEN_EGRADIENT);
+            vigen_dg_report_mismatch(rep, &f, &grad.flagged, VIGEN_EGRADIENT);
         else if (sys->V && grad.largest.found) {
-            dg_report_largest(rep, &grad);
-            dg_report_set(rep, VIGEN_SUCCESS,
+            vigen_dg_report_largest(rep, &grad);
+            vigen_dg_report_set(rep, VIGEN_SUCCESS,
                           "the force agrees with -dV/dq at %d points (largest relative mismatch %.1e, force[%zu])%s.",
                           rep->points, rep->worst_rel_error, rep->worst_index,
                           grad.sampled ? "; 64 components sampled, all along random directions" : "");
         } else
-            dg_report_set(rep, VIGEN_SUCCESS, "the force check was skipped because V is %s; the force is finite.",
+            vigen_dg_report_set(rep, VIGEN_SUCCESS, "the force check was skipped because V is %s; the force is finite.",
                           sys->V ? "not finite next to the state" : "not given");
     }
     free(g);

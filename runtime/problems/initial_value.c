@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include "problems_internal.h"
 
-int pbi_set_dim(vigen_problem *pb, size_t dim)
+int vigen_pbi_set_dim(vigen_problem *pb, size_t dim)
 {
     pb->dim = dim;
     pb->q0 = calloc(dim, sizeof *pb->q0);

@@ -8,13 +8,13 @@
 
 static size_t dim_of(void *ctx) { return ((const vigen_problem *)ctx)->dim; }
 
-void pbi_copy_v(double t, const double *q, const double *v, double *out, void *ctx)
+void vigen_pbi_copy_v(double t, const double *q, const double *v, double *out, void *ctx)
 {
     (void)t; (void)q;
     memcpy(out, v, dim_of(ctx) * sizeof *out);
 }
 
-void pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx)
+void vigen_pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx)
 {
     (void)t; (void)q; (void)v;
     size_t n = dim_of(ctx);
@@ -22,7 +22,7 @@ void pbi_unit_block(double t, const double *q, const double *v, double *out, voi
     for (size_t i = 0; i < n; i++) out[i * n + i] = 1;
 }
 
-void pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx)
+void vigen_pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx)
 {
     (void)t; (void)q; (void)v;
     size_t n = dim_of(ctx);
@@ -45,7 +45,7 @@ static void unit_mass_dLdq(double t, const double *q, const double *v, double *o
     for (size_t i = 0; i < pb->dim; i++) out[i] = -out[i];
 }
 
-void pbi_separable_hessian(const vigen_problem *pb, double t, const double *q, double *out)
+void vigen_pbi_separable_hessian(const vigen_problem *pb, double t, const double *q, double *out)
 {
     size_t n = pb->dim;
     /* -d2V/dq2 = d2L/dq2 (any v: L is separable) into out[0 .. n^2-1], then
@@ -65,16 +65,16 @@ static void unit_mass_hessian(double t, const double *q, const double *p, double
     (void)p;
     const vigen_problem *pb = ctx;
     size_t n = pb->dim;
-    pbi_separable_hessian(pb, t, q, out);
+    vigen_pbi_separable_hessian(pb, t, q, out);
     for (size_t i = 0; i < n; i++) out[(n + i) * 2 * n + n + i] = 1;
 }
 
-void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
+void vigen_pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
                    vigen_lhess_fn d2Ldq2)
 {
-    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = pbi_copy_v, .H = H, .separable = 1,
+    pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = vigen_pbi_copy_v, .H = H, .separable = 1,
                                    .hessian = unit_mass_hessian };
-    pb->lag = (vigen_lagrangian){ .dim = pb->dim, .dLdq = unit_mass_dLdq, .dLdv = pbi_copy_v, .L = unit_mass_L,
-                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = pbi_zero_block };
-    pb->legendre_inverse = pbi_copy_v;
+    pb->lag = (vigen_lagrangian){ .dim = pb->dim, .dLdq = unit_mass_dLdq, .dLdv = vigen_pbi_copy_v, .L = unit_mass_L,
+                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = vigen_pbi_unit_block, .d2Ldqdv = vigen_pbi_zero_block };
+    pb->legendre_inverse = vigen_pbi_copy_v;
 }

@@ -156,13 +156,13 @@ static double invariant(const vigen_problem *pb, size_t k, double t, const doubl
     return q[0] * p[1] - q[1] * p[0];
 }
 
-int pbi_charged_particle_setup(vigen_problem *pb)
+int vigen_pbi_charged_particle_setup(vigen_problem *pb)
 {
     static const double x0[3] = { 0, 1, 0.1 }, v0[3] = { 0.09, 0.05, 0.2 };
-    if (pbi_set_dim(pb, 3) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
+    if (vigen_pbi_set_dim(pb, 3) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
     pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = velocity, .H = energy, .separable = 0, .hessian = hessian };
     pb->lag = (vigen_lagrangian){ .dim = 3, .dLdq = dLdq, .dLdv = dLdv, .L = lagrangian,
-                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = pbi_unit_block, .d2Ldqdv = d2Ldqdv };
+                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = vigen_pbi_unit_block, .d2Ldqdv = d2Ldqdv };
     pb->legendre_inverse = velocity;
     double A[3];
     vector_potential(x0, A, NULL);

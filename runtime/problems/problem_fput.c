@@ -96,11 +96,11 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
     return 1;
 }
 
-int pbi_fput_setup(vigen_problem *pb)
+int vigen_pbi_fput_setup(vigen_problem *pb)
 {
     size_t n = (size_t)pb->param[0];
     chain *c = malloc(sizeof *c);
-    if (c == NULL || pbi_set_dim(pb, n) != VIGEN_SUCCESS) {
+    if (c == NULL || vigen_pbi_set_dim(pb, n) != VIGEN_SUCCESS) {
         free(c);
         return VIGEN_ENOMEM;
     }
@@ -108,7 +108,7 @@ int pbi_fput_setup(vigen_problem *pb)
     c->n = n;
     c->beta = pb->param[1];
     c->omega = 2 * sin(PBI_PI / (2 * (double)(n + 1)));
-    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
+    vigen_pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     for (size_t i = 0; i < n; i++) pb->q0[i] = pb->param[2] * sin(PBI_PI * (double)(i + 1) / (double)(n + 1));
     pb->period = 2 * PBI_PI / c->omega;
     pb->default_time = 100 * pb->period;

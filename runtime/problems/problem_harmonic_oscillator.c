@@ -36,10 +36,10 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
     return 1;
 }
 
-int pbi_harmonic_oscillator_setup(vigen_problem *pb)
+int vigen_pbi_harmonic_oscillator_setup(vigen_problem *pb)
 {
-    if (pbi_set_dim(pb, 1) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
+    if (vigen_pbi_set_dim(pb, 1) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
+    vigen_pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[0] = 1;
     pb->period = 2 * PBI_PI / pb->param[0];
     pb->default_time = 100 * pb->period;

@@ -32,10 +32,10 @@ static void d2Ldq2(double t, const double *q, const double *v, double *out, void
     out[3] = -(1 - 2 * q[1]);
 }
 
-int pbi_henon_heiles_setup(vigen_problem *pb)
+int vigen_pbi_henon_heiles_setup(vigen_problem *pb)
 {
-    if (pbi_set_dim(pb, 2) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
+    if (vigen_pbi_set_dim(pb, 2) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
+    vigen_pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[1] = 0.1;
     /* E >= 0.01 > V(0, 0.1) = 0.00466..., so the square root is real */
     pb->p0[0] = sqrt(2 * (pb->param[0] - potential(pb->q0)));

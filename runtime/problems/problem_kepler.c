@@ -71,11 +71,11 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
     return 1;
 }
 
-int pbi_kepler_setup(vigen_problem *pb)
+int vigen_pbi_kepler_setup(vigen_problem *pb)
 {
     double e = pb->param[0];
-    if (pbi_set_dim(pb, 2) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
-    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
+    if (vigen_pbi_set_dim(pb, 2) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
+    vigen_pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[0] = 1 - e;
     pb->p0[1] = sqrt((1 + e) / (1 - e));
     pb->period = 2 * PBI_PI;

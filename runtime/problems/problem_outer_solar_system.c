@@ -147,7 +147,7 @@ static void hessian(double t, const double *q, const double *p, double *out, voi
 {
     (void)p;
     enum { N = 3 * NBODY };
-    pbi_separable_hessian(ctx, t, q, out);
+    vigen_pbi_separable_hessian(ctx, t, q, out);
     for (int k = 0; k < N; k++) out[(N + k) * 2 * N + N + k] = 1 / mass[k / 3];
 }
 
@@ -172,12 +172,12 @@ static double invariant(const vigen_problem *pb, size_t k, double t, const doubl
     return vigen_neumaier_result(&s);
 }
 
-int pbi_outer_solar_system_setup(vigen_problem *pb)
+int vigen_pbi_outer_solar_system_setup(vigen_problem *pb)
 {
-    if (pbi_set_dim(pb, 3 * NBODY) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
+    if (vigen_pbi_set_dim(pb, 3 * NBODY) != VIGEN_SUCCESS) return VIGEN_ENOMEM;
     pb->ham = (vigen_hamiltonian){ .dHdq = dHdq, .dHdp = dHdp, .H = energy, .separable = 1, .hessian = hessian };
     pb->lag = (vigen_lagrangian){ .dim = 3 * NBODY, .dLdq = dLdq, .dLdv = dLdv, .L = lagrangian,
-                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = d2Ldv2, .d2Ldqdv = pbi_zero_block };
+                                  .d2Ldq2 = d2Ldq2, .d2Ldv2 = d2Ldv2, .d2Ldqdv = vigen_pbi_zero_block };
     pb->legendre_inverse = dHdp;
     for (int i = 0; i < NBODY; i++)
         for (int c = 0; c < 3; c++) {

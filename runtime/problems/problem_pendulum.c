@@ -46,11 +46,11 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
     return 1;
 }
 
-int pbi_pendulum_setup(vigen_problem *pb)
+int vigen_pbi_pendulum_setup(vigen_problem *pb)
 {
     double a = pb->param[0];
     pendulum *d = malloc(sizeof *d);
-    if (d == NULL || pbi_set_dim(pb, 1) != VIGEN_SUCCESS) {
+    if (d == NULL || vigen_pbi_set_dim(pb, 1) != VIGEN_SUCCESS) {
         free(d);
         return VIGEN_ENOMEM;
     }
@@ -62,7 +62,7 @@ int pbi_pendulum_setup(vigen_problem *pb)
     gsl_sf_result K;
     if (gsl_sf_ellint_Kcomp_e(d->k, GSL_PREC_DOUBLE, &K) != GSL_SUCCESS) return VIGEN_EINVAL;
     d->K = K.val;
-    pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
+    vigen_pbi_unit_mass(pb, dHdq, energy, d2Ldq2);
     pb->q0[0] = a;
     pb->period = 4 * d->K;
     pb->default_time = 100 * pb->period;

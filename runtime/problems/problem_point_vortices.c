@@ -96,11 +96,11 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
     return 1;
 }
 
-int pbi_point_vortices_setup(vigen_problem *pb)
+int vigen_pbi_point_vortices_setup(vigen_problem *pb)
 {
     size_t n = (size_t)pb->param[0];
     vortices *v = malloc(sizeof *v + n * sizeof v->gamma[0]);
-    if (v == NULL || pbi_set_dim(pb, n) != VIGEN_SUCCESS) {
+    if (v == NULL || vigen_pbi_set_dim(pb, n) != VIGEN_SUCCESS) {
         free(v);
         return VIGEN_ENOMEM;
     }

@@ -43,7 +43,7 @@ typedef struct {
 #define PROBLEM(id, name, description, ...)                                                   \
     { { name, description, params_##id,                                                    \
         sizeof params_##id / sizeof params_##id[0] - 1 },                                  \
-      ranges_##id, pbi_##id##_setup },
+      ranges_##id, vigen_pbi_##id##_setup },
 static const problem_row problems[] = {
 #include "problems.def"
 };

@@ -11,9 +11,9 @@
 
 #include <vigen/problems.h>
 
-typedef double (*pbi_invariant_fn)(const vigen_problem *pb, size_t k, double t, const double *q,
+typedef double (*vigen_pbi_invariant_fn)(const vigen_problem *pb, size_t k, double t, const double *q,
                                    const double *p);
-typedef int (*pbi_reference_fn)(const vigen_problem *pb, double t, double *q, double *p);
+typedef int (*vigen_pbi_reference_fn)(const vigen_problem *pb, double t, double *q, double *p);
 
 enum { PBI_MAX_PARAMS = 8 };
 
@@ -24,41 +24,41 @@ struct vigen_problem {
     vigen_hamiltonian ham;        /* ctx = this problem */
     vigen_lagrangian lag;         /* dim 0: none; ctx = this problem */
     vigen_lgrad_fn legendre_inverse;
-    double t0, *q0, *p0;          /* dim each, allocated by pbi_set_dim */
+    double t0, *q0, *p0;          /* dim each, allocated by vigen_pbi_set_dim */
     double period, default_time;
     size_t ninvariants;
     const char *const *invariant_names;
-    pbi_invariant_fn invariant;
-    pbi_reference_fn reference;
+    vigen_pbi_invariant_fn invariant;
+    vigen_pbi_reference_fn reference;
     void *data;                   /* the problem's own, freed with free() */
 };
 
 /* Allocates q0 and p0 (dim entries each, zeroed) after setting pb->dim;
  * VIGEN_ENOMEM when memory runs out (initial_value.c). */
-int pbi_set_dim(vigen_problem *pb, size_t dim);
+int vigen_pbi_set_dim(vigen_problem *pb, size_t dim);
 
 /* Unit mass (mechanics.c): out = v (dim entries), for dL/dv, dH/dp and the
  * inverse Legendre map; the identity and the zero dim x dim blocks, for
  * d2L/dv2 and d2L/dqdv.  ctx is the problem. */
-void pbi_copy_v(double t, const double *q, const double *v, double *out, void *ctx);
-void pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx);
-void pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx);
+void vigen_pbi_copy_v(double t, const double *q, const double *v, double *out, void *ctx);
+void vigen_pbi_unit_block(double t, const double *q, const double *v, double *out, void *ctx);
+void vigen_pbi_zero_block(double t, const double *q, const double *v, double *out, void *ctx);
 
 /* Sets the Hamiltonian H = |p|^2/2 + V(q) (given H and dH/dq; dim set
  * before) with its Hessian, its Lagrangian |v|^2/2 - V(q) with
  * d2L/dq2 = -d2V/dq2 as given, and the identity as inverse Legendre map. */
-void pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
+void vigen_pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(double, const double *, const double *, void *),
                    vigen_lhess_fn d2Ldq2);
 
 /* The Hessian of a separable H = T(p) + V(q) (vigen_hess_fn layout, 2 dim
  * square) with d2V/dq2 = -pb->lag.d2Ldq2 and every other block zero; the
  * caller fills d2T/dp2. */
-void pbi_separable_hessian(const vigen_problem *pb, double t, const double *q, double *out);
+void vigen_pbi_separable_hessian(const vigen_problem *pb, double t, const double *q, double *out);
 
 #define PBI_PI 3.14159265358979323846
 
 #define PARAM(...)
-#define PROBLEM(id, name, description, ...) int pbi_##id##_setup(vigen_problem *pb);
+#define PROBLEM(id, name, description, ...) int vigen_pbi_##id##_setup(vigen_problem *pb);
 #include "problems.def"
 #undef PROBLEM
 #undef PARAM

@@ -172,6 +172,8 @@ if ! tsort "$tmp/graph" >/dev/null 2>&1; then
 fi
 
 # ---- (e) the names of global symbols -----------------------------------------
+# Every global symbol of the runtime starts with vigen_: it is linked into
+# users' programs, whose names it must not take.
 # A global symbol of libvigen or of the command line is a function or object
 # of the library's (vigen_..., public or shared between modules) or private
 # to its module: the module's prefix (chk_ for check, expr_ for the
@@ -180,6 +182,11 @@ fi
 awk 'function module(f,   p) { split(f, p, "/"); return p[1] == "src" ? p[2] : p[1] }
      function private_prefix(m) { return m == "check" ? "chk_" : m == "core" ? "expr_" : m "_" }
      $2 ~ /^[TDBRCVWGS]$/ && $1 ~ /^(src|cli)\// && !($3 in def) { def[$3] = $1 }
+     # the runtime and the problem library are linked into users programs:
+     # every global symbol of theirs is vigen_..., whatever its folder
+     $2 ~ /^[TDBRCVWGS]$/ && $1 ~ /^runtime\// && $3 !~ /^(vigen_|_|\.)/ {
+       print "FAIL " $1 " defines " $3 ", a global symbol of the runtime without the prefix vigen_ (it would enter the namespace of every program linked with the runtime)"
+     }
      $2 == "U" { use[++n] = $1 " " $3 }
      END {
        for (s in def) {
