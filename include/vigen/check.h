@@ -195,7 +195,7 @@ typedef struct {
     char *message;
 } vigen_check_note;
 
-/* The kind of a failing (or undecided) check in the list of problems: a row
+/* The kind of a failing (or undecided) check in the list of failures: a row
  * sum, a symplecticity pair, a claim of the file, an entry that differs from
  * FILE2's. */
 enum { VIGEN_CHECK_FAIL_ROWSUM, VIGEN_CHECK_FAIL_SYMPLECTIC, VIGEN_CHECK_FAIL_CLAIM, VIGEN_CHECK_FAIL_AGAINST };
@@ -212,7 +212,7 @@ typedef struct {
     arb_t value, expected;       /* balls (row sums, symplecticity, against, diagnoses) */
     char *value_json, *expected_json;  /* for claims: JSON literals ("4", "true") */
     char *message;               /* one line */
-} vigen_check_problem;
+} vigen_check_failure;
 
 /* The order by the simplifying assumptions (theorem.c).  Butcher's theorem
  * (Butcher 1964; Hairer, Norsett, Wanner I, Thm II.7.4): B(p), C(eta), D(zeta)
@@ -373,8 +373,8 @@ typedef struct {
     slong against_undecided;
     slong against_stages;        /* FILE2's stage count when it differs from s, else 0 */
 
-    slong nproblems, alloc_problems;
-    vigen_check_problem *problems;
+    slong nfailures, alloc_failures;
+    vigen_check_failure *failures;   /* failing and undecided conditions (JSON "problems") */
 
     slong nnotes;
     vigen_check_note *notes;     /* short decimals that look exact */
@@ -403,9 +403,9 @@ typedef struct {
 #undef X_RESULT
 } vigen_check_report;
 
-/* A report with nothing checked (no claims, no problems); every report is
+/* A report with nothing checked (no claims, no failures); every report is
  * initialised before a check and cleared after it (which frees its texts,
- * balls, problems and notes). */
+ * balls, failures and notes). */
 void vigen_check_report_init(vigen_check_report *rep);
 void vigen_check_report_clear(vigen_check_report *rep);
 

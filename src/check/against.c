@@ -48,7 +48,7 @@ static void compare_entry(vigen_check_report *rep, ctx_t *cx, const char *mat, s
     }
     if (st == FAILS) rep->against_differences++;
     else rep->against_undecided++;
-    vigen_check_problem *p = chk_problem_new(rep, VIGEN_CHECK_FAIL_AGAINST);
+    vigen_check_failure *p = chk_failure_new(rep, VIGEN_CHECK_FAIL_AGAINST);
     p->undecided = st == UNDECIDED;
     p->matrix = mat;
     p->row = i + 1;
@@ -84,7 +84,7 @@ static void compare_tableaux(vigen_check_report *rep, ctx_t *x, const ctx_t *y)
     if (x->s != y->s) {
         rep->against_differences = 1;
         rep->against_stages = y->s;
-        vigen_check_problem *p = chk_problem_new(rep, VIGEN_CHECK_FAIL_AGAINST);
+        vigen_check_failure *p = chk_failure_new(rep, VIGEN_CHECK_FAIL_AGAINST);
         p->value_json = vigen_strdup_printf("%ld", (long)x->s);
         p->expected_json = vigen_strdup_printf("%ld", (long)y->s);
         p->message = vigen_strdup_printf("the tableaux have %ld and %ld stages", (long)x->s, (long)y->s);

@@ -161,9 +161,9 @@ typedef int (*chk_check_fn)(chk_round *r, vigen_error *err);
 
 /* report_init.c: problems filed into the report, its notes torn down, the
  * members of the X_RESULT rows cleared before a round */
-vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind);
+vigen_check_failure *chk_failure_new(vigen_check_report *rep, int kind);
 void chk_results_reset(vigen_check_report *rep);
-void chk_problems_clear(vigen_check_report *rep);
+void chk_failures_clear(vigen_check_report *rep);
 void chk_notes_clear(vigen_check_report *rep);
 
 /* exactness.c: which entries are exact, and in which field (Q, Q(sqrt d)) */

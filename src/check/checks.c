@@ -26,7 +26,7 @@ static const chk_check_row checks[] = {
 
 static void report_reset_round(vigen_check_report *rep)
 {
-    chk_problems_clear(rep);
+    chk_failures_clear(rep);
     chk_results_reset(rep);
     rep->against_checked = 0;
     rep->against_differences = 0;

@@ -110,7 +110,7 @@ int chk_claims(chk_round *rd, vigen_error *err)
         }
         rep->claim_order_status = st;
         if (st != VIGEN_CHECK_YES) {
-            vigen_check_problem *p = chk_problem_new(rep, VIGEN_CHECK_FAIL_CLAIM);
+            vigen_check_failure *p = chk_failure_new(rep, VIGEN_CHECK_FAIL_CLAIM);
             p->claim = "order";
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup_printf("%d", g->value);
@@ -177,7 +177,7 @@ int chk_claims(chk_round *rd, vigen_error *err)
                  : claim < q ? VIGEN_CHECK_NO : VIGEN_CHECK_UNDECIDED;
         rep->claim_order_family_status[f] = st;
         if (st != VIGEN_CHECK_YES) {
-            vigen_check_problem *p = chk_problem_new(rep, VIGEN_CHECK_FAIL_CLAIM);
+            vigen_check_failure *p = chk_failure_new(rep, VIGEN_CHECK_FAIL_CLAIM);
             p->claim = family_names[f];
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup_printf("%d", q);
@@ -205,7 +205,7 @@ int chk_claims(chk_round *rd, vigen_error *err)
         rep->claim_symplectic_status = st;
         rep->claim_symplectic_within_data = st == VIGEN_CHECK_YES && want && rep->symplectic_within_data;
         if (st != VIGEN_CHECK_YES) {
-            vigen_check_problem *p = chk_problem_new(rep, VIGEN_CHECK_FAIL_CLAIM);
+            vigen_check_failure *p = chk_failure_new(rep, VIGEN_CHECK_FAIL_CLAIM);
             p->claim = "symplectic";
             p->undecided = st == VIGEN_CHECK_UNDECIDED;
             p->value_json = vigen_strdup(rep->symplectic == VIGEN_CHECK_YES ? "true"

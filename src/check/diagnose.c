@@ -330,7 +330,7 @@ int chk_diagnosis(chk_round *r, vigen_error *err)
             int kind = chk_cond_is_rowsum(conds + k) ? VIGEN_CHECK_FAIL_ROWSUM : VIGEN_CHECK_FAIL_SYMPLECTIC;
             if (kinds_seen[kind]) continue;
             kinds_seen[kind] = 1;
-            vigen_check_problem *p = chk_problem_new(rep, kind);
+            vigen_check_failure *p = chk_failure_new(rep, kind);
             p->matrix = chk_matrix_names[culprit.mat];
             p->row = culprit.i + 1;
             p->col = (culprit.mat == M_A || culprit.mat == M_AT) ? culprit.j + 1 : 0;
@@ -352,7 +352,7 @@ int chk_diagnosis(chk_round *r, vigen_error *err)
         if (c->status == HOLDS) continue;
         int rowsum = chk_cond_is_rowsum(c);
         if (c->type == C_BT_EQ_B && !list_bt) continue;
-        vigen_check_problem *p = chk_problem_new(rep, rowsum ? VIGEN_CHECK_FAIL_ROWSUM : VIGEN_CHECK_FAIL_SYMPLECTIC);
+        vigen_check_failure *p = chk_failure_new(rep, rowsum ? VIGEN_CHECK_FAIL_ROWSUM : VIGEN_CHECK_FAIL_SYMPLECTIC);
         p->undecided = c->status == UNDECIDED;
         p->has_value = p->has_expected = 1;
         chk_cond_parts(p->value, p->expected, cx, c, NULL);

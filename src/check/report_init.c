@@ -14,13 +14,13 @@ void vigen_check_options_init(vigen_check_options *opt)
     opt->spec_digits = 34;
 }
 
-vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind)
+vigen_check_failure *chk_failure_new(vigen_check_report *rep, int kind)
 {
-    if (rep->nproblems == rep->alloc_problems) {
-        rep->alloc_problems = rep->alloc_problems ? 2 * rep->alloc_problems : 16;
-        rep->problems = flint_realloc(rep->problems, sizeof(vigen_check_problem) * (size_t)rep->alloc_problems);
+    if (rep->nfailures == rep->alloc_failures) {
+        rep->alloc_failures = rep->alloc_failures ? 2 * rep->alloc_failures : 16;
+        rep->failures = flint_realloc(rep->failures, sizeof(vigen_check_failure) * (size_t)rep->alloc_failures);
     }
-    vigen_check_problem *p = rep->problems + rep->nproblems++;
+    vigen_check_failure *p = rep->failures + rep->nfailures++;
     memset(p, 0, sizeof(*p));
     p->kind = kind;
     arb_init(p->value);
@@ -28,19 +28,19 @@ vigen_check_problem *chk_problem_new(vigen_check_report *rep, int kind)
     return p;
 }
 
-void chk_problems_clear(vigen_check_report *rep)
+void chk_failures_clear(vigen_check_report *rep)
 {
-    for (slong k = 0; k < rep->nproblems; k++) {
-        vigen_check_problem *p = rep->problems + k;
+    for (slong k = 0; k < rep->nfailures; k++) {
+        vigen_check_failure *p = rep->failures + k;
         arb_clear(p->value);
         arb_clear(p->expected);
         free(p->value_json);
         free(p->expected_json);
         free(p->message);
     }
-    flint_free(rep->problems);
-    rep->problems = NULL;
-    rep->nproblems = rep->alloc_problems = 0;
+    flint_free(rep->failures);
+    rep->failures = NULL;
+    rep->nfailures = rep->alloc_failures = 0;
 }
 
 /* The members of the X_RESULT rows: set, value and text, by the value's type
@@ -130,7 +130,7 @@ void chk_notes_clear(vigen_check_report *rep)
 
 void vigen_check_report_clear(vigen_check_report *rep)
 {
-    chk_problems_clear(rep);
+    chk_failures_clear(rep);
     chk_notes_clear(rep);
     for (int f = 0; f < VIGEN_CHECK_FAMILIES; f++) {
         free(rep->orders[f].fail_tree);

@@ -8,10 +8,10 @@
 
 /* The first problem of the report of a kind that certainly fails (diagnosed
  * = 1: the one naming a single entry; 0: a plain failing condition). */
-static const vigen_check_problem *first_failing(const vigen_check_report *rep, int kind, int diagnosed)
+static const vigen_check_failure *first_failing(const vigen_check_report *rep, int kind, int diagnosed)
 {
-    for (slong k = 0; k < rep->nproblems; k++) {
-        const vigen_check_problem *p = rep->problems + k;
+    for (slong k = 0; k < rep->nfailures; k++) {
+        const vigen_check_failure *p = rep->failures + k;
         if (p->kind == kind && !p->undecided && p->diagnosed == diagnosed && p->message) return p;
     }
     return NULL;
@@ -56,7 +56,7 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
      * holds within the precision of the data, or an undecided one, is no
      * evidence against the tableau. */
     if (rep.consistent == VIGEN_CHECK_NO) {
-        const vigen_check_problem *p = first_failing(&rep, VIGEN_CHECK_FAIL_ROWSUM, 0);
+        const vigen_check_failure *p = first_failing(&rep, VIGEN_CHECK_FAIL_ROWSUM, 0);
         vigen_warn("%s: the tableau is not consistent (%ld of %ld conditions c_i = sum_j a_ij%s, sum b = 1%s fail%s%s)",
                    label, (long)rep.row_fail, (long)rep.row_total, rep.has_ct ? ", ct_i = sum_j at_ij" : "",
                    rep.has_bt ? ", sum bt = 1" : "", p ? "; first: " : "", p ? p->message : "");
@@ -68,7 +68,7 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
         (*warnings)++;
     } else if (rep.symplectic == VIGEN_CHECK_NO && claim_symplectic != 0) {
         /* (a file that says symplectic = false knows: no warning) */
-        const vigen_check_problem *p = first_failing(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, 0);
+        const vigen_check_failure *p = first_failing(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, 0);
         vigen_warn("%s: the tableau is not symplectic (%ld of %ld conditions b_i at_ij + b_j a_ji - b_i b_j = 0%s "
                    "fail%s%s)",
                    label, (long)rep.sym_fail, (long)rep.sym_total, rep.has_bt ? ", bt = b" : "",
@@ -98,7 +98,7 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
         vigen_check_report_clear(&orep);
     }
     if (*warnings > 0) {
-        const vigen_check_problem *d = first_failing(&rep, VIGEN_CHECK_FAIL_ROWSUM, 1);
+        const vigen_check_failure *d = first_failing(&rep, VIGEN_CHECK_FAIL_ROWSUM, 1);
         if (d == NULL) d = first_failing(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, 1);
         if (d) vigen_warn("%s: a misprint? %s", label, d->message);
         vigen_warn("%s: the stepper is emitted as the tableau says; run 'vigen check %s' for details", label, label);

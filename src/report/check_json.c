@@ -198,8 +198,8 @@ static void json_problems(FILE *out, const vigen_check_report *rep)
 {
     static const char *const kinds[] = {"rowsum", "symplectic", "claim", "against"};
     fputc('[', out);
-    for (slong k = 0; k < rep->nproblems; k++) {
-        const vigen_check_problem *p = rep->problems + k;
+    for (slong k = 0; k < rep->nfailures; k++) {
+        const vigen_check_failure *p = rep->failures + k;
         fprintf(out, "%s\n  {\"kind\": \"%s\"", k ? "," : "", kinds[p->kind]);
         if (p->claim) fprintf(out, ", \"claim\": \"%s\"", p->claim);
         if (p->matrix) fprintf(out, ", \"matrix\": \"%s\"", p->matrix);
@@ -215,7 +215,7 @@ static void json_problems(FILE *out, const vigen_check_report *rep)
         vigen_json_write_string(out, p->message ? p->message : "");
         fputc('}', out);
     }
-    fputs(rep->nproblems ? "\n ]" : "]", out);
+    fputs(rep->nfailures ? "\n ]" : "]", out);
 }
 
 static void json_against(FILE *out, const vigen_check_report *rep)

@@ -482,19 +482,19 @@ static void text_undecided(FILE *out, const vigen_check_report *rep)
 /* symplecticity pairs: the first 20; everything else: up to 40 lines */
 static void text_problems(FILE *out, const vigen_check_report *rep)
 {
-    if (rep->nproblems) {
+    if (rep->nfailures) {
         fputs("problems\n", out);
         /* symplecticity pairs: the first 20; everything else: up to 40 lines */
         slong pairs = 0, pairs_shown = 0, other_shown = 0, other_hidden = 0;
-        for (slong k = 0; k < rep->nproblems; k++) {
-            const vigen_check_problem *p = rep->problems + k;
+        for (slong k = 0; k < rep->nfailures; k++) {
+            const vigen_check_failure *p = rep->failures + k;
             if (p->kind == VIGEN_CHECK_FAIL_SYMPLECTIC && !p->diagnosed && p->col > 0) pairs++;
         }
-        for (slong k = 0; k < rep->nproblems; k++) {
-            const vigen_check_problem *p = rep->problems + k;
+        for (slong k = 0; k < rep->nfailures; k++) {
+            const vigen_check_failure *p = rep->failures + k;
             /* a diagnosis is filed once per kind of condition, with one message */
-            if (k > 0 && p->diagnosed && rep->problems[k - 1].diagnosed &&
-                strcmp(p->message, rep->problems[k - 1].message) == 0)
+            if (k > 0 && p->diagnosed && rep->failures[k - 1].diagnosed &&
+                strcmp(p->message, rep->failures[k - 1].message) == 0)
                 continue;
             if (p->kind == VIGEN_CHECK_FAIL_SYMPLECTIC && !p->diagnosed && p->col > 0) {
                 if (pairs_shown < 20) {

@@ -22,7 +22,7 @@ static void test_rational_tiny_perturbation(void)
     CHECK(check(&rep, &u, NULL, 4) == VIGEN_OK);
     CHECK(rep.rational_denominator != NULL && strcmp(rep.rational_denominator, "3" ZEROS60) == 0);
     CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO && rep.exit_code == 1);
-    const vigen_check_problem *p = find_listed(&rep, VIGEN_CHECK_FAIL_ROWSUM, "At", 1, 0);
+    const vigen_check_failure *p = find_listed(&rep, VIGEN_CHECK_FAIL_ROWSUM, "At", 1, 0);
     if (p == NULL) p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "At", 1, 1);
     CHECK(p != NULL && !p->undecided);
     CHECK(rep.proved > 0 && rep.row_fail >= 1 && rep.sym_fail >= 1);

@@ -200,7 +200,7 @@ static void test_unreadable(void)
     vigen_error_init(&err);
     int rc = check_rel(&rep, "tests/data/check/does_not_exist.lua", NULL, &err);
     CHECK(rc != VIGEN_OK && err.code == rc && vigen_status_exit_code(rc) == 2);
-    CHECK(rep.s == 0 && rep.nproblems == 0);
+    CHECK(rep.s == 0 && rep.nfailures == 0);
     vigen_check_report_clear(&rep);
     vigen_error_clear(&err);
     /* FILE2 unreadable: the same, after FILE was read */

@@ -19,7 +19,7 @@ static void test_symplectic_euler(void)
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_A_ALONE), 1, 0, 0);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_AT_ALONE), 1, 0, 0);
     CHECK(rep.exit_code == 0);
-    CHECK(rep.nproblems == 0);
+    CHECK(rep.nfailures == 0);
     /* order 2 has 4 trees, the first failing one is b[b] (sum b_i a_ij = 0 != 1/2) */
     CHECK(rep.orders[0].count[2] == 4);
     CHECK(rep.orders[0].fail_tree && strcmp(rep.orders[0].fail_tree, "b[b]") == 0);
@@ -67,7 +67,7 @@ static void test_gauss_exact(void)
         CHECK_LEVEL(&rep.C[0], s, 0, 0);
         CHECK_LEVEL(&rep.D[0], s, 0, 0);
         CHECK_LEVEL(&rep.stage_order[0], s, 0, 0);
-        CHECK(rep.exit_code == 0 && rep.nproblems == 0);
+        CHECK(rep.exit_code == 0 && rep.nfailures == 0);
         /* all 2 + 4 + 14 + 52 + ... conditions up to 2s hold */
         static const slong counts[] = {0, 2, 4, 14, 52, 214, 916, 4116};
         for (int n = 1; n <= 2 * s; n++) CHECK(rep.orders[0].hold[n] == counts[n]);
@@ -132,7 +132,7 @@ static void test_lobatto3(void)
     CHECK(check(&rep, &u, NULL, 8) == VIGEN_OK);
     CHECK(rep.consistent == VIGEN_CHECK_NO && rep.symplectic == VIGEN_CHECK_NO);
     CHECK(rep.exit_code == 1);
-    const vigen_check_problem *p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "At", 2, 1);
+    const vigen_check_failure *p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "At", 2, 1);
     CHECK(p != NULL && p->diagnosed);
     if (p) {
         arb_t sixth;
@@ -174,7 +174,7 @@ static void test_lobatto3(void)
         arb_clear(want);
     }
     CHECK(rep.row_fail == 1 && rep.sym_fail == 1);
-    CHECK(rep.nproblems == 4);   /* two diagnoses (row sum, symplecticity), two listed failures */
+    CHECK(rep.nfailures == 4);   /* two diagnoses (row sum, symplecticity), two listed failures */
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&u);
 }
@@ -203,9 +203,9 @@ static void test_rk4(void)
     CHECK(rep.claim_symplectic_status == VIGEN_CHECK_NO);
     CHECK(rep.exit_code == 1);
     int claims = 0, symp = 0;
-    for (slong k = 0; k < rep.nproblems; k++) {
-        claims += rep.problems[k].kind == VIGEN_CHECK_FAIL_CLAIM;
-        symp += rep.problems[k].kind == VIGEN_CHECK_FAIL_SYMPLECTIC;
+    for (slong k = 0; k < rep.nfailures; k++) {
+        claims += rep.failures[k].kind == VIGEN_CHECK_FAIL_CLAIM;
+        symp += rep.failures[k].kind == VIGEN_CHECK_FAIL_SYMPLECTIC;
     }
     CHECK(claims == 1 && symp > 0);
     vigen_check_report_clear(&rep);
@@ -235,7 +235,7 @@ static void test_rk4(void)
             arb_addmul(want, bj, aji, 256);
             arb_submul(want, bi, bj, 256);
             CHECK(!arb_contains_zero(want));
-            const vigen_check_problem *p = find_listed(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, "A", i + 1, j + 1);
+            const vigen_check_failure *p = find_listed(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, "A", i + 1, j + 1);
             CHECK_MSG(p != NULL, "pair (%ld, %ld) not listed", (long)(i + 1), (long)(j + 1));
             if (p) {
                 pairs++;
@@ -269,7 +269,7 @@ static void test_rk4(void)
     CHECK(check(&rep, &t, NULL, 2) == VIGEN_OK);
     CHECK(rep.sym_fail == 28);
     slong listed = 0;
-    for (slong k = 0; k < rep.nproblems; k++) listed += rep.problems[k].kind == VIGEN_CHECK_FAIL_SYMPLECTIC;
+    for (slong k = 0; k < rep.nfailures; k++) listed += rep.failures[k].kind == VIGEN_CHECK_FAIL_SYMPLECTIC;
     CHECK(listed == 28);
     text = render(&rep, 0);
     slong lines = 0;
@@ -362,9 +362,9 @@ static void test_claims(void)
     CHECK(rep.max_order == 8);
     CHECK(rep.claim_order_status == VIGEN_CHECK_NO && !rep.claim_order_beyond && rep.exit_code == 1);
     CHECK(rep.theorem.bushy_fail[0] == 9 && rep.theorem.bushy_fail[1] == 9);
-    const vigen_check_problem *p = NULL;
-    for (slong k = 0; k < rep.nproblems; k++)
-        if (rep.problems[k].kind == VIGEN_CHECK_FAIL_CLAIM) p = rep.problems + k;
+    const vigen_check_failure *p = NULL;
+    for (slong k = 0; k < rep.nfailures; k++)
+        if (rep.failures[k].kind == VIGEN_CHECK_FAIL_CLAIM) p = rep.failures + k;
     CHECK(p != NULL && !p->undecided && strstr(p->message, "bushy tree of order 9") != NULL);
     vigen_check_report_clear(&rep);
     CHECK(check(&rep, &t, NULL, 10) == VIGEN_OK);

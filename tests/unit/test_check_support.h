@@ -119,22 +119,22 @@ static inline char *render(const vigen_check_report *rep, int json)
     return buf;
 }
 
-static inline const vigen_check_problem *find_problem(const vigen_check_report *rep, int kind, const char *matrix, slong row,
+static inline const vigen_check_failure *find_problem(const vigen_check_report *rep, int kind, const char *matrix, slong row,
                                                slong col)
 {
-    for (slong k = 0; k < rep->nproblems; k++) {
-        const vigen_check_problem *p = rep->problems + k;
+    for (slong k = 0; k < rep->nfailures; k++) {
+        const vigen_check_failure *p = rep->failures + k;
         if (p->kind == kind && p->matrix && strcmp(p->matrix, matrix) == 0 && p->row == row && p->col == col) return p;
     }
     return NULL;
 }
 
 /* The problem that lists one failed condition (not a diagnosis). */
-static inline const vigen_check_problem *find_listed(const vigen_check_report *rep, int kind, const char *matrix, slong row,
+static inline const vigen_check_failure *find_listed(const vigen_check_report *rep, int kind, const char *matrix, slong row,
                                               slong col)
 {
-    for (slong k = 0; k < rep->nproblems; k++) {
-        const vigen_check_problem *p = rep->problems + k;
+    for (slong k = 0; k < rep->nfailures; k++) {
+        const vigen_check_failure *p = rep->failures + k;
         if (p->kind == kind && !p->diagnosed && p->matrix && strcmp(p->matrix, matrix) == 0 && p->row == row &&
             p->col == col)
             return p;
@@ -142,10 +142,10 @@ static inline const vigen_check_problem *find_listed(const vigen_check_report *r
     return NULL;
 }
 
-static inline const vigen_check_problem *find_diagnosis(const vigen_check_report *rep, int kind)
+static inline const vigen_check_failure *find_diagnosis(const vigen_check_report *rep, int kind)
 {
-    for (slong k = 0; k < rep->nproblems; k++)
-        if (rep->problems[k].kind == kind && rep->problems[k].diagnosed) return rep->problems + k;
+    for (slong k = 0; k < rep->nfailures; k++)
+        if (rep->failures[k].kind == kind && rep->failures[k].diagnosed) return rep->failures + k;
     return NULL;
 }
 
@@ -192,7 +192,7 @@ static inline void eval_text(arb_t x, const char *text, slong prec)
  * other side) is eps, certified to 30 digits. */
 static inline void check_rowsum_defect(const vigen_check_report *rep, const char *matrix, slong row, const arb_t eps)
 {
-    const vigen_check_problem *p = find_listed(rep, VIGEN_CHECK_FAIL_ROWSUM, matrix, row, 0);
+    const vigen_check_failure *p = find_listed(rep, VIGEN_CHECK_FAIL_ROWSUM, matrix, row, 0);
     CHECK_MSG(p != NULL, "row %ld of %s is not listed", (long)row, matrix);
     if (p == NULL) return;
     arb_t d;
@@ -214,7 +214,7 @@ static inline int in_field(const vigen_check_report *rep, const char *d, const c
 static inline void check_a11_defects(const vigen_check_report *rep, const arb_t eps)
 {
     check_rowsum_defect(rep, "A", 1, eps);
-    const vigen_check_problem *p = find_listed(rep, VIGEN_CHECK_FAIL_SYMPLECTIC, "A", 1, 1);
+    const vigen_check_failure *p = find_listed(rep, VIGEN_CHECK_FAIL_SYMPLECTIC, "A", 1, 1);
     CHECK(p != NULL);
     if (p) CHECK_CLOSE(p->value, eps, 30, 2048);
 }

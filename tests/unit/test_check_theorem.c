@@ -38,9 +38,9 @@ static double now(void)
 
 static const char *claim_message(const vigen_check_report *rep)
 {
-    for (slong k = 0; k < rep->nproblems; k++)
-        if (rep->problems[k].kind == VIGEN_CHECK_FAIL_CLAIM && strcmp(rep->problems[k].claim, "order") == 0)
-            return rep->problems[k].message;
+    for (slong k = 0; k < rep->nfailures; k++)
+        if (rep->failures[k].kind == VIGEN_CHECK_FAIL_CLAIM && strcmp(rep->failures[k].claim, "order") == 0)
+            return rep->failures[k].message;
     return "";
 }
 

@@ -41,9 +41,9 @@ static void test_perturbed_gauss3(void)
     CHECK(rep.consistent == VIGEN_CHECK_NO);
     CHECK(rep.symplectic == VIGEN_CHECK_NO);
     CHECK(rep.exit_code == 1);
-    const vigen_check_problem *p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "A", 2, 3);
-    const vigen_check_problem *q = find_problem(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, "A", 2, 3);
-    const vigen_check_problem *r = find_problem(&rep, VIGEN_CHECK_FAIL_AGAINST, "A", 2, 3);
+    const vigen_check_failure *p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "A", 2, 3);
+    const vigen_check_failure *q = find_problem(&rep, VIGEN_CHECK_FAIL_SYMPLECTIC, "A", 2, 3);
+    const vigen_check_failure *r = find_problem(&rep, VIGEN_CHECK_FAIL_AGAINST, "A", 2, 3);
     CHECK(p != NULL && p->diagnosed);
     CHECK(q != NULL && q->diagnosed);
     CHECK(r != NULL);
@@ -82,7 +82,7 @@ static void test_perturbed_gauss3(void)
     CHECK(check(&rep, &good, &exact, 8) == VIGEN_OK);
     CHECK(rep.consistent == VIGEN_CHECK_YES && rep.symplectic == VIGEN_CHECK_YES);
     CHECK_LEVEL(order_of(&rep, VIGEN_CHECK_GENERAL), 6, 0, 0);
-    CHECK(rep.against_differences == 0 && rep.nproblems == 0 && rep.exit_code == 0);
+    CHECK(rep.against_differences == 0 && rep.nfailures == 0 && rep.exit_code == 0);
     json = render(&rep, 1);
     CHECK(strstr(json, "\"order\": 6,") != NULL && strstr(json, "\"symplectic\": true") != NULL);
     CHECK(strstr(json, "\"problems\": []") != NULL);
@@ -114,7 +114,7 @@ static void test_other_typos(void)
     vigen_tableau t;
     make(&t, "gauss2, b typo", 2, gauss2_c, gauss2_A, b, NULL, NULL, NULL);
     CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
-    const vigen_check_problem *p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "b", 1, 0);
+    const vigen_check_failure *p = find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "b", 1, 0);
     CHECK(p != NULL && p->diagnosed);
     if (p) CHECK_CLOSE(p->expected, half, 35, 256);
     vigen_check_report_clear(&rep);
@@ -136,8 +136,8 @@ static void test_other_typos(void)
         CHECK(strstr(p->message, "b[1] = 0.51;") != NULL);
     }
     /* the messages of failed conditions print defects that visibly exclude 0 */
-    for (slong k = 0; k < rep.nproblems; k++) {
-        const vigen_check_problem *q = rep.problems + k;
+    for (slong k = 0; k < rep.nfailures; k++) {
+        const vigen_check_failure *q = rep.failures + k;
         if (q->kind == VIGEN_CHECK_FAIL_CLAIM || q->diagnosed) continue;
         CHECK_MSG(printed_defect_excludes_zero(q->message) == 1, "%s", q->message);
         CHECK_MSG(strstr(q->message, "+/-") == NULL, "%s", q->message);
@@ -182,7 +182,7 @@ static void test_other_typos(void)
     make(&t, "gauss2, two typos", 2, gauss2_c, A2, gauss2_b, NULL, NULL, NULL);
     CHECK(check(&rep, &t, NULL, 6) == VIGEN_OK);
     int diagnosed = 0;
-    for (slong k = 0; k < rep.nproblems; k++) diagnosed |= rep.problems[k].diagnosed;
+    for (slong k = 0; k < rep.nfailures; k++) diagnosed |= rep.failures[k].diagnosed;
     CHECK(!diagnosed);
     CHECK(find_problem(&rep, VIGEN_CHECK_FAIL_ROWSUM, "A", 2, 0) != NULL);
     vigen_check_report_clear(&rep);
@@ -288,7 +288,7 @@ static void test_short_data(void)
     CHECK(rep.consistent == VIGEN_CHECK_UNDECIDED && !rep.consistent_within_data && rep.exit_code == 1);
     CHECK(rep.holds[VIGEN_CHECK_SECT_ROWSUM].too_short == 1 && rep.undecided_short > 0);
     CHECK(rep.undecided_reason != NULL && strstr(rep.undecided_reason, "too short") != NULL);
-    const vigen_check_problem *p = find_listed(&rep, VIGEN_CHECK_FAIL_ROWSUM, "b", 0, 0);
+    const vigen_check_failure *p = find_listed(&rep, VIGEN_CHECK_FAIL_ROWSUM, "b", 0, 0);
     CHECK(p != NULL && p->undecided && strstr(p->message, "too short") != NULL);
     vigen_check_report_clear(&rep);
     vigen_tableau_clear(&t);
