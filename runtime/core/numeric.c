@@ -8,6 +8,6 @@
 #include <vigen/runtime.h>
 
 #define VIGEN_REAL_TEMPLATE "numeric_real.h"
-#include "each_real.h"
+#include "real_instances.h"
 #define VIGEN_REAL_TEMPLATE "prk_field_real.h"
-#include "each_real.h"
+#include "real_instances.h"

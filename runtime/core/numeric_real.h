@@ -1,6 +1,6 @@
 /* numeric_real.h — finite-difference Jacobians, the type's epsilon and
  * compensated sums, repeated for each real type (instantiated by numeric.c
- * through each_real.h). */
+ * through real_instances.h). */
 
 /* Moves *x by a step relative to max(|*x|, 1) and returns the step actually
  * represented. */

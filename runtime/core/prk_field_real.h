@@ -1,7 +1,7 @@
 /* prk_field_real.h — the flow of the problem an emitted PRK workspace
  * begins with (vigen_prk_vector_field, the vector field of every emitted
  * NAME_type), repeated for each real type (instantiated by numeric.c
- * through each_real.h). */
+ * through real_instances.h). */
 
 /* The first members of every emitted workspace (templates/prk keeps them
  * first and in this order). */

@@ -1,6 +1,6 @@
 /* dense_real.h — the continuous extension of a run of steps and output at
  * any time (vigen_integrate_at), repeated for each real type (instantiated
- * by integrate.c through core/each_real.h).  events_real.h uses
+ * by integrate.c through core/real_instances.h).  events_real.h uses
  * the extension too.
  *
  * The extension on a step from (t0, y0) to (t1, y1), y = (q, p), is the

@@ -13,8 +13,8 @@
 #include <vigen/runtime.h>
 
 #define VIGEN_REAL_TEMPLATE "../drive/integrate_real.h"
-#include "../core/each_real.h"
+#include "../core/real_instances.h"
 #define VIGEN_REAL_TEMPLATE "../drive/dense_real.h"
-#include "../core/each_real.h"
+#include "../core/real_instances.h"
 #define VIGEN_REAL_TEMPLATE "../drive/events_real.h"
-#include "../core/each_real.h"
+#include "../core/real_instances.h"

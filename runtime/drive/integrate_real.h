@@ -1,6 +1,6 @@
 /* integrate_real.h — vigen_integrate, n equal steps through a stepper type,
  * repeated for each real type (instantiated by integrate.c through
- * core/each_real.h). */
+ * core/real_instances.h). */
 
 int VIGEN_SFX(vigen_integrate)(const VIGEN_SFX(vigen_stepper_type) *T, void *w, VIGEN_REAL *t,
                                VIGEN_REAL *q, VIGEN_REAL *p, VIGEN_REAL h, unsigned long nsteps,

@@ -1,4 +1,4 @@
-/* each_real.h — instantiates a per-real-type template once for each
+/* real_instances.h — instantiates a per-real-type template once for each
  * real type of the runtime: double (no suffix), long double (_ld) and, where
  * the compiler has it, __float128 (_q).
  *
@@ -11,7 +11,7 @@
  * <float.h>, <math.h> and <vigen/runtime.h>.  No include guard: included
  * once per template. */
 #ifndef VIGEN_REAL_TEMPLATE
-#error "define VIGEN_REAL_TEMPLATE before including each_real.h"
+#error "define VIGEN_REAL_TEMPLATE before including real_instances.h"
 #endif
 
 #define VIGEN_REAL double
