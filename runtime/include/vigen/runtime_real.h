@@ -91,12 +91,6 @@ typedef struct {
     void *(*clone)(const void *w);
 } VIGEN_SFX(vigen_stepper_type);
 
-/* The vector field of every emitted stepper type: the flow of the problem
- * its workspace begins with (NAME_alloc's vigen_hamiltonian, or the
- * mechanical problem of NAME_alloc_mechanical: q' = M^-1 p, p' = f). */
-int VIGEN_SFX(vigen_prk_vector_field)(void *w, VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p,
-                                      VIGEN_REAL *dq, VIGEN_REAL *dp);
-
 /* Observer: called with the step count done so far; nonzero return stops. */
 typedef int (*VIGEN_SFX(vigen_observer_fn))(unsigned long step, VIGEN_REAL t, const VIGEN_REAL *q,
                                             const VIGEN_REAL *p, void *ctx);

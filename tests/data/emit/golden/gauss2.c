@@ -74,9 +74,6 @@
 /* Number of arrays of length dim in the workspace block. */
 #define GAUSS2_NARRAYS 25
 
-/* sys, mech and im stay first and in this order: the flow the drivers use
- * for output at any time and events (vigen_prk_vector_field, the type's
- * vector_field) reads the problem there. */
 struct gauss2_workspace {
     vigen_hamiltonian sys;
     vigen_mechanical mech;     /* the problem of gauss2_alloc_mechanical */
@@ -1006,9 +1003,26 @@ static void *gauss2_clone_v(const void *w)
     return x->sys.dHdq ? (void *)gauss2_alloc(&x->sys, &x->opt) : (void *)gauss2_alloc_mechanical(&x->mech, &x->opt);
 }
 
+/* The flow of the workspace's problem, for output at any time and events:
+ * q' = dH/dp, p' = -dH/dq, or for a mechanical problem q' = M^-1 p, p' = f. */
+static int gauss2_vector_field_v(void *vw, double t, const double *q, const double *p, double *dq, double *dp)
+{
+    const gauss2_workspace *w = vw;
+    if (w->sys.dHdq && w->sys.dHdp) {
+        w->sys.dHdp(t, q, p, dq, w->sys.ctx);
+        w->sys.dHdq(t, q, p, dp, w->sys.ctx);
+        for (size_t k = 0; k < w->n; k++) dp[k] = -dp[k];
+        return VIGEN_SUCCESS;
+    }
+    if (w->mech.force == NULL || w->im == NULL) return VIGEN_EINVAL;
+    w->mech.force(t, q, dp, w->mech.ctx);
+    for (size_t k = 0; k < w->n; k++) dq[k] = w->im[k] * p[k];
+    return VIGEN_SUCCESS;
+}
+
 const vigen_stepper_type gauss2_type = {
     "gauss2", 2, 4, 0,
     gauss2_alloc_v, gauss2_step_v, gauss2_reset_v, gauss2_stats_v, gauss2_free_v,
     gauss2_state_size_v, gauss2_state_get_v, gauss2_state_set_v,
-    gauss2_dim_v, vigen_prk_vector_field, gauss2_clone_v
+    gauss2_dim_v, gauss2_vector_field_v, gauss2_clone_v
 };

@@ -74,9 +74,6 @@
 /* Number of arrays of length dim in the workspace block. */
 #define VERLET_NARRAYS 29
 
-/* sys, mech and im stay first and in this order: the flow the drivers use
- * for output at any time and events (vigen_prk_vector_field, the type's
- * vector_field) reads the problem there. */
 struct verlet_workspace {
     vigen_hamiltonian sys;
     vigen_mechanical mech;     /* the problem of verlet_alloc_mechanical */
@@ -1131,9 +1128,26 @@ static void *verlet_clone_v(const void *w)
     return x->sys.dHdq ? (void *)verlet_alloc(&x->sys, &x->opt) : (void *)verlet_alloc_mechanical(&x->mech, &x->opt);
 }
 
+/* The flow of the workspace's problem, for output at any time and events:
+ * q' = dH/dp, p' = -dH/dq, or for a mechanical problem q' = M^-1 p, p' = f. */
+static int verlet_vector_field_v(void *vw, double t, const double *q, const double *p, double *dq, double *dp)
+{
+    const verlet_workspace *w = vw;
+    if (w->sys.dHdq && w->sys.dHdp) {
+        w->sys.dHdp(t, q, p, dq, w->sys.ctx);
+        w->sys.dHdq(t, q, p, dp, w->sys.ctx);
+        for (size_t k = 0; k < w->n; k++) dp[k] = -dp[k];
+        return VIGEN_SUCCESS;
+    }
+    if (w->mech.force == NULL || w->im == NULL) return VIGEN_EINVAL;
+    w->mech.force(t, q, dp, w->mech.ctx);
+    for (size_t k = 0; k < w->n; k++) dq[k] = w->im[k] * p[k];
+    return VIGEN_SUCCESS;
+}
+
 const vigen_stepper_type verlet_type = {
     "stormer_verlet", 2, 2, 1,
     verlet_alloc_v, verlet_step_v, verlet_reset_v, verlet_stats_v, verlet_free_v,
     verlet_state_size_v, verlet_state_get_v, verlet_state_set_v,
-    verlet_dim_v, vigen_prk_vector_field, verlet_clone_v
+    verlet_dim_v, verlet_vector_field_v, verlet_clone_v
 };
