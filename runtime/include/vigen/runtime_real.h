@@ -41,6 +41,29 @@ typedef struct {
     const VIGEN_REAL *inv_mass;
 } VIGEN_SFX(vigen_mechanical);
 
+/* A split problem, H = H_1 + H_2 + ... + H_n, each part with a flow the
+ * user solves exactly (a Kepler drift, a harmonic rotation, a free rigid
+ * body) or to a stated order.  Flow k advances (q, p) in place by time h of
+ * H_k alone, from time t, and returns VIGEN_SUCCESS, or an error status with
+ * q and p unchanged (a flow that cannot be evaluated, a collision orbit, a
+ * non-finite result).  A flow must be symplectic; the splitting method's
+ * order holds when every flow is exact or of at least that order.  flow[k]
+ * is the flow named k-th in the splitting file's `flows`; one ctx is passed
+ * to every flow.  vector_field (optional, NULL = none) is the flow of the
+ * whole H at (t, q, p), q' into dq and p' into dp; output at any time and
+ * events need it and refuse with VIGEN_EINVAL without it.  H (optional)
+ * serves diagnostics. */
+typedef int (*VIGEN_SFX(vigen_flow_fn))(VIGEN_REAL t, VIGEN_REAL h, VIGEN_REAL *q, VIGEN_REAL *p, void *ctx);
+typedef struct {
+    size_t dim;
+    size_t nflows;
+    const VIGEN_SFX(vigen_flow_fn) *flow;
+    void *ctx;
+    int (*vector_field)(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, VIGEN_REAL *dq, VIGEN_REAL *dp,
+                        void *ctx);
+    VIGEN_REAL (*H)(VIGEN_REAL t, const VIGEN_REAL *q, const VIGEN_REAL *p, void *ctx);
+} VIGEN_SFX(vigen_split_problem);
+
 /* An integrator as a const type object (GSL style): the one seam through
  * which every driver of the runtime (vigen_integrate, output at any time,
  * events, ensembles, restart, vigen_poincare_integrate) reaches it, with
