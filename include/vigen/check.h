@@ -298,6 +298,7 @@ typedef struct {
     int computed;                /* the file names two flows or has a corrector */
     const char *why;             /* not decided: why (static), else NULL */
     char *letter_a, *letter_b;   /* the flows behind A and B (B carries eps), from malloc */
+    int flipped;                 /* B is the file's first flow (the Lie basis's letter A) */
     int processed;               /* the step is C K C^-1 */
     int degree;                  /* terms computed to this degree */
     int rounded;                 /* coefficients are rounded decimals: vanishing means to the data's precision */

@@ -221,6 +221,7 @@ int chk_generalized(chk_round *rd, vigen_error *err)
     g->computed = 1;
     g->processed = fl->ncorrector > 0;
     int flip = fl->perturbation == 0;
+    g->flipped = flip;
     g->letter_a = vigen_strdup(fl->names[flip ? 1 : 0]);
     g->letter_b = vigen_strdup(fl->names[flip ? 0 : 1]);
     int N = DEFAULT_DEGREE;

@@ -389,8 +389,13 @@ static void text_lie_error(FILE *out, const vigen_check_report *rep)
 {
     const vigen_check_lie_error *le = &rep->lie_error;
     if (le->computed) {
-        fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A drifts, B kicks, in order), 2-norm ",
-                le->degree);
+        const vigen_check_generalized *g = rep->generalized;
+        if (g && g->computed)
+            fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A %s, B %s, in order), 2-norm ",
+                    le->degree, g->flipped ? g->letter_b : g->letter_a, g->flipped ? g->letter_a : g->letter_b);
+        else
+            fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A drifts, B kicks, in order), 2-norm ",
+                    le->degree);
         put_figure(out, le->norm);
         fputc('\n', out);
         for (slong k = 0; k < le->nterms; k++) {

@@ -50,6 +50,7 @@ saba_2 2 True
 saba_3 2 True
 saba_4 2 True
 saba_10_6_4 4 True
+wisdom_holman_corrected 2 True
 "
 count=0
 while read -r name order symp; do
