@@ -95,8 +95,14 @@ static int read_flows(vigen_splitting *sp, lua_State *L, const char *path, vigen
         sp->flow_names = calloc(2, sizeof *sp->flow_names);
         if (sp->flow_names == NULL) abort();
         for (int f = 0; f < 2; f++) sp->flow_names[f] = vigen_strdup(kick_drift[f]);
+        sp->perturbation = 1;
         lua_pop(L, 1);
-        return VIGEN_OK;
+        push_raw(L, "perturbation");
+        if (!lua_isnil(L, -1))
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'perturbation' names one of the 'flows'; a file of kicks and "
+                                 "drifts has none", path);
+        lua_pop(L, 1);
+        return rc;
     }
     sp->named = 1;
     lua_Integer n = plain_list(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : -1;

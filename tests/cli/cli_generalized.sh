@@ -126,5 +126,7 @@ echo "return { name = 't', flows = { 'a', 'b', 'c' }, splitting = { { 'a', '1' }
 refuse three.lua "not decided for more than two flows"
 echo "return { name = 'k', generalized_order = { 2, 2 }, splitting = { { 'kick', '1/2' }, { 'drift', '1' }, { 'kick', '1/2' } } }" > "$T/kd.lua"
 refuse kd.lua "'generalized_order' (a claim) must be a plain list"
+echo "return { name = 'k', perturbation = 'kick', splitting = { { 'kick', '1/2' }, { 'drift', '1' }, { 'kick', '1/2' } } }" > "$T/kdp.lua"
+refuse kdp.lua "'perturbation' names one of the 'flows'"
 
 exit $fail
