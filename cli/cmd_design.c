@@ -16,6 +16,13 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
            (long)res->nunknowns);
     for (slong i = 0; i < res->nconditions; i++) printf("%s [%s]", i ? "," : "", res->conditions[i]);
     printf("\n");
+    if (res->minimized) {
+        printf("search      %ld free unknowns; Nelder-Mead on the checker's %s from %ld starts (%ld checker runs): "
+               "%ld local minima\n", (long)res->nfree, d->minimize, (long)res->starts, res->evaluations,
+               (long)res->nfound);
+        printf("complete    the best found, not proved the global minimum\n");
+        return;
+    }
     printf("search      a square subsystem of %ld, Newton from %ld starts: %ld distinct real roots\n",
            (long)res->nsquare, (long)res->starts, (long)res->nfound);
     if (res->complete)

@@ -35,8 +35,9 @@ typedef struct {
     char *base;                  /* the base method, a library name or a file, as written */
     int stages, order, symmetric;
     int goal;                    /* VIGEN_DESIGN_ALL or VIGEN_DESIGN_MINIMIZE */
-    char *minimize;              /* "error_constant" (goal MINIMIZE) */
-    long starts;                 /* Newton starts (default 2000) */
+    char *minimize;              /* goal MINIMIZE: "error_constant" (general H), "error_constant_separable",
+                                    "error_constant_nystrom": the checker's constant minimised */
+    long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     unsigned long seed;          /* of the starts (default 1) */
 } vigen_design_spec;
 
@@ -78,6 +79,9 @@ typedef struct {
     slong nfound;                /* distinct real roots of the square subsystem found */
     int complete;                /* the roots found are all the complex roots (nfound == bezout) */
     int base_order;              /* the base method's certified order */
+    int minimized;               /* minimize: sol[0] is the best point found */
+    slong nfree;                 /* minimize: the unknowns the conditions leave free */
+    long evaluations;            /* minimize: the checker's runs on trial points */
     slong nsol;
     vigen_design_solution *sol;  /* in the order found, sorted by the first unknown */
 } vigen_design_result;

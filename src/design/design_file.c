@@ -12,6 +12,8 @@
 #include "support/nul.h"
 
 #define DEFAULT_STARTS 2000L
+/* minimize: each start is a descent with a checker run per trial point */
+#define DEFAULT_MINIMIZE_STARTS 8L
 #define MAX_STARTS 1000000L
 /* Compositions of at most this many stages (the unknowns of a family). */
 #define MAX_DESIGN_STAGES 64
@@ -94,7 +96,7 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "stages", 1, 0, 1, MAX_DESIGN_STAGES, path, err)) == VIGEN_OK)
         d->stages = (int)v;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "order", 1, 0, 1, 1000, path, err)) == VIGEN_OK) d->order = (int)v;
-    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "starts", 0, DEFAULT_STARTS, 1, MAX_STARTS, path, err)) == VIGEN_OK)
+    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "starts", 0, 0, 1, MAX_STARTS, path, err)) == VIGEN_OK)
         d->starts = v;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "seed", 0, 1, 0, 2147483647L, path, err)) == VIGEN_OK)
         d->seed = (unsigned long)v;
@@ -116,9 +118,12 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
                                  "\"error_constant\"", path);
         else if (solutions && strcmp(solutions, "all") != 0)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: solutions: must be \"all\"", path);
-        else if (d->minimize && strcmp(d->minimize, "error_constant") != 0)
-            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: must be \"error_constant\"", path);
+        else if (d->minimize && strcmp(d->minimize, "error_constant") != 0 &&
+                 strcmp(d->minimize, "error_constant_separable") != 0 && strcmp(d->minimize, "error_constant_nystrom") != 0)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: must be \"error_constant\" (general H), "
+                                 "\"error_constant_separable\" or \"error_constant_nystrom\"", path);
         d->goal = d->minimize ? VIGEN_DESIGN_MINIMIZE : VIGEN_DESIGN_ALL;
+        if (d->starts == 0) d->starts = d->goal == VIGEN_DESIGN_MINIMIZE ? DEFAULT_MINIMIZE_STARTS : DEFAULT_STARTS;
     }
     free(solutions);
     return rc;

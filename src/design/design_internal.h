@@ -72,6 +72,17 @@ int design_newton_polish(double *x, const design_system *sys, const slong *rows,
  * returns how many were found (< k: the conditions leave free parameters). */
 slong design_square_rows(slong *rows, const design_system *sys, unsigned long seed);
 
+/* Pins (design_pin.c): design_system_add_pin appends the condition
+ * x_j - t = 0 (t = 0) and returns its row; design_system_set_pin sets t,
+ * exactly the double given. */
+slong design_system_add_pin(design_system *sys, slong j);
+void design_system_set_pin(design_system *sys, slong row, double t);
+
+/* The free unknowns of the conditions rows[0..m-1] (m < k): the unknowns
+ * left when m columns independent at a generic point are taken as the
+ * dependent ones; free_out gets k - m of them (design_minimize.c). */
+void design_free_unknowns(slong *free_out, const design_system *sys, const slong *rows, slong m, unsigned long seed);
+
 /* The Krawczyk proof (design_krawczyk.c): from the approximate root x0 of
  * the square subsystem rows, Newton in arb at prec, then the Krawczyk test
  * on a box around it.  On success (returns 1) box[j] encloses the unique

@@ -77,8 +77,10 @@ static char *ball_text(const arb_t x)
     return out;
 }
 
-int vigen_design_method_check(vigen_design_solution *sol, const char *text, const char *shown_path, int order,
-                              vigen_error *err)
+/* text loaded as the composition file it is (through a temporary file) and
+ * checked to order max_order; rep initialised on success. */
+static int load_check(vigen_check_report *rep, const char *text, const char *shown_path, int max_order,
+                      vigen_error *err)
 {
     int slot = -1;
     char *tmp = temp_file(text, &slot);
@@ -96,35 +98,54 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     vigen_check_options opt;
     vigen_check_options_init(&opt);
     opt.path = shown_path;
-    if (order + 1 > opt.max_order) opt.max_order = order + 1 <= VIGEN_TREE_MAX_ORDER ? order + 1 : VIGEN_TREE_MAX_ORDER;
-    vigen_check_report rep;
-    vigen_check_report_init(&rep);
-    rc = vigen_check_tableau(&rep, &t, NULL, &opt, err);
-    if (rc == VIGEN_OK) {
-        int at_least = 0, undecided = 0;
-        sol->order = vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided);
-        if (at_least || undecided) sol->order = -1;
-        int sl = 0, su = 0;
-        sol->order_separable = vigen_check_certified_order(&rep, VIGEN_CHECK_SEPARABLE, &sl, &su);
-        if (sl || su) sol->order_separable = -1;
-        const vigen_check_error_constant *ec = &rep.error_constant[VIGEN_CHECK_EC_GENERAL];
-        if (ec->available) {
-            sol->error_constant = ball_text(ec->value);
-            sol->error_constant_d = arf_get_d(arb_midref(ec->value), ARF_RND_NEAR);
-        }
-        if (rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].available)
-            sol->error_constant_sep = ball_text(rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].value);
-        sol->force = (long)rep.cost.force;
-        sol->certified = rep.exit_code == 0 && rep.claim_order_status == VIGEN_CHECK_YES &&
-                         rep.claim_symplectic_status == VIGEN_CHECK_YES;
-        if (!sol->certified)
-            sol->why = vigen_strdup_printf("the checker does not certify the claims (order %d%s, symplectic %s)",
-                                           sol->order, sol->order < 0 ? ": undecided" : "",
-                                           rep.claim_symplectic_status == VIGEN_CHECK_YES ? "yes" : "not certified");
-    }
-    vigen_check_report_clear(&rep);
+    opt.max_order = max_order <= VIGEN_TREE_MAX_ORDER ? max_order : VIGEN_TREE_MAX_ORDER;
+    vigen_check_report_init(rep);
+    rc = vigen_check_tableau(rep, &t, NULL, &opt, err);
+    if (rc != VIGEN_OK) vigen_check_report_clear(rep);
     vigen_tableau_clear(&t);
     return rc;
+}
+
+int vigen_design_method_check(vigen_design_solution *sol, const char *text, const char *shown_path, int order,
+                              vigen_error *err)
+{
+    vigen_check_report rep;
+    int rc = load_check(&rep, text, shown_path, order + 1 > 8 ? order + 1 : 8, err);
+    if (rc != VIGEN_OK) return rc;
+    int at_least = 0, undecided = 0;
+    sol->order = vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided);
+    if (at_least || undecided) sol->order = -1;
+    int sl = 0, su = 0;
+    sol->order_separable = vigen_check_certified_order(&rep, VIGEN_CHECK_SEPARABLE, &sl, &su);
+    if (sl || su) sol->order_separable = -1;
+    const vigen_check_error_constant *ec = &rep.error_constant[VIGEN_CHECK_EC_GENERAL];
+    if (ec->available) {
+        sol->error_constant = ball_text(ec->value);
+        sol->error_constant_d = arf_get_d(arb_midref(ec->value), ARF_RND_NEAR);
+    }
+    if (rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].available)
+        sol->error_constant_sep = ball_text(rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].value);
+    sol->force = (long)rep.cost.force;
+    sol->certified = rep.exit_code == 0 && rep.claim_order_status == VIGEN_CHECK_YES &&
+                     rep.claim_symplectic_status == VIGEN_CHECK_YES;
+    if (!sol->certified)
+        sol->why = vigen_strdup_printf("the checker does not certify the claims (order %d%s, symplectic %s)",
+                                       sol->order, sol->order < 0 ? ": undecided" : "",
+                                       rep.claim_symplectic_status == VIGEN_CHECK_YES ? "yes" : "not certified");
+    vigen_check_report_clear(&rep);
+    return VIGEN_OK;
+}
+
+int vigen_design_method_error_constant(double *ec, const char *text, int order, int family, vigen_error *err)
+{
+    vigen_check_report rep;
+    *ec = -1;
+    int rc = load_check(&rep, text, "(candidate)", order + 1, err);
+    if (rc != VIGEN_OK) return rc;
+    const vigen_check_error_constant *e = &rep.error_constant[family];
+    if (e->available && e->order == order) *ec = arf_get_d(arb_midref(e->value), ARF_RND_NEAR);
+    vigen_check_report_clear(&rep);
+    return VIGEN_OK;
 }
 
 int vigen_design_write(const vigen_design_result *res, vigen_error *err)

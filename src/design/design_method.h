@@ -19,4 +19,9 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
 int vigen_design_method_check(vigen_design_solution *sol, const char *text, const char *shown_path, int order,
                               vigen_error *err);
 
+/* The checker's principal error constant (family VIGEN_CHECK_EC_*) of the
+ * composition file text, of order `order`: its midpoint into *ec, or -1
+ * when the checker does not find that order (the objective of minimize). */
+int vigen_design_method_error_constant(double *ec, const char *text, int order, int family, vigen_error *err);
+
 #endif

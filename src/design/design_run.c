@@ -8,6 +8,7 @@
 #include <string.h>
 #include "design/design_internal.h"
 #include "design/design_method.h"
+#include "design/design_minimize.h"
 #include "core/decimal.h"
 #include "vigen/check.h"
 #include "vigen/library.h"
@@ -209,6 +210,60 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
     return VIGEN_OK;
 }
 
+/* minimize among finitely many solutions: only the certified one with the
+ * smallest error constant keeps its file. */
+static void keep_best(vigen_design_result *res)
+{
+    slong best = -1;
+    for (slong i = 0; i < res->nsol; i++)
+        if (res->sol[i].certified && res->sol[i].error_constant &&
+            (best < 0 || res->sol[i].error_constant_d < res->sol[best].error_constant_d))
+            best = i;
+    for (slong i = 0; i < res->nsol; i++)
+        if (i != best && res->sol[i].file) {
+            free(res->sol[i].file);
+            res->sol[i].file = NULL;
+            if (res->sol[i].why == NULL) res->sol[i].why = vigen_strdup("not written: a smaller error constant exists");
+        }
+}
+
+/* The family has free parameters (or one asks the best of finitely many):
+ * the best point found by design_minimize, proved and certified. */
+static int minimize(vigen_design_result *res, design_system *sys, slong *rows, slong m, const vigen_design_spec *d,
+                    const vigen_design_options *opt, const char *base, vigen_error *err)
+{
+    slong k = sys->k;
+    double *x = malloc((size_t)k * sizeof(double)), ec = 0;
+    slong nminima = 0;
+    long evals = 0;
+    int found = design_minimize(x, &ec, &nminima, &evals, sys, rows, m, d, base, START_BOX);
+    res->starts = d->starts;
+    res->nfound = nminima;
+    res->bezout = -1;
+    res->minimized = 1;
+    res->nfree = k - m;
+    res->evaluations = evals;
+    int rc = VIGEN_OK;
+    if (found) {
+        res->sol = calloc(1, sizeof *res->sol);
+        res->nsol = 1;
+        res->sol[0].nunknowns = k;
+        res->sol[0].order = res->sol[0].order_separable = -1;
+        res->sol[0].x = x;
+        x = NULL;
+        settle(&res->sol[0], sys, rows, k, opt);
+        char *how = vigen_strdup_printf(
+            "the %ld order conditions (polynomials in the steps, from the BCH series of the composition) leave %ld "
+            "free; these were chosen by Nelder-Mead minimising the checker's %s from %ld starts (%ld local minima, "
+            "this the best found, not proved global), held exactly, and the others proved by the Krawczyk operator",
+            (long)res->nconditions, (long)(k - m), d->minimize, (long)d->starts, (long)nminima);
+        rc = certify_all(res, d, opt, base, how, err);
+        free(how);
+    }
+    free(x);
+    return rc;
+}
+
 int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const vigen_design_options *opt,
                      vigen_error *err)
 {
@@ -256,8 +311,7 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
                              "free (a family, not finitely many solutions); ask minimize = \"error_constant\" or "
                              "order = %d", d->path, (long)sys.n, (long)(k - m), (long)k, d->order + 2);
     } else if (m < k) {
-        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: not available yet for families with free "
-                             "parameters (%ld free)", d->path, (long)(k - m));
+        rc = minimize(res, &sys, rows, m, d, opt, base, err);
     } else {
         res->bezout = bezout_bound(&sys, rows, m);
         double *roots = NULL;
@@ -282,6 +336,7 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
             (long)d->starts, (long)m);
         if (rc == VIGEN_OK) rc = certify_all(res, d, opt, base, how, err);
         free(how);
+        if (rc == VIGEN_OK && d->goal == VIGEN_DESIGN_MINIMIZE) keep_best(res);
     }
     free(rows);
     design_system_clear(&sys);

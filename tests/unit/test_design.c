@@ -20,6 +20,10 @@
  *    digits are off by up to 1.2e-14, docs/design.md);
  *  - order 6 from 5 symmetric stages has no solution (McLachlan 1995: the
  *    minimal symmetric sixth-order composition has 7 stages);
+ *  - minimize on the 5-stage symmetric order-4 family: Suzuki's fractal
+ *    composition (Phys. Lett. A 146 (1990) 319) is a member, so the best
+ *    point found has an error constant no larger than the checker's on the
+ *    library's suzuki_4;
  *  - the Krawczyk test refuses a box that holds no root: the triple jump
  *    moved by 1e-10 with a box of radius 1e-20, and a point far from every
  *    root.
@@ -29,6 +33,7 @@
 #include <string.h>
 #include "design/design_internal.h"
 #include "core/decimal.h"
+#include "vigen/check.h"
 #include "vigen/design.h"
 #include "vigen/library.h"
 #include "vigen/method.h"
@@ -199,6 +204,35 @@ static void test_no_solution(void)
     vigen_design_result_clear(&res);
 }
 
+static void test_minimize(void)
+{
+    vigen_design_result res;
+    run(&res, "s5_minimize.lua", 40);
+    CHECK(res.minimized && res.nfree == 1 && res.nsol == 1);
+    vigen_tableau t;
+    vigen_error err;
+    vigen_error_init(&err);
+    char *path = NULL;
+    CHECK(vigen_library_resolve(&path, "suzuki_4", &err) == VIGEN_OK);
+    CHECK(vigen_source_load(&t, path, 34, &err) == VIGEN_OK);
+    vigen_check_options opt;
+    vigen_check_options_init(&opt);
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    CHECK(vigen_check_tableau(&rep, &t, NULL, &opt, &err) == VIGEN_OK);
+    CHECK(rep.error_constant[VIGEN_CHECK_EC_GENERAL].available);
+    double suzuki = arf_get_d(arb_midref(rep.error_constant[VIGEN_CHECK_EC_GENERAL].value), ARF_RND_NEAR);
+    if (res.nsol == 1) {
+        const vigen_design_solution *s = &res.sol[0];
+        CHECK(s->proved && s->certified && s->order == 4);
+        CHECK_MSG(s->error_constant_d <= suzuki, "%g > Suzuki's %g", s->error_constant_d, suzuki);
+    }
+    vigen_check_report_clear(&rep);
+    vigen_tableau_clear(&t);
+    free(path);
+    vigen_design_result_clear(&res);
+}
+
 static void test_krawczyk_refuses(void)
 {
     vigen_error err;
@@ -245,5 +279,6 @@ int main(void)
     test_triple_jump();
     test_yoshida6();
     test_no_solution();
+    test_minimize();
     TEST_MAIN_END();
 }
