@@ -2,4 +2,4 @@
 -- chosen to minimise the checker's error constant (general H).  Suzuki's
 -- fractal composition (gamma_1 = gamma_2 = 1/(4 - 4^(1/3))) is a member.
 return { name = "s5", design = "composition", base = "stormer_verlet_position",
-         stages = 5, order = 4, symmetric = true, minimize = "error_constant", starts = 3 }
+         stages = 5, order = 4, symmetric = true, minimize = "error_constant" }
