@@ -60,6 +60,7 @@ typedef struct {
     char *radius;                /* the largest radius of the proving box, as a decimal */
     int order;                   /* certified order for general H (-1 unknown) */
     int order_separable;         /* ... for separable H */
+    int order_nystrom;           /* ... for Nystrom H */
     char *error_constant;        /* the checker's principal error constant, general H (text) */
     char *error_constant_sep;    /* ... separable H */
     double error_constant_d;

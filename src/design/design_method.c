@@ -17,7 +17,7 @@
 #include "support/strbuf.h"
 
 char *vigen_design_method_text(const vigen_design_spec *d, const char *base, const char *name, slong index,
-                               slong count, char *const *gamma, const char *how)
+                               slong count, char *const *gamma, const char *how, int order_sep, int order_nys)
 {
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
@@ -26,7 +26,10 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
     vigen_strbuf_printf(&sb, "-- Found by vigen design from %s (solution %ld of %ld): %s\n", d->path, (long)index,
                         (long)count, how);
     vigen_strbuf_append(&sb, "-- Every digit is certified: the exact step lies within half a unit of the last digit.\n");
-    vigen_strbuf_printf(&sb, "return {\n  name = \"%s\",\n  order = %d,\n  symplectic = true,\n", name, d->order);
+    vigen_strbuf_printf(&sb, "return {\n  name = \"%s\",\n  order = %d,\n", name, d->order);
+    if (order_sep >= 0) vigen_strbuf_printf(&sb, "  order_separable = %d,\n", order_sep);
+    if (order_nys >= 0) vigen_strbuf_printf(&sb, "  order_nystrom = %d,\n", order_nys);
+    vigen_strbuf_append(&sb, "  symplectic = true,\n");
     vigen_strbuf_printf(&sb, "  source = \"vigen design %s, solution %ld of %ld\",\n", d->path, (long)index,
                         (long)count);
     vigen_strbuf_printf(&sb, "  description = \"A %d-stage %scomposition of %s of order %d, steps gamma_i h; a root "
@@ -118,6 +121,8 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     int sl = 0, su = 0;
     sol->order_separable = vigen_check_certified_order(&rep, VIGEN_CHECK_SEPARABLE, &sl, &su);
     if (sl || su) sol->order_separable = -1;
+    sol->order_nystrom = vigen_check_certified_order(&rep, VIGEN_CHECK_NYSTROM, &sl, &su);
+    if (sl || su) sol->order_nystrom = -1;
     const vigen_check_error_constant *ec = &rep.error_constant[VIGEN_CHECK_EC_GENERAL];
     if (ec->available) {
         sol->error_constant = ball_text(ec->value);
@@ -126,8 +131,12 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     if (rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].available)
         sol->error_constant_sep = ball_text(rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].value);
     sol->force = (long)rep.cost.force;
+    /* the claims the text states hold, every one (the family orders only
+     * when the text states them) */
     sol->certified = rep.exit_code == 0 && rep.claim_order_status == VIGEN_CHECK_YES &&
                      rep.claim_symplectic_status == VIGEN_CHECK_YES;
+    for (int f = 0; f < 2; f++)
+        if (rep.claim_order_family[f] >= 0 && rep.claim_order_family_status[f] != VIGEN_CHECK_YES) sol->certified = 0;
     if (!sol->certified)
         sol->why = vigen_strdup_printf("the checker does not certify the claims (order %d%s, symplectic %s)",
                                        sol->order, sol->order < 0 ? ": undecided" : "",

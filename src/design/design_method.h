@@ -8,9 +8,10 @@
 
 /* The composition file of solution index (1-based) of count: base as the
  * file names it, the steps gamma[0 .. stages-1] as certified decimals, claims
- * order = d->order and symplectic = true, how in its comment.  Heap string. */
+ * order = d->order, order_separable and order_nystrom (when >= 0) and
+ * symplectic = true, how in its comment.  Heap string. */
 char *vigen_design_method_text(const vigen_design_spec *d, const char *base, const char *name, slong index,
-                               slong count, char *const *gamma, const char *how);
+                               slong count, char *const *gamma, const char *how, int order_sep, int order_nys);
 
 /* Checks text as the composition file it is (shown_path in messages; order
  * the order claimed): sets sol->order, order_separable, error constants,

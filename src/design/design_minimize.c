@@ -94,7 +94,7 @@ static double value(const gsl_vector *t, void *param)
         if (ok) {
             for (int s = 0; s < o->d->stages; s++)
                 gamma[s] = digits[design_stage_unknown(s, o->d->stages, o->d->symmetric)];
-            char *text = vigen_design_method_text(o->d, o->base, "candidate", 1, 1, gamma, "a candidate");
+            char *text = vigen_design_method_text(o->d, o->base, "candidate", 1, 1, gamma, "a candidate", -1, -1);
             vigen_error err;
             vigen_error_init(&err);
             double e = -1;
