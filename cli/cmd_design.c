@@ -8,10 +8,15 @@
 
 static void print_header(const vigen_design_spec *d, const vigen_design_result *res)
 {
-    char *base = vigen_printable(d->base);
-    printf("design %s: %d-stage %scomposition of %s (order %d), order %d\n", d->name, d->stages,
-           d->symmetric ? "symmetric " : "", base, res->base_order, d->order);
-    free(base);
+    if (d->base) {
+        char *base = vigen_printable(d->base);
+        printf("design %s: %d-stage %scomposition of %s (order %d), order %d\n", d->name, d->stages,
+               d->symmetric ? "symmetric " : "", base, res->base_order, d->order);
+        free(base);
+    } else {
+        printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for separable H\n", d->name,
+               d->symmetric ? "symmetric " : "", d->stages, d->order);
+    }
     printf("conditions  %ld in %ld unknowns (coefficients of the Lyndon words of the BCH series):", (long)res->nconditions,
            (long)res->nunknowns);
     for (slong i = 0; i < res->nconditions; i++) printf("%s [%s]", i ? "," : "", res->conditions[i]);
@@ -37,7 +42,8 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
 
 static void print_table(const vigen_design_result *res)
 {
-    printf("%-4s %-13s %-6s %-14s %-6s %s\n", "k", "status", "order", "error const", "force", "file");
+    printf("%-4s %-13s %-6s %-12s %-12s %-6s %s\n", "k", "status", "order", "error const", "separable", "force",
+           "file");
     for (slong i = 0; i < res->nsol; i++) {
         const vigen_design_solution *s = &res->sol[i];
         const char *status = s->certified ? "certified" : s->excluded ? "excluded" : s->proved ? "not certified"
@@ -46,8 +52,9 @@ static void print_table(const vigen_design_result *res)
         if (s->order >= 0) snprintf(order, sizeof order, "%d", s->order);
         char force[24] = "-";
         if (s->certified) snprintf(force, sizeof force, "%ld", s->force);
-        printf("%-4ld %-13s %-6s %-14s %-6s %s\n", (long)(i + 1), status, order,
-               s->error_constant ? s->error_constant : "-", force, s->certified && s->file ? s->file : "-");
+        printf("%-4ld %-13s %-6s %-12s %-12s %-6s %s\n", (long)(i + 1), status, order,
+               s->error_constant ? s->error_constant : "-", s->error_constant_sep ? s->error_constant_sep : "-", force,
+               s->certified && s->file ? s->file : "-");
         printf("     x =");
         for (slong j = 0; j < s->nunknowns; j++)
             printf(" %s", s->proved && s->digits && s->digits[j] ? s->digits[j] : "");

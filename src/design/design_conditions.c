@@ -37,6 +37,7 @@ typedef struct {
     int *len, *weight;
     int nletters;
     int letter_weight[MAX_LETTERS];
+    int named;                   /* the letters are A, B (a splitting), not Y_weight */
     slong *cat;                  /* cat[a*n + b]: the word a b, or -1 (weight > p) */
 } words;
 
@@ -61,13 +62,22 @@ static void words_add(words *w, const int *l, int len, int weight)
     w->n++;
 }
 
-/* Every word of weight <= p, by extending the words in order (breadth
- * first: a word's prefixes come before it). */
-static void words_init(words *w, int q, int p, int with_cat)
+/* The letters of a symmetric base of order q: Y1, Y_(q+1), Y_(q+3), ...
+ * of weight at most p. */
+static int base_letters(int *weight, int q, int p)
+{
+    int n = 0;
+    weight[n++] = 1;
+    for (int d = q + 1; d <= p && n < MAX_LETTERS; d += 2) weight[n++] = d;
+    return n;
+}
+
+/* Every word of weight <= p in the letters of these weights, by extending
+ * the words in order (breadth first: a word's prefixes come before it). */
+static void words_init(words *w, const int *letter_weight, int nletters, int p, int with_cat)
 {
     memset(w, 0, sizeof *w);
-    w->letter_weight[w->nletters++] = 1;
-    for (int d = q + 1; d <= p && w->nletters < MAX_LETTERS; d += 2) w->letter_weight[w->nletters++] = d;
+    for (int a = 0; a < nletters; a++) w->letter_weight[w->nletters++] = letter_weight[a];
     int none[1] = {0};
     words_add(w, none, 0, 0);
     for (slong i = 0; i < w->n; i++)
@@ -117,15 +127,27 @@ static int is_lyndon(const int *l, int len)
     return 1;
 }
 
-slong design_composition_count(int symmetric, int q, int p)
+static slong count(const int *weight, int nletters, int symmetric, int p)
 {
     words w;
-    words_init(&w, q, p, 0);
+    words_init(&w, weight, nletters, p, 0);
     slong n = 0;
     for (slong i = 1; i < w.n; i++)
         if (is_lyndon(w.letters[i], w.len[i]) && (!symmetric || w.weight[i] % 2 == 1)) n++;
     words_clear(&w);
     return n;
+}
+
+slong design_composition_count(int symmetric, int q, int p)
+{
+    int weight[MAX_LETTERS];
+    return count(weight, base_letters(weight, q, p), symmetric, p);
+}
+
+slong design_splitting_count(int symmetric, int p)
+{
+    static const int weight[2] = {1, 1};
+    return count(weight, 2, symmetric, p);
 }
 
 slong design_stage_unknown(slong i, int stages, int symmetric)
@@ -238,32 +260,39 @@ static char *word_text(const words *w, slong i)
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
     for (int j = 0; j < w->len[i]; j++)
-        vigen_strbuf_printf(&sb, "%sY%d", j ? " " : "", w->letter_weight[w->letters[i][j]]);
+        if (w->named) vigen_strbuf_printf(&sb, "%s%c", j ? " " : "", 'A' + w->letters[i][j]);
+        else vigen_strbuf_printf(&sb, "%sY%d", j ? " " : "", w->letter_weight[w->letters[i][j]]);
     return sb.data;
 }
 
-int design_composition_conditions(design_system *sys, int stages, int symmetric, int q, int p, vigen_error *err)
+/* One factor of the product: exp(sum over letters a of x[var[a]]^pow[a] a)
+ * (var[a] < 0: the letter is absent). */
+typedef struct {
+    slong var[MAX_LETTERS];
+    int pow[MAX_LETTERS];
+} factor;
+
+/* The conditions of the product of the factors (applied in order) against
+ * the target sum of the letters target[a] = 1: the Lyndon coefficients of the
+ * logarithm minus the target's, those identically zero dropped. */
+static int build(design_system *sys, const int *letter_weight, int nletters, int named, const factor *f, slong nf,
+                 const int *target, slong k, int p)
 {
-    memset(sys, 0, sizeof *sys);
-    if (p > VIGEN_DESIGN_MAX_ORDER || p < 1 || q < 2 || q % 2)
-        return vigen_error_set(err, VIGEN_E_USAGE, "order %d with a base of order %d is outside what design handles",
-                               p, q);
-    slong k = symmetric ? (stages + 1) / 2 : stages;
     words w;
-    words_init(&w, q, p, 1);
+    words_init(&w, letter_weight, nletters, p, 1);
+    w.named = named;
     fmpq_mpoly_ctx_t ctx;
     fmpq_mpoly_ctx_init(ctx, k, ORD_LEX);
     elem prod = elem_new(&w, ctx), x = elem_new(&w, ctx), e = elem_new(&w, ctx), t = elem_new(&w, ctx);
     fmpq_mpoly_one(prod + 0, ctx);
-    for (slong i = 0; i < stages; i++) {
+    for (slong i = 0; i < nf; i++) {
         for (slong j = 0; j < w.n; j++) fmpq_mpoly_zero(x + j, ctx);
-        slong var = design_stage_unknown(i, stages, symmetric);
         for (int a = 0; a < w.nletters; a++) {
             int one[1] = {a};
             slong at = word_find(&w, one, 1);
-            if (at < 0) continue;
-            fmpq_mpoly_gen(x + at, var, ctx);
-            fmpq_mpoly_pow_ui(x + at, x + at, (ulong)w.letter_weight[a], ctx);
+            if (at < 0 || f[i].var[a] < 0) continue;
+            fmpq_mpoly_gen(x + at, f[i].var[a], ctx);
+            fmpq_mpoly_pow_ui(x + at, x + at, (ulong)f[i].pow[a], ctx);
         }
         elem_series(e, x, 0, p, &w, ctx);
         elem_mul(t, prod, e, &w, ctx);
@@ -273,13 +302,15 @@ int design_composition_conditions(design_system *sys, int stages, int symmetric,
     }
     fmpq_mpoly_zero(prod + 0, ctx);   /* log(1 + Z) with Z = prod - 1 */
     elem_series(e, prod, 1, p, &w, ctx);
-    int ylet[1] = {0};
-    slong y1 = word_find(&w, ylet, 1);
     fmpq_mpoly_t one, dm;
     fmpq_mpoly_init(one, ctx);
     fmpq_mpoly_init(dm, ctx);
     fmpq_mpoly_one(one, ctx);
-    fmpq_mpoly_sub(e + y1, e + y1, one, ctx);
+    for (int a = 0; a < w.nletters; a++) {
+        int l[1] = {a};
+        slong at = word_find(&w, l, 1);
+        if (at >= 0 && target[a]) fmpq_mpoly_sub(e + at, e + at, one, ctx);
+    }
     sys->k = k;
     sys->cond = calloc((size_t)w.n, sizeof(design_poly));
     sys->dcond = calloc((size_t)(w.n * k), sizeof(design_poly));
@@ -305,4 +336,55 @@ int design_composition_conditions(design_system *sys, int stages, int symmetric,
     fmpq_mpoly_ctx_clear(ctx);
     words_clear(&w);
     return VIGEN_OK;
+}
+
+int design_composition_conditions(design_system *sys, int stages, int symmetric, int q, int p, vigen_error *err)
+{
+    memset(sys, 0, sizeof *sys);
+    if (p > VIGEN_DESIGN_MAX_ORDER || p < 1 || q < 2 || q % 2)
+        return vigen_error_set(err, VIGEN_E_USAGE, "order %d with a base of order %d is outside what design handles",
+                               p, q);
+    int weight[MAX_LETTERS], target[MAX_LETTERS] = {1};
+    int nletters = base_letters(weight, q, p);
+    factor *f = calloc((size_t)stages, sizeof *f);
+    for (int i = 0; i < stages; i++)
+        for (int a = 0; a < nletters; a++) {
+            f[i].var[a] = design_stage_unknown(i, stages, symmetric);
+            f[i].pow[a] = weight[a];
+        }
+    int rc = build(sys, weight, nletters, 0, f, stages, target, symmetric ? (stages + 1) / 2 : stages, p);
+    free(f);
+    return rc;
+}
+
+slong design_splitting_unknowns(int kicks, int symmetric)
+{
+    return symmetric ? (kicks + 2) / 2 + (kicks + 1) / 2 : 2 * kicks + 1;
+}
+
+slong design_substep_unknown(slong i, int kicks, int symmetric)
+{
+    slong n = 2 * kicks + 1;                 /* drift, kick, ..., kick, drift */
+    if (symmetric && i > n - 1 - i) i = n - 1 - i;
+    slong drifts = symmetric ? (kicks + 2) / 2 : kicks + 1;
+    return i % 2 == 0 ? i / 2 : drifts + i / 2;
+}
+
+int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, vigen_error *err)
+{
+    memset(sys, 0, sizeof *sys);
+    if (p > VIGEN_DESIGN_MAX_ORDER || p < 1)
+        return vigen_error_set(err, VIGEN_E_USAGE, "order %d is outside what design handles", p);
+    static const int weight[2] = {1, 1}, target[2] = {1, 1};
+    slong n = 2 * kicks + 1;
+    factor *f = calloc((size_t)n, sizeof *f);
+    for (slong i = 0; i < n; i++) {
+        int letter = (int)(i % 2);           /* A (drift) on even substeps, B (kick) on odd */
+        f[i].var[letter] = design_substep_unknown(i, kicks, symmetric);
+        f[i].var[1 - letter] = -1;
+        f[i].pow[letter] = 1;
+    }
+    int rc = build(sys, weight, 2, 1, f, n, target, design_splitting_unknowns(kicks, symmetric), p);
+    free(f);
+    return rc;
 }

@@ -88,10 +88,14 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
                                        "files written, NAME_k.lua)", path);
     }
     if (rc == VIGEN_OK) rc = read_string(&d->family, L, "design", 1, path, err);
-    if (rc == VIGEN_OK && strcmp(d->family, "composition") != 0)
-        return vigen_error_set(err, VIGEN_E_SPEC, "%s: design: unknown family '%s' (families: composition)", path,
-                               d->family);
-    if (rc == VIGEN_OK) rc = read_string(&d->base, L, "base", 1, path, err);
+    if (rc == VIGEN_OK && strcmp(d->family, "composition") != 0 && strcmp(d->family, "splitting") != 0)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: design: unknown family '%s' (families: composition, "
+                               "splitting)", path, d->family);
+    int splitting = rc == VIGEN_OK && strcmp(d->family, "splitting") == 0;
+    if (rc == VIGEN_OK) rc = read_string(&d->base, L, "base", !splitting, path, err);
+    if (rc == VIGEN_OK && splitting && d->base)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: base: a splitting has no base (its kicks and drifts are the "
+                               "unknowns; stages is the number of kicks)", path);
     long v = 0;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "stages", 1, 0, 1, MAX_DESIGN_STAGES, path, err)) == VIGEN_OK)
         d->stages = (int)v;

@@ -50,6 +50,29 @@ int design_composition_conditions(design_system *sys, int stages, int symmetric,
  * alphabet, counted without building the polynomials: cheap for any p). */
 slong design_composition_count(int symmetric, int q, int p);
 
+/* The conditions for order p (separable H = T(p) + V(q)) of the splitting
+ * drift a_1, kick b_1, drift a_2, ..., kick b_s, drift a_(s+1) (s kicks):
+ * the Lyndon words in A (drifts) and B (kicks) of the logarithm of the
+ * product of exp(a_i h A) and exp(b_i h B), against h (A + B); symmetric:
+ * the substeps read the same backwards.  Unknowns: the distinct drifts, then
+ * the distinct kicks; substep i (0-based, drift on even i) is unknown
+ * design_substep_unknown(i). */
+int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, vigen_error *err);
+slong design_splitting_count(int symmetric, int p);
+slong design_splitting_unknowns(int kicks, int symmetric);
+slong design_substep_unknown(slong i, int kicks, int symmetric);
+
+/* The family of d (design_family.c): 1 for "splitting"; its unknowns; the
+ * steps of the method written (stages of a composition, substeps of a
+ * splitting) and the unknown each one is; its conditions for order
+ * d->order (q: the base's order, compositions), counted or built. */
+int design_family_is_splitting(const vigen_design_spec *d);
+slong design_family_unknowns(const vigen_design_spec *d);
+slong design_family_nvalues(const vigen_design_spec *d);
+slong design_family_value_unknown(const vigen_design_spec *d, slong i);
+slong design_family_count(const vigen_design_spec *d, int q);
+int design_family_conditions(design_system *sys, const vigen_design_spec *d, int q, vigen_error *err);
+
 /* The unknown each stage's step is: gamma_i = x[design_stage_unknown(i)]. */
 slong design_stage_unknown(slong i, int stages, int symmetric);
 

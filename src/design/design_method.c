@@ -17,27 +17,39 @@
 #include "support/strbuf.h"
 
 char *vigen_design_method_text(const vigen_design_spec *d, const char *base, const char *name, slong index,
-                               slong count, char *const *gamma, const char *how, int order_sep, int order_nys)
+                               slong count, char *const *values, const char *how, const int claims[3])
 {
+    int splitting = d->base == NULL;
+    char *what = splitting ? vigen_strdup_printf("a %ssplitting with %d kicks", d->symmetric ? "symmetric " : "",
+                                                 d->stages)
+                           : vigen_strdup_printf("a %d-stage %scomposition of %s", d->stages,
+                                                 d->symmetric ? "symmetric " : "", base);
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
-    vigen_strbuf_printf(&sb, "-- %s: a %d-stage %scomposition of %s, order %d.\n", name, d->stages,
-                        d->symmetric ? "symmetric " : "", base, d->order);
+    vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, splitting ? " for separable H" : "");
     vigen_strbuf_printf(&sb, "-- Found by vigen design from %s (solution %ld of %ld): %s\n", d->path, (long)index,
                         (long)count, how);
     vigen_strbuf_append(&sb, "-- Every digit is certified: the exact step lies within half a unit of the last digit.\n");
-    vigen_strbuf_printf(&sb, "return {\n  name = \"%s\",\n  order = %d,\n", name, d->order);
-    if (order_sep >= 0) vigen_strbuf_printf(&sb, "  order_separable = %d,\n", order_sep);
-    if (order_nys >= 0) vigen_strbuf_printf(&sb, "  order_nystrom = %d,\n", order_nys);
+    vigen_strbuf_printf(&sb, "return {\n  name = \"%s\",\n", name);
+    static const char *const claim_names[3] = {"order", "order_separable", "order_nystrom"};
+    for (int c = 0; c < 3; c++)
+        if (claims[c] >= 0) vigen_strbuf_printf(&sb, "  %s = %d,\n", claim_names[c], claims[c]);
     vigen_strbuf_append(&sb, "  symplectic = true,\n");
     vigen_strbuf_printf(&sb, "  source = \"vigen design %s, solution %ld of %ld\",\n", d->path, (long)index,
                         (long)count);
-    vigen_strbuf_printf(&sb, "  description = \"A %d-stage %scomposition of %s of order %d, steps gamma_i h; a root "
-                        "of the order conditions proved to exist by the Krawczyk operator.\",\n", d->stages,
-                        d->symmetric ? "symmetric " : "", base, d->order);
-    vigen_strbuf_printf(&sb, "  composition = {\n    base = \"%s\",\n    gamma = {\n", base);
-    for (int i = 0; i < d->stages; i++) vigen_strbuf_printf(&sb, "      \"%s\",\n", gamma[i]);
-    vigen_strbuf_append(&sb, "    },\n  },\n}\n");
+    vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist by "
+                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, splitting ? " for separable H" : "");
+    if (splitting) {
+        vigen_strbuf_append(&sb, "  splitting = {\n");
+        for (int i = 0; i < 2 * d->stages + 1; i++)
+            vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? "kick" : "drift", values[i]);
+        vigen_strbuf_append(&sb, "  },\n}\n");
+    } else {
+        vigen_strbuf_printf(&sb, "  composition = {\n    base = \"%s\",\n    gamma = {\n", base);
+        for (int i = 0; i < d->stages; i++) vigen_strbuf_printf(&sb, "      \"%s\",\n", values[i]);
+        vigen_strbuf_append(&sb, "    },\n  },\n}\n");
+    }
+    free(what);
     return sb.data;
 }
 
@@ -133,8 +145,8 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     sol->force = (long)rep.cost.force;
     /* the claims the text states hold, every one (the family orders only
      * when the text states them) */
-    sol->certified = rep.exit_code == 0 && rep.claim_order_status == VIGEN_CHECK_YES &&
-                     rep.claim_symplectic_status == VIGEN_CHECK_YES;
+    sol->certified = rep.exit_code == 0 && rep.claim_symplectic_status == VIGEN_CHECK_YES &&
+                     (rep.claim_order < 0 || rep.claim_order_status == VIGEN_CHECK_YES);
     for (int f = 0; f < 2; f++)
         if (rep.claim_order_family[f] >= 0 && rep.claim_order_family_status[f] != VIGEN_CHECK_YES) sol->certified = 0;
     if (!sol->certified)

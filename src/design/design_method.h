@@ -6,14 +6,16 @@
 #include <arb.h>
 #include "vigen/design.h"
 
-/* The composition file of solution index (1-based) of count: base as the
- * file names it, the steps gamma[0 .. stages-1] as certified decimals, claims
- * order = d->order, order_separable and order_nystrom (when >= 0) and
+/* The method file of solution index (1-based) of count: a composition of
+ * base (as the file names it; NULL: a splitting, d->base NULL) with the
+ * steps values[0 .. n-1] as certified decimals (the stages of a composition,
+ * the substeps drift, kick, ..., drift of a splitting), the claims order,
+ * order_separable, order_nystrom of claims[0..2] (each when >= 0) and
  * symplectic = true, how in its comment.  Heap string. */
 char *vigen_design_method_text(const vigen_design_spec *d, const char *base, const char *name, slong index,
-                               slong count, char *const *gamma, const char *how, int order_sep, int order_nys);
+                               slong count, char *const *values, const char *how, const int claims[3]);
 
-/* Checks text as the composition file it is (shown_path in messages; order
+/* Checks text as the method file it is (shown_path in messages; order
  * the order claimed): sets sol->order, order_separable, error constants,
  * force, and sol->certified when the checker certifies every claim (else
  * sol->why).  An error only when the file cannot be loaded or checked. */

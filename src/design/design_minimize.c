@@ -88,13 +88,14 @@ static double value(const gsl_vector *t, void *param)
     arb_ptr box = _arb_vec_init(k);
     if (design_newton_polish(x, o->sys, o->rows, 30) &&
         design_krawczyk_prove(box, o->sys, o->rows, x, TRIAL_PREC)) {
-        char **digits = calloc((size_t)k, sizeof(char *)), **gamma = malloc((size_t)o->d->stages * sizeof(char *));
+        slong nv = design_family_nvalues(o->d);
+        char **digits = calloc((size_t)k, sizeof(char *)), **gamma = malloc((size_t)nv * sizeof(char *));
         int ok = 1;
         for (slong j = 0; j < k; j++) ok &= (digits[j] = vigen_decimal_format(box + j, TRIAL_DIGITS)) != NULL;
         if (ok) {
-            for (int s = 0; s < o->d->stages; s++)
-                gamma[s] = digits[design_stage_unknown(s, o->d->stages, o->d->symmetric)];
-            char *text = vigen_design_method_text(o->d, o->base, "candidate", 1, 1, gamma, "a candidate", -1, -1);
+            for (slong s = 0; s < nv; s++) gamma[s] = digits[design_family_value_unknown(o->d, s)];
+            const int claims[3] = {-1, -1, -1};
+            char *text = vigen_design_method_text(o->d, o->base, "candidate", 1, 1, gamma, "a candidate", claims);
             vigen_error err;
             vigen_error_init(&err);
             double e = -1;

@@ -199,19 +199,26 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
         index++;
         char *name = vigen_strdup_printf("%s_%ld", d->name, (long)index);
         s->file = vigen_strdup_printf("%s/%s.lua", opt->outdir, name);
-        char **gamma = malloc((size_t)d->stages * sizeof(char *));
-        for (int st = 0; st < d->stages; st++) gamma[st] = s->digits[design_stage_unknown(st, d->stages, d->symmetric)];
-        /* first the claims order and symplectic, then also the orders the
-         * checker certified for separable and Nystrom H, checked again */
-        s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, -1, -1);
+        slong nv = design_family_nvalues(d);
+        char **gamma = malloc((size_t)nv * sizeof(char *));
+        for (slong st = 0; st < nv; st++) gamma[st] = s->digits[design_family_value_unknown(d, st)];
+        /* first the claims of the order asked for (general H for a
+         * composition, separable H for a splitting) and symplectic, then also
+         * the orders the checker certified for the other families, checked
+         * again */
+        int splitting = design_family_is_splitting(d);
+        int claims[3] = {splitting ? -1 : d->order, splitting ? d->order : -1, -1};
+        s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims);
         int rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
-        if (rc == VIGEN_OK && s->certified && (s->order_separable >= 0 || s->order_nystrom >= 0)) {
+        if (rc == VIGEN_OK && s->certified && (s->order >= 0 || s->order_separable >= 0 || s->order_nystrom >= 0)) {
             free(s->text);
             free(s->error_constant);
             free(s->error_constant_sep);
             s->error_constant = s->error_constant_sep = NULL;
-            s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, s->order_separable,
-                                               s->order_nystrom);
+            claims[0] = s->order;
+            claims[1] = s->order_separable;
+            claims[2] = s->order_nystrom;
+            s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims);
             rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
         }
         free(gamma);
@@ -264,7 +271,7 @@ static int minimize(vigen_design_result *res, design_system *sys, slong *rows, s
         x = NULL;
         settle(&res->sol[0], sys, rows, k, opt);
         char *how = vigen_strdup_printf(
-            "the %ld order conditions (polynomials in the steps, from the BCH series of the composition) leave %ld "
+            "the %ld order conditions (polynomials in the steps, from the BCH series of the method) leave %ld "
             "free; these were chosen by Nelder-Mead minimising the checker's %s from %ld starts (%ld local minima, "
             "this the best found, not proved global), held exactly, and the others proved by the Krawczyk operator",
             (long)res->nconditions, (long)(k - m), d->minimize, (long)d->starts, (long)nminima);
@@ -279,15 +286,15 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
                      vigen_error *err)
 {
     memset(res, 0, sizeof *res);
-    slong k = d->symmetric ? (d->stages + 1) / 2 : d->stages;
+    slong k = design_family_unknowns(d);
     res->nunknowns = k;
     int q = 0;
     char *base = NULL;
-    int rc = load_base(&q, &base, d, err);
+    int rc = design_family_is_splitting(d) ? VIGEN_OK : load_base(&q, &base, d, err);
     if (rc != VIGEN_OK) return rc;
     res->base_order = q;
     if (d->order > VIGEN_DESIGN_MAX_ORDER) {
-        slong n = d->order <= COUNT_MAX_ORDER ? design_composition_count(d->symmetric, q, d->order) : -1;
+        slong n = d->order <= COUNT_MAX_ORDER ? design_family_count(d, q) : -1;
         free(base);
         if (n > k)
             return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: %d is impossible with %d stages: it asks for %ld "
@@ -296,13 +303,13 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: %d is beyond the orders design handles (up to %d)",
                                d->path, d->order, VIGEN_DESIGN_MAX_ORDER);
     }
-    if (d->order <= q) {
+    if (base && d->order <= q) {
         free(base);
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: %d is not above the order %d of the base %s", d->path,
                                d->order, q, d->base);
     }
     design_system sys;
-    rc = design_composition_conditions(&sys, d->stages, d->symmetric, q, d->order, err);
+    rc = design_family_conditions(&sys, d, q, err);
     if (rc != VIGEN_OK) {
         free(base);
         return rc;
@@ -341,7 +348,7 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         qsort(res->sol, (size_t)res->nsol, sizeof *res->sol, cmp_first);
         for (slong i = 0; i < res->nsol; i++) settle(&res->sol[i], &sys, rows, m, opt);
         char *how = vigen_strdup_printf(
-            "the %ld order conditions (polynomials in the steps, from the BCH series of the composition) solved by "
+            "the %ld order conditions (polynomials in the steps, from the BCH series of the method) solved by "
             "Newton from %ld random starts on a square subsystem of %ld, this root refined in arb and proved by the "
             "Krawczyk operator, the rest decided on its box and the file certified by the checker", (long)sys.n,
             (long)d->starts, (long)m);

@@ -5,7 +5,9 @@
 # composition of the library's yoshida_6 among them entry by entry (--against,
 # its 50 digits recomputed independently); the triple jump of velocity
 # Verlet is the library's yoshida_4 (written with the closed form
-# 1/(2 - 2^(1/3)), checked --against entry by entry); order 6 from five symmetric steps has no
+# 1/(2 - 2^(1/3)), checked --against entry by entry); the symmetric splitting
+# with three kicks of order 4 is Forest and Ruth's (Physica D 43 (1990) 105,
+# the library's forest_ruth_4); order 6 from five symmetric steps has no
 # solution (exit 1, nothing written); ill-posed design files are refused with
 # exit 2 and one line naming the file and the field, and nothing is written.
 set -u
@@ -44,6 +46,13 @@ mkdir "$T/tj"
 "$VIGEN" check "$T/tj/tj_1.lua" --against "$SRC/tableaux/published/yoshida_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" \
   || { bad "triple jump is not yoshida_4"; grep -E "against|order" "$T/chk"; }
 
+# symmetric splittings with three kicks, order 4: Forest and Ruth's method
+mkdir "$T/fr"
+"$VIGEN" design "$D/forest_ruth.lua" -o "$T/fr" > "$T/out" 2>&1 || { bad "forest_ruth: exit $?"; cat "$T/out"; }
+"$VIGEN" check "$T/fr/fr_1.lua" --against "$SRC/tableaux/published/forest_ruth_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" \
+  || { bad "the three-kick splitting is not forest_ruth_4"; grep -E "against|order" "$T/chk"; }
+grep -q "order_separable = 4" "$T/fr/fr_1.lua" || bad "forest_ruth: no order_separable claim"
+
 # no solution: exit 1, nothing written
 mkdir "$T/none"
 "$VIGEN" design "$D/no_solution.lua" -o "$T/none" > "$T/out" 2>&1
@@ -72,6 +81,7 @@ refuse free "solutions: the 2 conditions leave 1 of the 3 unknowns free" \
   "$C, base = \"stormer_verlet_position\", stages = 5, order = 4"
 refuse not_symmetric "base: symplectic_euler_q_first is not a symmetric splitting" \
   "$C, base = \"symplectic_euler_q_first\", stages = 3, order = 4"
+refuse splitting_base "base: a splitting has no base" 'name = "x", design = "splitting", base = "gauss_1", stages = 3, order = 4, solutions = "all"'
 refuse float_stages "stages: must be a whole number" "$C, base = \"stormer_verlet_position\", stages = 3.0, order = 4"
 [ -z "$(ls "$T/none")" ] || bad "refused files wrote $(ls "$T/none")"
 exit $fail

@@ -18,6 +18,8 @@
  *    he printed them (Table 1, 15 digits): each found, certified of order 6
  *    exactly (not 7) and within 2e-14 of the printed digits (Yoshida's own
  *    digits are off by up to 1.2e-14, docs/design.md);
+ *  - the number of conditions of splittings in the drifts A and the kicks B,
+ *    the dimensions of the free Lie algebra on two generators (Witt);
  *  - order 6 from 5 symmetric stages has no solution (McLachlan 1995: the
  *    minimal symmetric sixth-order composition has 7 stages);
  *  - minimize on the 5-stage symmetric order-4 family: Suzuki's fractal
@@ -87,6 +89,12 @@ static void test_counts(void)
     static const int want[] = {1, 2, 4, 8, 16};
     for (int i = 0; i < 5; i++) CHECK_MSG(design_composition_count(1, 2, 2 * i + 2) == want[i], "order %d", 2 * i + 2);
     CHECK(design_composition_count(0, 2, 4) == 3);
+    /* splittings: Witt's dimensions 2, 1, 2, 3, 6 of the free Lie algebra on
+     * two generators in degrees 1..5 (Reutenauer, Free Lie Algebras, 0.4.2):
+     * odd degrees only when symmetric */
+    CHECK(design_splitting_count(1, 4) == 4);
+    CHECK(design_splitting_count(1, 6) == 10);
+    CHECK(design_splitting_count(0, 4) == 8);
     /* the polynomials agree with the count: none vanishes identically */
     vigen_error err;
     vigen_error_init(&err);
