@@ -5,6 +5,7 @@
 #include "cli.h"
 #include "vigen/design.h"
 #include "support/printable.h"
+#include "support/progress.h"
 
 static void print_header(const vigen_design_spec *d, const vigen_design_result *res)
 {
@@ -82,7 +83,10 @@ int vigen_cmd_design(const vigen_cli_args *args)
     vigen_design_spec d;
     if (vigen_design_read(&d, args->operand, &err) != VIGEN_OK) return vigen_cli_fail(args->command, &err);
     vigen_design_result res;
+    /* a line on a terminal while the search takes more than a second */
+    vigen_progress_begin("vigen design");
     rc = vigen_design_run(&res, &d, &opt, &err);
+    vigen_progress_end();
     if (rc == VIGEN_OK) {
         print_header(&d, &res);
         print_table(&res);

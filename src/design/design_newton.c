@@ -11,8 +11,11 @@
 #include <gsl/gsl_multiroots.h>
 #include <gsl/gsl_rng.h>
 #include "design/design_internal.h"
+#include "support/progress.h"
 
-#define GSL_ITERATIONS 200
+/* a start that has not converged by then rarely does: the budget goes to
+ * more starts instead */
+#define GSL_ITERATIONS 60
 #define RESIDUAL_TOL 1e-11
 #define SAME_ROOT 1e-7
 #define FAR 1e6
@@ -47,10 +50,14 @@ static int fdf_fn(const gsl_vector *x, void *p, gsl_vector *f, gsl_matrix *J)
     return df_fn(x, p, J);
 }
 
+/* max |v_i|, or NaN when some v_i is not finite (fmax would drop a NaN) */
 static double max_abs(const double *v, slong n)
 {
     double m = 0;
-    for (slong i = 0; i < n; i++) m = fmax(m, fabs(v[i]));
+    for (slong i = 0; i < n; i++) {
+        if (!isfinite(v[i])) return NAN;
+        m = fmax(m, fabs(v[i]));
+    }
     return m;
 }
 
@@ -74,7 +81,8 @@ int design_newton_polish(double *x, const design_system *sys, const slong *rows,
     }
     f_fn(&xv.vector, &pa, f);
     double res = max_abs(f->data, k);
-    ok = isfinite(res) && res < RESIDUAL_TOL && max_abs(x, k) < FAR;
+    double size = max_abs(x, k);
+    ok = isfinite(res) && res < RESIDUAL_TOL && isfinite(size) && size < FAR;
     gsl_permutation_free(perm);
     gsl_vector_free(dx);
     gsl_vector_free(f);
@@ -96,6 +104,7 @@ slong design_newton_search(double **sols, const design_system *sys, const slong 
     gsl_vector *x0 = gsl_vector_alloc((size_t)k);
     double *x = malloc((size_t)k * sizeof(double));
     for (slong st = 0; st < starts; st++) {
+        if (st % 64 == 0) vigen_progress_set("Newton start %ld of %ld: %ld roots", (long)st, (long)starts, (long)n);
         for (slong j = 0; j < k; j++) gsl_vector_set(x0, (size_t)j, (2 * gsl_rng_uniform(rng) - 1) * box);
         gsl_multiroot_fdfsolver_set(s, &fdf, x0);
         int status = GSL_CONTINUE;

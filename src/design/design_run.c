@@ -326,8 +326,8 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
     res->nsquare = m;
     if (m < k && d->goal == VIGEN_DESIGN_ALL) {
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: solutions: the %ld conditions leave %ld of the %ld unknowns "
-                             "free (a family, not finitely many solutions); ask minimize = \"error_constant\" or "
-                             "order = %d", d->path, (long)sys.n, (long)(k - m), (long)k, d->order + 2);
+                             "free (a family, not finitely many solutions); ask minimize = \"error_constant\", a "
+                             "higher order or fewer stages", d->path, (long)sys.n, (long)(k - m), (long)k);
     } else if (m < k) {
         rc = minimize(res, &sys, rows, m, d, opt, base, err);
     } else {
