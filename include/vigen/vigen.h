@@ -23,6 +23,7 @@
 #include "vigen/emit.h"
 #include "vigen/try.h"
 #include "vigen/library.h"
+#include "vigen/design.h"
 
 /* The version of the library ("0.1.0"). */
 const char *vigen_version(void);

@@ -98,7 +98,7 @@ has err "^vigen generate: unknown option '-Q'; did you mean '-q'?$"
 # an option of other commands is named as such
 status 2 check "$pub/gauss_2.lua" -o x
 short_error "option of other commands"
-has err "^vigen check: -o is an option of generate and emit, not of check$"
+has err "^vigen check: -o is an option of generate, emit and design, not of check$"
 has err "^see 'vigen help check'$"
 status 2 --json check "$pub/gauss_2.lua"
 short_error "a command's option before the command"

@@ -1,0 +1,116 @@
+/* design.h — `vigen design`: methods found from their order conditions, each
+ * solution proved to exist, written as method files the checker certifies.
+ *
+ * A design file is a Lua chunk (run in the sandbox, like spec files)
+ * returning a family and what is wanted:
+ *   { name = "y6", design = "composition", base = "stormer_verlet_position",
+ *     stages = 7, order = 6, symmetric = true, solutions = "all" }
+ * The composition S(gamma_s h) ... S(gamma_1 h) of a symmetric base method S
+ * has the order conditions of docs/design.md (polynomials in the gammas with
+ * rational coefficients, from the Baker-Campbell-Hausdorff series).  A
+ * square subsystem of independent conditions is solved by many-start Newton
+ * in double; each root is refined in arb and proved with the Krawczyk
+ * operator (an exact root exists, unique, in a small box); the conditions
+ * outside the subsystem are decided on the box, and the method file written
+ * for each solution is checked by the checker, whose certified order and
+ * symplecticity become its claims.
+ */
+#ifndef VIGEN_DESIGN_H
+#define VIGEN_DESIGN_H
+
+#include <flint/flint.h>
+#include "vigen/error.h"
+
+/* The highest order a design may ask for (the conditions are polynomials of
+ * that degree in the steps). */
+#define VIGEN_DESIGN_MAX_ORDER 10
+
+/* What is wanted of the family. */
+enum { VIGEN_DESIGN_ALL = 0, VIGEN_DESIGN_MINIMIZE = 1 };
+
+typedef struct {
+    char *path;                  /* the design file */
+    char *name;                  /* the stem of the method files written */
+    char *family;                /* "composition" */
+    char *base;                  /* the base method, a library name or a file, as written */
+    int stages, order, symmetric;
+    int goal;                    /* VIGEN_DESIGN_ALL or VIGEN_DESIGN_MINIMIZE */
+    char *minimize;              /* goal MINIMIZE: "error_constant" (general H), "error_constant_separable",
+                                    "error_constant_nystrom": the checker's constant minimised */
+    long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
+    unsigned long seed;          /* of the starts (default 1) */
+} vigen_design_spec;
+
+/* Reads and validates the design file at path (d uninitialised on entry;
+ * initialised on success).  Every failure is one message naming the file
+ * and the field ("y6.lua: stages: must be a whole number from 1 to 64") with
+ * VIGEN_E_SPEC (exit status 2). */
+int vigen_design_read(vigen_design_spec *d, const char *path, vigen_error *err);
+/* Frees the strings of d; d is then empty. */
+void vigen_design_spec_clear(vigen_design_spec *d);
+
+/* One solution of the family. */
+typedef struct {
+    int proved;                  /* the Krawczyk test proved an exact root in the box */
+    int excluded;                /* a condition outside the square subsystem certainly fails on the box */
+    int certified;               /* the method file was checked: order and symplecticity certified */
+    slong nunknowns;
+    double *x;                   /* the root in double */
+    char **digits;               /* each unknown with the certified digits (NULL when not proved) */
+    char *radius;                /* the largest radius of the proving box, as a decimal */
+    int order;                   /* certified order for general H (-1 unknown) */
+    int order_separable;         /* ... for separable H */
+    int order_nystrom;           /* ... for Nystrom H */
+    char *error_constant;        /* the checker's principal error constant, general H (text) */
+    char *error_constant_sep;    /* ... separable H */
+    double error_constant_d;
+    long force;                  /* force evaluations per step (separable H) */
+    char *file;                  /* the path the method file goes to */
+    char *text;                  /* its contents */
+    char *why;                   /* not proved / excluded / not certified: why (one line) */
+} vigen_design_solution;
+
+typedef struct {
+    slong nunknowns, nconditions;   /* of the family */
+    slong nsquare;               /* the conditions of the square subsystem solved (<= nunknowns) */
+    char **conditions;           /* each condition: the word of the Lie series it is the coefficient of */
+    int *condition_degree;       /* its power of h */
+    slong bezout;                /* the product of the degrees of the square subsystem (-1: too large) */
+    slong starts;                /* Newton starts made */
+    slong nfound;                /* distinct real roots of the square subsystem found */
+    int complete;                /* the roots found are all the complex roots (nfound == bezout) */
+    int base_order;              /* the base method's certified order */
+    int minimized;               /* minimize: sol[0] is the best point found */
+    slong nfree;                 /* minimize: the unknowns the conditions leave free */
+    long evaluations;            /* minimize: the checker's runs on trial points */
+    slong nsol;
+    vigen_design_solution *sol;  /* in the order found, sorted by the first unknown */
+} vigen_design_result;
+
+typedef struct {
+    const char *outdir;          /* where the method files go ("." by default) */
+    long digits;                 /* certified digits of every step (default 40) */
+} vigen_design_options;
+
+/* Sets the defaults: outdir ".", digits 40. */
+void vigen_design_options_init(vigen_design_options *opt);
+
+/* Solves the design d: res (uninitialised on entry, initialised whatever the
+ * return) gets every root found, proved or not, with the texts of the method
+ * files of the certified ones.  Writes nothing.  Errors: VIGEN_E_SPEC for a
+ * design that cannot be posed (an unknown base, a base that is not a
+ * symmetric splitting, more conditions than unknowns beyond
+ * VIGEN_DESIGN_MAX_ORDER); a family without a solution is not an error (no
+ * certified solution in res). */
+int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const vigen_design_options *opt,
+                     vigen_error *err);
+
+/* Writes the method files of the certified solutions of res, all or none
+ * (vigen_write_files_atomic).  VIGEN_E_WRITE naming the file. */
+int vigen_design_write(const vigen_design_result *res, vigen_error *err);
+
+/* Frees what vigen_design_run put in res (every solution, texts and
+ * conditions); res is then empty. */
+void vigen_design_result_clear(vigen_design_result *res);
+
+#endif

@@ -1,0 +1,120 @@
+/* design_internal.h — what the files of the designer share: the order
+ * conditions of a family as polynomials in its unknowns (exact rational
+ * coefficients), evaluated in double for the search and in arb for the proof.
+ * Not installed: nothing outside src/design uses it. */
+#ifndef VIGEN_DESIGN_INTERNAL_H
+#define VIGEN_DESIGN_INTERNAL_H
+
+#include <arb.h>
+#include <arb_mat.h>
+#include <flint/fmpq.h>
+#include "vigen/design.h"
+
+/* A polynomial in k unknowns: nterms terms coef[t] x^exp[t*k .. t*k+k-1]. */
+typedef struct {
+    slong k, nterms;
+    fmpq *coef;
+    double *coef_d;              /* coef rounded to double (the search) */
+    slong *exp;
+    slong degree;                /* total degree */
+} design_poly;
+
+void design_poly_clear(design_poly *p);
+double design_poly_eval_d(const design_poly *p, const double *x);
+void design_poly_eval_arb(arb_t out, const design_poly *p, arb_srcptr x, slong prec);
+
+/* The order conditions of a family: cond[i] = 0 for i < n, in k unknowns,
+ * with their partial derivatives dcond[i*k + j] = d cond[i] / d x_j; what each
+ * condition says (the Lyndon word it is the coefficient of, "Y1 Y3"), and
+ * the degree of its word (the power of h). */
+typedef struct {
+    slong k, n;
+    design_poly *cond, *dcond;
+    char **what;
+    int *h_degree;
+} design_system;
+
+void design_system_clear(design_system *sys);
+
+/* The conditions for order p of the composition of a symmetric base method
+ * of order q (even) with stages steps gamma_i h, gamma the unknowns
+ * (symmetric: gamma_i = gamma_{stages+1-i}, ceil(stages/2) unknowns).
+ * design_conditions.c describes the derivation. */
+int design_composition_conditions(design_system *sys, int stages, int symmetric, int q, int p, vigen_error *err);
+
+/* The longest word the conditions are built or counted from: the order up
+ * to which design_composition_count is exact. */
+#define DESIGN_WORD_MAX 24
+
+/* How many conditions order p asks of that family (the Lyndon words of the
+ * alphabet, counted without building the polynomials: cheap for any p). */
+slong design_composition_count(int symmetric, int q, int p);
+
+/* The conditions for order p (separable H = T(p) + V(q)) of the splitting
+ * drift a_1, kick b_1, drift a_2, ..., kick b_s, drift a_(s+1) (s kicks):
+ * the Lyndon words in A (drifts) and B (kicks) of the logarithm of the
+ * product of exp(a_i h A) and exp(b_i h B), against h (A + B); symmetric:
+ * the substeps read the same backwards.  Unknowns: the distinct drifts, then
+ * the distinct kicks; substep i (0-based, drift on even i) is unknown
+ * design_substep_unknown(i). */
+int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, vigen_error *err);
+slong design_splitting_count(int symmetric, int p);
+slong design_splitting_unknowns(int kicks, int symmetric);
+slong design_substep_unknown(slong i, int kicks, int symmetric);
+
+/* The family of d (design_family.c): 1 for "splitting"; its unknowns; the
+ * steps of the method written (stages of a composition, substeps of a
+ * splitting) and the unknown each one is; its conditions for order
+ * d->order (q: the base's order, compositions), counted or built. */
+int design_family_is_splitting(const vigen_design_spec *d);
+slong design_family_unknowns(const vigen_design_spec *d);
+slong design_family_nvalues(const vigen_design_spec *d);
+slong design_family_value_unknown(const vigen_design_spec *d, slong i);
+slong design_family_count(const vigen_design_spec *d, int q);
+int design_family_conditions(design_system *sys, const vigen_design_spec *d, int q, vigen_error *err);
+
+/* The unknown each stage's step is: gamma_i = x[design_stage_unknown(i)]. */
+slong design_stage_unknown(slong i, int stages, int symmetric);
+
+/* F(x) (n values) and its Jacobian (n x k, row-major) in double, for the
+ * conditions rows[0..m-1] (rows NULL: all). */
+void design_eval_d(double *f, double *jac, const design_system *sys, const slong *rows, slong m, const double *x);
+
+/* Many-start Newton (design_newton.c): the distinct real solutions of the
+ * square subsystem rows[0..k-1], x[sol*k + j], at most max_sol; returns the
+ * count. */
+slong design_newton_search(double **sols, const design_system *sys, const slong *rows, slong starts,
+                           unsigned long seed, double box);
+
+/* Newton on x (k unknowns) for the subsystem rows (k of them) in double;
+ * returns 1 when it converged to a root. */
+int design_newton_polish(double *x, const design_system *sys, const slong *rows, int iterations);
+
+/* The square subsystem: k conditions of sys independent at a generic point
+ * (the first in order that raise the rank of the Jacobian), into rows;
+ * returns how many were found (< k: the conditions leave free parameters). */
+slong design_square_rows(slong *rows, const design_system *sys, unsigned long seed);
+
+/* Pins (design_pin.c): design_system_add_pin appends the condition
+ * x_j - t = 0 (t = 0) and returns its row; design_system_set_pin sets t,
+ * exactly the double given. */
+slong design_system_add_pin(design_system *sys, slong j);
+void design_system_set_pin(design_system *sys, slong row, double t);
+
+/* The free unknowns of the conditions rows[0..m-1] (m < k): the unknowns
+ * left when m columns independent at a generic point are taken as the
+ * dependent ones; free_out gets k - m of them (design_minimize.c). */
+void design_free_unknowns(slong *free_out, const design_system *sys, const slong *rows, slong m, unsigned long seed);
+
+/* The Krawczyk proof (design_krawczyk.c): from the approximate root x0 of
+ * the square subsystem rows, Newton in arb at prec, then the Krawczyk test
+ * on a box around it.  On success (returns 1) box[j] encloses the unique
+ * exact root in it; 0: not proved. */
+int design_krawczyk_prove(arb_ptr box, const design_system *sys, const slong *rows, const double *x0, slong prec);
+
+/* The Krawczyk test alone on the box mid +- rad (every unknown): 1 when
+ * K(box) lies inside it, enclosure in out. */
+int design_krawczyk_test(arb_ptr out, const design_system *sys, const slong *rows, arb_srcptr mid, const mag_t rad,
+                         slong prec);
+
+#endif

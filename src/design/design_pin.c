@@ -1,0 +1,63 @@
+/* design_pin.c — free parameters held fixed: a condition x_j - t = 0 per
+ * free unknown, appended to the conditions of a family, so that the
+ * conditions and the pins make a square system that the search and the
+ * Krawczyk proof treat like any other.  t is a double, taken exactly (a
+ * binary fraction), so the root proved is an exact member of the family. */
+#include <stdlib.h>
+#include <string.h>
+#include "design/design_internal.h"
+
+slong design_system_add_pin(design_system *sys, slong j)
+{
+    slong k = sys->k, n = sys->n;
+    sys->cond = realloc(sys->cond, (size_t)(n + 1) * sizeof(design_poly));
+    sys->dcond = realloc(sys->dcond, (size_t)((n + 1) * k) * sizeof(design_poly));
+    sys->what = realloc(sys->what, (size_t)(n + 1) * sizeof(char *));
+    sys->h_degree = realloc(sys->h_degree, (size_t)(n + 1) * sizeof(int));
+    design_poly *p = &sys->cond[n];
+    memset(p, 0, sizeof *p);
+    p->k = k;
+    p->nterms = 2;
+    p->coef = _fmpq_vec_init(2);
+    p->coef_d = calloc(2, sizeof(double));
+    p->exp = calloc((size_t)(2 * k), sizeof(slong));
+    p->degree = 1;
+    fmpq_one(p->coef + 0);
+    p->coef_d[0] = 1;
+    p->exp[j] = 1;                  /* x_j - t (t = 0 until set) */
+    for (slong l = 0; l < k; l++) {
+        design_poly *d = &sys->dcond[n * k + l];
+        memset(d, 0, sizeof *d);
+        d->k = k;
+        d->nterms = l == j;
+        d->coef = _fmpq_vec_init(1);
+        d->coef_d = calloc(1, sizeof(double));
+        d->exp = calloc((size_t)k, sizeof(slong));
+        fmpq_one(d->coef);
+        d->coef_d[0] = 1;
+    }
+    sys->what[n] = NULL;
+    sys->h_degree[n] = 0;
+    sys->n = n + 1;
+    return n;
+}
+
+void design_system_set_pin(design_system *sys, slong row, double t)
+{
+    design_poly *p = &sys->cond[row];
+    arf_t a;
+    fmpz_t m, e;
+    arf_init(a);
+    fmpz_init(m);
+    fmpz_init(e);
+    arf_set_d(a, -t);
+    arf_get_fmpz_2exp(m, e, a);    /* -t = m 2^e exactly */
+    fmpz_set(fmpq_numref(p->coef + 1), m);
+    fmpz_one(fmpq_denref(p->coef + 1));
+    if (fmpz_sgn(e) >= 0) fmpq_mul_2exp(p->coef + 1, p->coef + 1, fmpz_get_ui(e));
+    else fmpq_div_2exp(p->coef + 1, p->coef + 1, -fmpz_get_si(e));
+    p->coef_d[1] = -t;
+    arf_clear(a);
+    fmpz_clear(m);
+    fmpz_clear(e);
+}

@@ -1,0 +1,87 @@
+#!/bin/bash
+# cli_design.sh VIGEN SRC — `vigen design`: Yoshida's sixth-order family
+# gives three files (his solutions A, B and C, Phys. Lett. A 150 (1990) 262,
+# Table 1), each of which `vigen check` certifies of order 6 exactly, the
+# composition of the library's yoshida_6 among them entry by entry (--against,
+# its 50 digits recomputed independently); the triple jump of velocity
+# Verlet is the library's yoshida_4 (written with the closed form
+# 1/(2 - 2^(1/3)), checked --against entry by entry); the symmetric splitting
+# with three kicks of order 4 is Forest and Ruth's (Physica D 43 (1990) 105,
+# the library's forest_ruth_4); order 6 from five symmetric steps has no
+# solution (exit 1, nothing written); ill-posed design files are refused with
+# exit 2 and one line naming the file and the field, and nothing is written.
+set -u
+VIGEN=$1
+SRC=$2
+T=$(mktemp -d /tmp/vigen-cli-design-XXXXXX)
+trap 'rm -rf "$T"' EXIT
+export TMPDIR="$T/tmp"
+mkdir -p "$TMPDIR"
+fail=0
+bad() { echo "FAIL: $*"; fail=1; }
+D=$SRC/tests/data/design
+
+mkdir "$T/y6"
+"$VIGEN" design "$D/yoshida6.lua" -o "$T/y6" > "$T/out" 2> "$T/err"
+rc=$?
+[ $rc = 0 ] || { bad "yoshida6: exit $rc"; cat "$T/err"; }
+[ "$(ls "$T/y6" | wc -l)" = 3 ] || bad "yoshida6: not three files: $(ls "$T/y6")"
+[ "$(grep -c " certified " "$T/out")" = 3 ] || { bad "yoshida6: not three certified rows"; cat "$T/out"; }
+grep -q "^complete    not established" "$T/out" || bad "yoshida6: completeness claimed"
+for f in "$T"/y6/*.lua; do
+  "$VIGEN" check "$f" > "$T/chk" 2>&1 || { bad "check $(basename "$f") exits $?"; tail -3 "$T/chk"; }
+  grep -q "^order         6 within the precision of the data" "$T/chk" || { bad "$(basename "$f"): not order 6"; grep "^order" "$T/chk"; }
+  grep -q "first failing tree: .*(order 7)" "$T/chk" || bad "$(basename "$f"): no failing tree of order 7"
+done
+# Yoshida's solution A is the library's yoshida_6 (recomputed to 50 digits there)
+found=0
+for f in "$T"/y6/*.lua; do
+  "$VIGEN" check "$f" --against "$SRC/tableaux/published/yoshida_6.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" && found=1
+done
+[ $found = 1 ] || bad "no solution is the library's yoshida_6"
+
+# the triple jump of velocity Verlet is the library's yoshida_4
+mkdir "$T/tj"
+"$VIGEN" design "$D/triple_jump.lua" -o "$T/tj" --digits 50 > "$T/out" 2>&1 || { bad "triple jump: exit $?"; cat "$T/out"; }
+"$VIGEN" check "$T/tj/tj_1.lua" --against "$SRC/tableaux/published/yoshida_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" \
+  || { bad "triple jump is not yoshida_4"; grep -E "against|order" "$T/chk"; }
+
+# symmetric splittings with three kicks, order 4: Forest and Ruth's method
+mkdir "$T/fr"
+"$VIGEN" design "$D/forest_ruth.lua" -o "$T/fr" > "$T/out" 2>&1 || { bad "forest_ruth: exit $?"; cat "$T/out"; }
+"$VIGEN" check "$T/fr/fr_1.lua" --against "$SRC/tableaux/published/forest_ruth_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" \
+  || { bad "the three-kick splitting is not forest_ruth_4"; grep -E "against|order" "$T/chk"; }
+grep -q "order_separable = 4" "$T/fr/fr_1.lua" || bad "forest_ruth: no order_separable claim"
+
+# no solution: exit 1, nothing written
+mkdir "$T/none"
+"$VIGEN" design "$D/no_solution.lua" -o "$T/none" > "$T/out" 2>&1
+rc=$?
+[ $rc = 1 ] || bad "no_solution: exit $rc, expected 1"
+grep -q "^no solution" "$T/out" || bad "no_solution: no 'no solution' line"
+[ -z "$(ls "$T/none")" ] || bad "no_solution wrote $(ls "$T/none")"
+
+# ill-posed design files: exit 2, one line naming the file and the field
+refuse() {  # name field-regex lua-body
+  printf 'return { %s }\n' "$3" > "$T/$1.lua"
+  "$VIGEN" design "$T/$1.lua" -o "$T/none" > "$T/out" 2> "$T/err"
+  rc=$?
+  [ $rc = 2 ] || bad "$1: exit $rc, expected 2"
+  [ "$(wc -l < "$T/err")" = 1 ] && head -1 "$T/err" | grep -q "^vigen design: $T/$1.lua: $2" \
+    || { bad "$1: message"; cat "$T/err"; }
+}
+C='name = "x", design = "composition", symmetric = true, solutions = "all"'
+refuse order20 "order: 20 is impossible with 3 stages: it asks for [0-9]* conditions of 2 unknowns" \
+  "$C, base = \"stormer_verlet_position\", stages = 3, order = 20"
+refuse negative "stages: must be a whole number" "$C, base = \"stormer_verlet_position\", stages = -3, order = 4"
+refuse unknown_base "base: stormer_verlet_positon: .*did you mean 'stormer_verlet_position'" \
+  "$C, base = \"stormer_verlet_positon\", stages = 3, order = 4"
+refuse typo "unknown field 'stage'; did you mean 'stages'" "$C, base = \"stormer_verlet_position\", stage = 3, order = 4"
+refuse free "solutions: the 2 conditions leave 1 of the 3 unknowns free" \
+  "$C, base = \"stormer_verlet_position\", stages = 5, order = 4"
+refuse not_symmetric "base: symplectic_euler_q_first is not a symmetric splitting" \
+  "$C, base = \"symplectic_euler_q_first\", stages = 3, order = 4"
+refuse splitting_base "base: a splitting has no base" 'name = "x", design = "splitting", base = "gauss_1", stages = 3, order = 4, solutions = "all"'
+refuse float_stages "stages: must be a whole number" "$C, base = \"stormer_verlet_position\", stages = 3.0, order = 4"
+[ -z "$(ls "$T/none")" ] || bad "refused files wrote $(ls "$T/none")"
+exit $fail
