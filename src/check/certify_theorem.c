@@ -1,0 +1,208 @@
+/* certify_theorem.c — the orders and symplecticity of a generated tableau
+ * decided on the generator's balls by Butcher's theorem (theorem.c), without
+ * walking the trees.
+ *
+ * The generator's balls contain the exact coefficients, so a condition
+ * whose ball excludes 0 fails for the exact method, and a hold is decided
+ * by the rule of exact entries (decide.c): a ball containing 0 with a radius
+ * of at most 2^-(prec/2) of its terms, confirmed by the same verdicts at
+ * half the precision, at 1024 bits (refine.c).  The precision is the
+ * lowest that decides: that of the certified digits (what `vigen check`
+ * reads the written file at) while below 1024 bits, since below it a
+ * difference in the last digit would hide in the rounding; 1024 bits with
+ * the confirmation at 512 above it (more digits: an exact difference below
+ * 2^-1024 of the terms is not seen, as for exact entries).  Plain ball
+ * arithmetic on balls this narrow needs no mean-value enclosure
+ * (enclose_tree.c is for rounded data).
+ *
+ * The row sums and symplecticity (rowsums.c), c = ct, b = bt, B, C, D of
+ * both parts (simplifying.c) and the bushy trees (theorem.c) are the
+ * checker's own conditions on those balls.  The theorem gives order p when
+ * B holds to p and C, D far enough; the order is exactly p when every
+ * bushy tree of order p + 1 fails: the monochromatic ones (general H), the
+ * alternating ones (separable H), among them the one with a white root and
+ * black leaves (Nystrom H).  The tree walk says the same then: every
+ * condition up to p holds by the theorem and a bushy one of order p + 1
+ * fails.  When any of this is undecided, or C and D give less than B (the
+ * Lobatto IIIA-IIIB pair: 2s - 3 < 2s - 2), the caller walks the trees
+ * (certify.c).
+ */
+#include <math.h>
+#include <string.h>
+#include "check/check_internal.h"
+
+/* Exact conditions that hold are confirmed at this precision, with the
+ * same verdicts at half of it: the rule of the refinement loop for exact
+ * entries (refine.c, min_confirm). */
+enum { CHK_CERTIFY_CONFIRM_PREC = 1024 };
+
+/* The precision of `digits` certified digits: the precision the checker
+ * reads a decimal of that length at (notes.c, chk_adequate_prec). */
+static slong digits_prec(const vigen_tableau *t)
+{
+    if (t->digits <= 0) return t->prec;
+    slong p = (slong)ceil((double)t->digits * 3.3219280948873623) + 64;
+    if (p < 128) p = 128;
+    return p < t->prec ? p : t->prec;
+}
+
+/* u: the balls of t rounded to prec (each still contains the exact value),
+ * no texts. */
+static void rounded_copy(vigen_tableau *u, const vigen_tableau *t, slong prec)
+{
+    slong s = t->s;
+    vigen_tableau_init(u, s);
+    u->has_At = t->has_At;
+    u->has_ct = t->has_ct;
+    u->has_bt = t->has_bt;
+    u->prec = prec;
+    for (slong i = 0; i < s; i++) {
+        arb_set_round(u->c + i, t->c + i, prec);
+        arb_set_round(u->b + i, t->b + i, prec);
+        arb_set_round(u->ct + i, t->ct + i, prec);
+        arb_set_round(u->bt + i, t->bt + i, prec);
+        for (slong j = 0; j < s; j++) {
+            arb_set_round(arb_mat_entry(u->A, i, j), arb_mat_entry(t->A, i, j), prec);
+            arb_set_round(arb_mat_entry(u->At, i, j), arb_mat_entry(t->At, i, j), prec);
+        }
+    }
+}
+
+/* Every entry exact (no proof by denominators: den = qd = 0). */
+static void all_exact(exactness *x, const vigen_tableau *u)
+{
+    chk_exactness_init(x, u);
+    slong s = u->s;
+    memset(x->A, 1, (size_t)(s * s));
+    memset(x->At, 1, (size_t)(s * s));
+    memset(x->b, 1, (size_t)s);
+    memset(x->bt, 1, (size_t)s);
+    memset(x->c, 1, (size_t)s);
+    memset(x->ct, 1, (size_t)s);
+    x->part[0] = x->part[1] = x->part_c[0] = x->part_c[1] = 1;
+    x->any_exact = 1;
+    x->any_rounded = 0;
+}
+
+/* One part (c, A, b) of the tableau (0: A, 1: At), every entry exact, with
+ * the powers of its c up to kmax. */
+static void part_init(chk_part *p, ctx_t *cx, int part, int kmax)
+{
+    slong s = cx->s;
+    p->cx = cx;
+    p->part = part;
+    p->exact = p->exact_B = p->exact_C = 1;
+    p->A = part ? cx->At : cx->A;
+    p->b = part ? cx->bt : cx->b;
+    p->c = part ? cx->ct : cx->c;
+    p->cp = _arb_vec_init((kmax + 1) * s);
+    for (slong i = 0; i < s; i++) arb_one(p->cp + i);
+    for (int k = 1; k <= kmax; k++)
+        for (slong i = 0; i < s; i++) arb_mul(p->cp + k * s + i, p->cp + (k - 1) * s + i, p->c + i, cx->prec);
+}
+
+/* The highest k <= cap with test(1..k) holding in every part; -1 when the
+ * first that does not hold is undecided. */
+static int level(chk_part *parts, int nparts, int (*test)(chk_part *, int), int cap)
+{
+    for (int k = 1; k <= cap; k++)
+        for (int q = 0; q < nparts; q++) {
+            int st = test(parts + q, k);
+            if (st == UNDECIDED) return -1;
+            if (st == FAILS) return k - 1;
+        }
+    return cap;
+}
+
+/* The order p of the theorem when B holds up to p and fails at p + 1 and C
+ * and D reach what the theorem needs for that p (C up to min(p - 1, s): more
+ * never helps; D only as far as p <= eta + zeta + 1 asks); 0 when something
+ * is undecided, or c != ct, b != bt, or C and D give less than B. */
+static int theorem_order(ctx_t *cx)
+{
+    slong s = cx->s;
+    int n = cx->has_At ? 2 : 1, data = 0;   /* one part: At, bt, ct are A, b, c */
+    const exactness *x = cx->ex;
+    if (cx->has_At && chk_decide_equal(cx, cx->c, cx->ct, x->c, x->ct, 91, &data) != HOLDS) return 0;
+    if (cx->has_bt && chk_decide_equal(cx, cx->b, cx->bt, x->b, x->bt, 90, &data) != HOLDS) return 0;
+    /* an s-stage method has at most B(2s) */
+    int cap = (int)(2 * s + 1);
+    if (cap > 63) cap = 63;
+    chk_part parts[2];
+    for (int q = 0; q < n; q++) part_init(parts + q, cx, q, cap);
+    int p = 0;
+    int pb = level(parts, n, chk_assumption_B, cap);
+    if (pb >= 1 && pb < cap) {
+        /* C(s) fixes A for distinct nodes: C(s + 1) is not looked for */
+        int eta = level(parts, n, chk_assumption_C, pb - 1 < (int)s ? pb - 1 : (int)s);
+        int need = pb - 1 - eta;
+        if (eta >= 0 && 2 * eta + 2 >= pb && (need <= 0 || level(parts, n, chk_assumption_D, need) == need)) p = pb;
+    }
+    for (int q = 0; q < n; q++) _arb_vec_clear(parts[q].cp, (cap + 1) * s);
+    return p;
+}
+
+/* One round at prec: 1 and *out when every verdict needed is decided;
+ * *hash, the sequence of verdicts (for the confirmation at half precision). */
+static int theorem_round(chk_theorem_verdict *out, ulong *hash, const vigen_tableau *t, slong prec)
+{
+    vigen_tableau u;
+    rounded_copy(&u, t, prec);
+    exactness ex;
+    all_exact(&ex, &u);
+    vigen_check_report rep;
+    vigen_check_report_init(&rep);
+    rep.s = t->s;
+    rep.has_At = t->has_At;
+    rep.has_bt = t->has_At && t->has_bt;
+    rep.has_ct = t->has_At && t->has_ct;
+    ctx_t cx;
+    chk_ctx_init(&cx, &u, &ex, rep.holds);
+    cx.prec = prec;
+    chk_round rd;
+    memset(&rd, 0, sizeof(rd));
+    rd.rep = &rep;
+    rd.cx = &cx;
+    rd.t = &u;
+    vigen_error err;
+    vigen_error_init(&err);
+    int rc = chk_consistency(&rd, &err);
+    if (rc == VIGEN_OK) rc = chk_symplecticity(&rd, &err);
+    int p = 0;
+    if (rc == VIGEN_OK && rep.consistent == VIGEN_CHECK_YES && rep.symplectic != VIGEN_CHECK_UNDECIDED)
+        p = theorem_order(&cx);
+    /* every bushy tree of order p + 1 fails: the monochromatic ones (general
+     * H), the alternating ones (separable H), among them the one with a white
+     * root and black leaves (Nystrom H) */
+    int fail[2], all = 0;
+    if (p >= 1 && cx.n_undecided == 0 && (t->claim_order < 0 || t->claim_order == p))
+        chk_bushy(&cx, p + 1, p + 1, fail, &all);
+    int decided = all == p + 1 && cx.n_undecided == 0;
+    if (decided) {
+        out->order = p;
+        out->symplectic = rep.symplectic == VIGEN_CHECK_YES;
+        out->prec = prec;
+    }
+    *hash = cx.hash;
+    vigen_error_clear(&err);
+    for (slong k = 0; k < rd.nconds; k++) arb_clear(rd.conds[k].r);
+    flint_free(rd.conds);
+    if (rd.have_mid) chk_midpoints_clear(&rd.mid);
+    vigen_check_report_clear(&rep);
+    chk_exactness_clear(&ex);
+    vigen_tableau_clear(&u);
+    return decided;
+}
+
+int chk_certify_theorem(chk_theorem_verdict *out, const vigen_tableau *t)
+{
+    if (t->prec <= 0) return 0;
+    slong prec = digits_prec(t);
+    ulong h0, h1;
+    if (prec <= CHK_CERTIFY_CONFIRM_PREC) return theorem_round(out, &h1, t, prec);
+    /* above the confirmation precision: the same verdicts at half of it */
+    chk_theorem_verdict half;
+    return theorem_round(&half, &h0, t, CHK_CERTIFY_CONFIRM_PREC / 2) &&
+           theorem_round(out, &h1, t, CHK_CERTIFY_CONFIRM_PREC) && h0 == h1 && half.order == out->order &&
+           half.symplectic == out->symplectic;
+}
