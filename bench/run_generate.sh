@@ -86,7 +86,7 @@ PY
   echo "finds itself (with acb_calc_integrate instead, trig(10) at 1000 digits took 1.24 s)."
   echo "The order is certified by Butcher's theorem on the generator's balls where it"
   echo "decides (B(p), C, D and a failing bushy tree of order p + 1, at the precision of the"
-  echo "digits up to 1024 bits, confirmed at half of it: src/check/certify_theorem.c), by"
+  echo "digits up to 1024 bits: src/check/certify_theorem.c), by"
   echo "the walk over every tree to order 8 otherwise."
   echo "Targets: Gauss s = 10 at 1000 digits, certification included, under 0.1 times"
   echo "mpmath; no generated tableau slower than before; trig(10) at 1000 digits under 1 s."

@@ -430,7 +430,7 @@ int vigen_check_certified_order(const vigen_check_report *rep, int family, int *
  * the generator has just made (t->generated_now) the order is first decided
  * by Butcher's theorem on the generator's balls (B(p), C, D and every bushy
  * tree of order p + 1 failing, at the precision of its digits up to 1024
- * bits, confirmed at half of it), which gives what the check would; the
+ * bits), which gives what the check would; the
  * check runs where the theorem does not decide.  The environment variable
  * VIGEN_CERTIFY_TREES=1 makes it run always.  A claim
  * t->claim_order already set (a spec's order = p) that is false is an error
