@@ -1,7 +1,8 @@
 /* test_check_certify.c — the certification of generated tableaux
  * (vigen_check_certify): Butcher's theorem on the generator's balls
  * (src/check/certify_theorem.c) against the walk over every tree
- * (VIGEN_CERTIFY_TREES=1), and what the theorem decides on its own.
+ * (VIGEN_CERTIFY_TREES=1) on the specs of the library and on the published
+ * tableaux with exact entries, and what the theorem decides on its own.
  *
  * Sources of the expected values (never this code's own output):
  *  - Hairer, Wanner II, sec. IV.5 (Tables 5.1, 5.5, 5.7-5.9): the s-stage
@@ -113,6 +114,56 @@ static int test_library(void)
     return decided;
 }
 
+/* The published tableaux with exact entries, their balls at 2048 bits
+ * standing for the generator's (they contain the exact values), claims
+ * cleared: the theorem path agrees with the tree walk on their texts.
+ * Rounded data (16-digit decimals) are the tree walk's alone.  Returns how
+ * many the theorem decided. */
+static int test_published(void)
+{
+    static const char *names[] = {
+        "blanes_moan_s10_6", "blanes_moan_s6_4", "candy_rozmus_4", "forest_ruth_4", "gauss_1", "gauss_2",
+        "gauss_3", "leok_zhang_ex2_i", "leok_zhang_ex2_ii", "leok_zhang_ex2_iii", "leok_zhang_ex3",
+        "leok_zhang_ex4", "leok_zhang_ex5_i", "leok_zhang_ex5_ii", "leok_zhang_ex5_iii", "lobatto_iiia_iiib_2",
+        "lobatto_iiia_iiib_3", "lobatto_iiia_iiib_4", "mclachlan_atela_2", "mclachlan_atela_3", "mclachlan_rkn_4",
+        "ruth_3", "stormer_verlet_position", "stormer_verlet_velocity", "suzuki_4", "symplectic_euler_p_first",
+        "symplectic_euler_q_first", "yoshida_4", "yoshida_6"};
+    int decided = 0, exact = 0;
+    for (size_t k = 0; k < sizeof(names) / sizeof(names[0]); k++) {
+        char path[1024];
+        snprintf(path, sizeof(path), "%s/tableaux/published/%s.lua", VIGEN_SOURCE_DIR, names[k]);
+        vigen_tableau t;
+        if (generate(&t, path, 0) != VIGEN_OK) {
+            CHECK_MSG(0, "%s: not loaded", names[k]);
+            continue;
+        }
+        exactness x;
+        chk_exactness_init(&x, &t);
+        int rounded = x.any_rounded;
+        chk_exactness_clear(&x);
+        vigen_error err;
+        vigen_error_init(&err);
+        if (!rounded && vigen_tableau_evaluate(&t, 2048, &err) == VIGEN_OK) {
+            exact++;
+            t.generated_now = 1;
+            t.claim_order = t.claim_order_sep = t.claim_order_nys = t.claim_symplectic = -1;
+            chk_theorem_verdict v;
+            int by_theorem = chk_certify_theorem(&v, &t);
+            claims a = certify(&t, 0), b = certify(&t, 1);
+            CHECK_MSG(claims_eq(a, b), "%s: theorem path %d/%d/%d/%d, trees %d/%d/%d/%d", names[k], a.order, a.sep,
+                      a.nys, a.symplectic, b.order, b.sep, b.nys, b.symplectic);
+            if (by_theorem) {
+                decided++;
+                CHECK_MSG(v.order == b.order, "%s: theorem %d, trees %d", names[k], v.order, b.order);
+            }
+        }
+        vigen_error_clear(&err);
+        vigen_tableau_clear(&t);
+    }
+    printf("%d published tableaux with exact entries, %d decided by the theorem\n", exact, decided);
+    return decided;
+}
+
 /* Gauss s = 1..10 at 1000 digits: order exactly 2s by the theorem. */
 static void test_gauss(void)
 {
@@ -208,6 +259,8 @@ int main(void)
     printf("%d specs of the library decided by the theorem\n", decided);
     /* Gauss 1..8 and Radau IIA 2..4 at least */
     CHECK_MSG(decided >= 11, "%d decided by the theorem", decided);
+    /* Gauss 1..3 at least */
+    CHECK(test_published() >= 3);
     test_gauss();
     test_radau_lobatto();
     test_perturbed();
