@@ -14,9 +14,11 @@ static int certify_by_theorem(vigen_tableau *t)
 {
     chk_theorem_verdict v;
     if (!chk_certify_theorem(&v, t)) return 0;
-    if (t->claim_order < 0) t->claim_order = v.order;
-    if (t->claim_order_sep < 0) t->claim_order_sep = v.order;
-    if (t->claim_order_nys < 0) t->claim_order_nys = v.order;
+    if (v.order >= 0) {
+        if (t->claim_order < 0) t->claim_order = v.order;
+        if (t->claim_order_sep < 0) t->claim_order_sep = v.order;
+        if (t->claim_order_nys < 0) t->claim_order_nys = v.order;
+    }
     if (t->claim_symplectic < 0) t->claim_symplectic = v.symplectic;
     return 1;
 }

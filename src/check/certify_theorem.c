@@ -22,7 +22,9 @@
  * alternating ones (separable H), among them the one with a white root and
  * black leaves (Nystrom H).  The tree walk says the same then: every
  * condition up to p holds by the theorem and a bushy one of order p + 1
- * fails.  When any of this is undecided, or C and D give less than B (the
+ * fails.  B holding to order 64, where the checker stops, leaves the order
+ * "at least 64" and undecided, as the check does.  When any of this is
+ * undecided, or C and D give less than B (the
  * Lobatto IIIA-IIIB pair: 2s - 3 < 2s - 2), the caller walks the trees
  * (certify.c).
  */
@@ -33,6 +35,11 @@
 /* The precision at which the refinement loop confirms the holds of exact
  * entries (refine.c, min_confirm). */
 enum { CHK_CERTIFY_CONFIRM_PREC = 1024 };
+
+/* The highest order of B and of the bushy trees the checker decides
+ * (simplifying.c, theorem.c): an order p = 64 by the theorem is "at least
+ * 64" there, its claim left out. */
+enum { CHK_THEOREM_MAX_ORDER = 64 };
 
 /* The precision of `digits` certified digits: the precision the checker
  * reads a decimal of that length at (notes.c, chk_adequate_prec). */
@@ -112,10 +119,11 @@ static int level(chk_part *parts, int nparts, int (*test)(chk_part *, int), int 
     return cap;
 }
 
-/* The order p of the theorem when B holds up to p and fails at p + 1 and C
- * and D reach what the theorem needs for that p (C up to min(p - 1, s): more
- * never helps; D only as far as p <= eta + zeta + 1 asks); 0 when something
- * is undecided, or c != ct, b != bt, or C and D give less than B. */
+/* The order p of the theorem when B holds up to p and fails at p + 1 (or p
+ * is 64, the checker's cap) and C and D reach what the theorem needs for that
+ * p (C up to min(p - 1, s): more never helps; D only as far as p <= eta +
+ * zeta + 1 asks); 0 when something is undecided, or c != ct, b != bt, or C
+ * and D give less than B. */
 static int theorem_order(ctx_t *cx)
 {
     slong s = cx->s;
@@ -123,14 +131,15 @@ static int theorem_order(ctx_t *cx)
     const exactness *x = cx->ex;
     if (cx->has_At && chk_decide_equal(cx, cx->c, cx->ct, x->c, x->ct, 91, &data) != HOLDS) return 0;
     if (cx->has_bt && chk_decide_equal(cx, cx->b, cx->bt, x->b, x->bt, 90, &data) != HOLDS) return 0;
-    /* an s-stage method has at most B(2s) */
+    /* an s-stage method has at most B(2s); the checker looks no further than
+     * order 64 (simplifying.c, theorem.c) */
     int cap = (int)(2 * s + 1);
-    if (cap > 63) cap = 63;
+    if (cap > CHK_THEOREM_MAX_ORDER) cap = CHK_THEOREM_MAX_ORDER;
     chk_part parts[2];
     for (int q = 0; q < n; q++) part_init(parts + q, cx, q, cap);
     int p = 0;
     int pb = level(parts, n, chk_assumption_B, cap);
-    if (pb >= 1 && pb < cap) {
+    if (pb >= 1 && (pb < cap || cap == CHK_THEOREM_MAX_ORDER)) {
         /* C(s) fixes A for distinct nodes: C(s + 1) is not looked for */
         int eta = level(parts, n, chk_assumption_C, pb - 1 < (int)s ? pb - 1 : (int)s);
         int need = pb - 1 - eta;
@@ -171,12 +180,12 @@ static int theorem_round(chk_theorem_verdict *out, const vigen_tableau *t, slong
     /* every bushy tree of order p + 1 fails: the monochromatic ones (general
      * H), the alternating ones (separable H), among them the one with a white
      * root and black leaves (Nystrom H) */
-    int fail[2], all = 0;
-    if (p >= 1 && cx.n_undecided == 0 && (t->claim_order < 0 || t->claim_order == p))
+    int fail[2], all = 0, at_least = p == CHK_THEOREM_MAX_ORDER;
+    if (p >= 1 && !at_least && cx.n_undecided == 0 && (t->claim_order < 0 || t->claim_order == p))
         chk_bushy(&cx, p + 1, p + 1, fail, &all);
-    int decided = all == p + 1 && cx.n_undecided == 0;
+    int decided = (all == p + 1 || (at_least && t->claim_order < 0)) && cx.n_undecided == 0;
     if (decided) {
-        out->order = p;
+        out->order = at_least ? -1 : p;
         out->symplectic = rep.symplectic == VIGEN_CHECK_YES;
         out->prec = prec;
     }

@@ -256,7 +256,7 @@ int chk_bushy(ctx_t *cx, int from, int Q, int fail[2], int *all);
  * precision of its certified digits, and its symplecticity.  Returns 1 and
  * sets *out when all of it is decided; 0 when the trees must decide. */
 typedef struct {
-    int order;                   /* for every family */
+    int order;                   /* for every family; -1: at least 64, undecided as in the check */
     int symplectic;              /* 1 yes, 0 no */
     slong prec;                  /* the precision that decided */
 } chk_theorem_verdict;
