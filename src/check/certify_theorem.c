@@ -22,9 +22,13 @@
  * alternating ones (separable H), among them the one with a white root and
  * black leaves (Nystrom H).  The tree walk says the same then: every
  * condition up to p holds by the theorem and a bushy one of order p + 1
- * fails.  B holding to order 64, where the checker stops, leaves the order
- * "at least 64" and undecided, as the check does.  When any of this is
- * undecided, or C and D give less than B (the
+ * fails.  The failure of order p + 1 must also show on the written digits
+ * (the balls widened by a unit of the last digit), or `vigen check` of the
+ * file could not confirm "order p" (Gauss s = 16 at 16 digits: B(33) fails
+ * by 8e-20, below what 16 digits show).  B holding to order 64, where the
+ * checker stops, leaves the order "at least 64" and undecided, as the check
+ * does; a failing symplecticity condition must show on the written digits
+ * too.  When any of this is undecided, or C and D give less than B (the
  * Lobatto IIIA-IIIB pair: 2s - 3 < 2s - 2), the caller walks the trees
  * (certify.c).
  */
@@ -89,6 +93,23 @@ static void all_exact(exactness *x, const vigen_tableau *u)
     x->any_rounded = 0;
 }
 
+/* x += |x| 10^(1 - digits) in radius: at least one unit of the last of
+ * `digits` significant digits, so the ball holds the written decimal and
+ * the ball `vigen check` reads it as (that decimal +- half a unit). */
+static void widen_to_digits(arb_t x, slong digits)
+{
+    mag_t m, u;
+    mag_init(m);
+    mag_init(u);
+    arf_get_mag(m, arb_midref(x));
+    mag_set_ui(u, 10);
+    mag_pow_ui(u, u, (ulong)(digits - 1));
+    mag_div(m, m, u);
+    mag_add(arb_radref(x), arb_radref(x), m);
+    mag_clear(m);
+    mag_clear(u);
+}
+
 /* One part (c, A, b) of the tableau (0: A, 1: At), every entry exact, with
  * the powers of its c up to kmax. */
 static void part_init(chk_part *p, ctx_t *cx, int part, int kmax)
@@ -149,53 +170,112 @@ static int theorem_order(ctx_t *cx)
     return p;
 }
 
+/* The checker's state for conditions on the balls of t at prec, every
+ * entry exact; widened: the balls of A, At, b, bt widened to the written
+ * digits (widen_to_digits), what `vigen check` of the written file sees. */
+typedef struct {
+    vigen_tableau u;
+    exactness ex;
+    vigen_check_report rep;
+    ctx_t cx;
+    chk_round rd;
+} certify_round;
+
+static void certify_round_init(certify_round *r, const vigen_tableau *t, slong prec, int widened)
+{
+    slong s = t->s;
+    rounded_copy(&r->u, t, prec);
+    if (widened && t->digits > 0)
+        for (slong i = 0; i < s; i++) {
+            widen_to_digits(r->u.b + i, t->digits);
+            widen_to_digits(r->u.bt + i, t->digits);
+            for (slong j = 0; j < s; j++) {
+                widen_to_digits(arb_mat_entry(r->u.A, i, j), t->digits);
+                widen_to_digits(arb_mat_entry(r->u.At, i, j), t->digits);
+            }
+        }
+    all_exact(&r->ex, &r->u);
+    vigen_check_report_init(&r->rep);
+    r->rep.s = s;
+    r->rep.has_At = t->has_At;
+    r->rep.has_bt = t->has_At && t->has_bt;
+    r->rep.has_ct = t->has_At && t->has_ct;
+    chk_ctx_init(&r->cx, &r->u, &r->ex, r->rep.holds);
+    r->cx.prec = prec;
+    memset(&r->rd, 0, sizeof(r->rd));
+    r->rd.rep = &r->rep;
+    r->rd.cx = &r->cx;
+    r->rd.t = &r->u;
+}
+
+static void certify_round_clear(certify_round *r)
+{
+    for (slong k = 0; k < r->rd.nconds; k++) arb_clear(r->rd.conds[k].r);
+    flint_free(r->rd.conds);
+    if (r->rd.have_mid) chk_midpoints_clear(&r->rd.mid);
+    vigen_check_report_clear(&r->rep);
+    chk_exactness_clear(&r->ex);
+    vigen_tableau_clear(&r->u);
+}
+
+/* Every bushy tree of order n fails on the written digits: what the exact
+ * balls show must show in the file, or `vigen check` of it could not
+ * confirm the order. */
+static int bushy_fail_on_digits(const vigen_tableau *t, slong prec, int n)
+{
+    certify_round r;
+    certify_round_init(&r, t, prec, 1);
+    int fail[2], all = 0;
+    chk_bushy(&r.cx, n, n, fail, &all);
+    certify_round_clear(&r);
+    return all == n;
+}
+
+/* Symplecticity on the written digits (VIGEN_CHECK_YES, _NO, _UNDECIDED). */
+static int symplectic_on_digits(const vigen_tableau *t, slong prec)
+{
+    certify_round r;
+    certify_round_init(&r, t, prec, 1);
+    vigen_error err;
+    vigen_error_init(&err);
+    int v = chk_symplecticity(&r.rd, &err) == VIGEN_OK ? r.rep.symplectic : VIGEN_CHECK_UNDECIDED;
+    vigen_error_clear(&err);
+    certify_round_clear(&r);
+    return v;
+}
+
 /* One round at prec: 1 and *out when every verdict needed is decided. */
 static int theorem_round(chk_theorem_verdict *out, const vigen_tableau *t, slong prec)
 {
-    vigen_tableau u;
-    rounded_copy(&u, t, prec);
-    exactness ex;
-    all_exact(&ex, &u);
-    vigen_check_report rep;
-    vigen_check_report_init(&rep);
-    rep.s = t->s;
-    rep.has_At = t->has_At;
-    rep.has_bt = t->has_At && t->has_bt;
-    rep.has_ct = t->has_At && t->has_ct;
-    ctx_t cx;
-    chk_ctx_init(&cx, &u, &ex, rep.holds);
-    cx.prec = prec;
-    chk_round rd;
-    memset(&rd, 0, sizeof(rd));
-    rd.rep = &rep;
-    rd.cx = &cx;
-    rd.t = &u;
+    certify_round r;
+    certify_round_init(&r, t, prec, 0);
+    ctx_t *cx = &r.cx;
     vigen_error err;
     vigen_error_init(&err);
-    int rc = chk_consistency(&rd, &err);
-    if (rc == VIGEN_OK) rc = chk_symplecticity(&rd, &err);
+    int rc = chk_consistency(&r.rd, &err);
+    if (rc == VIGEN_OK) rc = chk_symplecticity(&r.rd, &err);
+    int sympl = r.rep.symplectic;
+    /* not symplectic on the exact balls: so in the file too, or undecided */
+    if (rc == VIGEN_OK && sympl == VIGEN_CHECK_NO && symplectic_on_digits(t, prec) != VIGEN_CHECK_NO)
+        sympl = VIGEN_CHECK_UNDECIDED;
     int p = 0;
-    if (rc == VIGEN_OK && rep.consistent == VIGEN_CHECK_YES && rep.symplectic != VIGEN_CHECK_UNDECIDED)
-        p = theorem_order(&cx);
+    if (rc == VIGEN_OK && r.rep.consistent == VIGEN_CHECK_YES && sympl != VIGEN_CHECK_UNDECIDED)
+        p = theorem_order(cx);
     /* every bushy tree of order p + 1 fails: the monochromatic ones (general
      * H), the alternating ones (separable H), among them the one with a white
      * root and black leaves (Nystrom H) */
     int fail[2], all = 0, at_least = p == CHK_THEOREM_MAX_ORDER;
-    if (p >= 1 && !at_least && cx.n_undecided == 0 && (t->claim_order < 0 || t->claim_order == p))
-        chk_bushy(&cx, p + 1, p + 1, fail, &all);
-    int decided = (all == p + 1 || (at_least && t->claim_order < 0)) && cx.n_undecided == 0;
+    if (p >= 1 && !at_least && cx->n_undecided == 0 && (t->claim_order < 0 || t->claim_order == p))
+        chk_bushy(cx, p + 1, p + 1, fail, &all);
+    int decided = (all == p + 1 || (at_least && t->claim_order < 0)) && cx->n_undecided == 0;
+    if (decided && !at_least) decided = bushy_fail_on_digits(t, prec, p + 1);
     if (decided) {
         out->order = at_least ? -1 : p;
-        out->symplectic = rep.symplectic == VIGEN_CHECK_YES;
+        out->symplectic = sympl == VIGEN_CHECK_YES;
         out->prec = prec;
     }
     vigen_error_clear(&err);
-    for (slong k = 0; k < rd.nconds; k++) arb_clear(rd.conds[k].r);
-    flint_free(rd.conds);
-    if (rd.have_mid) chk_midpoints_clear(&rd.mid);
-    vigen_check_report_clear(&rep);
-    chk_exactness_clear(&ex);
-    vigen_tableau_clear(&u);
+    certify_round_clear(&r);
     return decided;
 }
 

@@ -189,6 +189,34 @@ static void test_gauss(void)
     rmdir(dir);
 }
 
+/* Gauss s = 16 at 16 digits: B(33) fails by (16!)^4 / (33 (32!)^2) = 8.4e-20
+ * (the quadrature error of x^32), which 16 digits do not show: the theorem
+ * path declines, as `vigen check` of the written file could not confirm
+ * order 32, and certification reports what the tree walk does. */
+static void test_short_digits(void)
+{
+    char dir[] = "/tmp/vigen_certify_XXXXXX", path[256];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof(path), "%s/gauss16.lua", dir);
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (f == NULL) return;
+    fputs("return { name = \"gauss16\", basis = \"lagrange\", nodes = gauss_legendre(16) }\n", f);
+    fclose(f);
+    vigen_tableau t;
+    CHECK(generate(&t, path, 16) == VIGEN_OK);
+    chk_theorem_verdict v;
+    CHECK(!chk_certify_theorem(&v, &t));
+    CHECK(claims_eq(certify(&t, 0), certify(&t, 1)));
+    vigen_tableau_clear(&t);
+    /* at 100 digits it shows: order 32 */
+    CHECK(generate(&t, path, 100) == VIGEN_OK);
+    CHECK(chk_certify_theorem(&v, &t) && v.order == 32);
+    vigen_tableau_clear(&t);
+    remove(path);
+    rmdir(dir);
+}
+
 /* An RK tableau from exact texts, its balls at prec (they contain the exact
  * values, as the generator's do). */
 static void rk_exact(vigen_tableau *t, slong s, const char *const *c, const char *const *A, const char *const *b)
@@ -264,6 +292,7 @@ int main(void)
     test_gauss();
     test_radau_lobatto();
     test_perturbed();
+    test_short_digits();
     flint_cleanup();
     if (testlib_failures) fprintf(stderr, "%d failures\n", testlib_failures);
     return testlib_failures != 0;
