@@ -464,7 +464,13 @@ int vigen_check_certified_order(const vigen_check_report *rep, int family, int *
 
 /* Checks t (a copy; its texts as written, as `vigen check` reads the file)
  * and records what is certified as the file's claims: order = p when the
- * order is decided, symplectic = true or false when decided.  A claim
+ * order is decided, symplectic = true or false when decided.  For a tableau
+ * the generator has just made (t->generated_now) the order is first decided
+ * by Butcher's theorem on the generator's balls (B(p), C, D and every bushy
+ * tree of order p + 1 failing, at the precision of its digits up to 1024
+ * bits), which gives what the check would; the
+ * check runs where the theorem does not decide.  The environment variable
+ * VIGEN_CERTIFY_TREES=1 makes it run always.  A claim
  * t->claim_order already set (a spec's order = p) that is false is an error
  * (VIGEN_E_MATH) naming the failing tree. */
 int vigen_check_certify(vigen_tableau *t, const char *path, vigen_error *err);

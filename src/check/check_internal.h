@@ -235,6 +235,48 @@ int chk_lie_log(arb_ptr lg, const vigen_tableau *t, slong N, int flip, slong pre
 void chk_lie_lyndon(vigen_check_lie_error *le, arb_ptr lg, slong N, slong n, int nb, slong prec);
 slong chk_adequate_prec(const vigen_tableau *t);
 
+/* simplifying.c: the simplifying assumptions of one part (c, A, b) of the
+ * tableau, decided: B(k) sum_i b_i c_i^(k-1) = 1/k, C(k) sum_j a_ij
+ * c_j^(k-1) = c_i^k / k for every i, D(k) sum_i b_i c_i^(k-1) a_ij = b_j (1 -
+ * c_j^k) / k for every j; HOLDS, FAILS or UNDECIDED (the worst over i, j). */
+typedef struct {
+    ctx_t *cx;
+    const arb_mat_struct *A;
+    arb_srcptr b, c;
+    arb_ptr cp;                  /* cp[k*s + i] = c_i^k, k = 0..cap */
+    int exact;                   /* every entry of (c, A, b) of the part is exact (D) */
+    int exact_B;                 /* ... of (c, b) (B) */
+    int exact_C;                 /* ... of (c, A) (C) */
+    int part;                    /* 0: (c, A, b), 1: (ct, At, bt) */
+} chk_part;
+int chk_assumption_B(chk_part *p, int k);
+int chk_assumption_C(chk_part *p, int k);
+int chk_assumption_D(chk_part *p, int k);
+
+/* theorem.c: x_i = y_i for every i (b = bt, c = ct; ex, ey: which are
+ * exact), HOLDS, FAILS or UNDECIDED, *data |= some hold is within the
+ * precision of the data; and the bushy trees of orders from..Q, root
+ * weights bhat (b or bt), leaves rows of M (A or At): sum_i bhat_i (M 1)_i^(n-1)
+ * = 1/n.  fail[0]: the first order where one fails (general H), fail[1]: where
+ * one with leaves of the other colour fails (separable H), *all: where all
+ * four fail (0: none); it stops when fail[0] and fail[1] are set and returns
+ * the last order evaluated. */
+int chk_decide_equal(ctx_t *cx, arb_srcptr x, arb_srcptr y, const unsigned char *ex, const unsigned char *ey,
+                     slong id, int *data);
+int chk_bushy(ctx_t *cx, int from, int Q, int fail[2], int *all);
+
+/* certify_theorem.c: the order of a tableau with balls (a generated one),
+ * exactly p for general, separable and Nystrom H, decided by Butcher's
+ * theorem and a failing bushy tree of order p + 1 on its balls at the
+ * precision of its certified digits, and its symplecticity.  Returns 1 and
+ * sets *out when all of it is decided; 0 when the trees must decide. */
+typedef struct {
+    int order;                   /* for every family; -1: at least 64, undecided as in the check */
+    int symplectic;              /* 1 yes, 0 no */
+    slong prec;                  /* the precision that decided */
+} chk_theorem_verdict;
+int chk_certify_theorem(chk_theorem_verdict *out, const vigen_tableau *t);
+
 /* checks.c: one round of every check of vigen/check_fields.def */
 int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,
                   const exactness *ex_against, int P, vigen_error *err);

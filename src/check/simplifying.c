@@ -4,17 +4,6 @@
 #include <stdlib.h>
 #include "check/check_internal.h"
 
-typedef struct {
-    ctx_t *cx;
-    const arb_mat_struct *A;
-    arb_srcptr b, c;
-    arb_ptr cp;                  /* cp[k*s + i] = c_i^k, k = 0..cap */
-    int exact;                   /* every entry of (c, A, b) of the part is exact (D) */
-    int exact_B;                 /* ... of (c, b) (B) */
-    int exact_C;                 /* ... of (c, A) (C) */
-    int part;                    /* 0: (c, A, b), 1: (ct, At, bt) */
-} part_t;
-
 static int worst_status(int a, int b)
 {
     if (a == FAILS || b == FAILS) return FAILS;
@@ -50,7 +39,7 @@ static void mag_add_arb(mag_t m, const arb_t x)
 }
 
 /* B(k): sum_i b_i c_i^(k-1) = 1/k */
-static int assumption_B(part_t *p, int k)
+int chk_assumption_B(chk_part *p, int k)
 {
     slong s = p->cx->s, prec = p->cx->prec;
     arb_t r, q;
@@ -73,7 +62,7 @@ static int assumption_B(part_t *p, int k)
 }
 
 /* C(k): sum_j a_ij c_j^(k-1) = c_i^k / k for every i */
-static int assumption_C(part_t *p, int k)
+int chk_assumption_C(chk_part *p, int k)
 {
     slong s = p->cx->s, prec = p->cx->prec;
     int st = HOLDS;
@@ -99,7 +88,7 @@ static int assumption_C(part_t *p, int k)
 }
 
 /* D(k): sum_i b_i c_i^(k-1) a_ij = b_j (1 - c_j^k) / k for every j */
-static int assumption_D(part_t *p, int k)
+int chk_assumption_D(chk_part *p, int k)
 {
     slong s = p->cx->s, prec = p->cx->prec;
     int st = HOLDS;
@@ -109,12 +98,14 @@ static int assumption_D(part_t *p, int k)
     arb_init(q);
     arb_init(u);
     mag_init(m);
+    /* b_i c_i^(k-1), the same for every j */
+    arb_ptr bc = _arb_vec_init(s);
+    for (slong i = 0; i < s; i++) arb_mul(bc + i, p->b + i, p->cp + (k - 1) * s + i, prec);
     for (slong j = 0; j < s; j++) {
         arb_zero(r);
         mag_zero(m);
         for (slong i = 0; i < s; i++) {
-            arb_mul(u, p->b + i, p->cp + (k - 1) * s + i, prec);
-            arb_addmul(r, u, arb_mat_entry(p->A, i, j), prec);
+            arb_addmul(r, bc + i, arb_mat_entry(p->A, i, j), prec);
             mag_addmul3(m, p->b + i, p->cp + (k - 1) * s + i, arb_mat_entry(p->A, i, j));
         }
         /* b_j (1 + |c_j|^k) / k bounds the right side's terms */
@@ -131,6 +122,7 @@ static int assumption_D(part_t *p, int k)
         chk_ctx_shape(p->cx, k + 1, (ulong)k, 3 * p->part + 2, k, j);   /* b_j/k has fewer factors: D^1 | D^(k+1) */
         st = worst_status(st, chk_decide(p->cx, r, p->exact, m));
     }
+    _arb_vec_clear(bc, s);
     arb_clear(r);
     arb_clear(q);
     arb_clear(u);
@@ -146,7 +138,7 @@ static unsigned long long levels_upto(int k)
 
 /* The level of one assumption; *data: bit k-1 set when level k holds with
  * some condition within the precision of the data (cap <= 64). */
-static vigen_check_level level_of(part_t *p, int (*fn)(part_t *, int), int cap, unsigned long long *data)
+static vigen_check_level level_of(chk_part *p, int (*fn)(chk_part *, int), int cap, unsigned long long *data)
 {
     vigen_check_level L = {cap, 1, 0, 0, 0};
     const vigen_check_holds *h = p->cx->holds + p->cx->section;
@@ -181,7 +173,7 @@ int chk_simplifying(chk_round *rd, vigen_error *err)
     rep->simplifying_cap = cap;
     cx->section = VIGEN_CHECK_SECT_SIMPLIFYING;
     for (int part = 0; part < 2; part++) {
-        part_t p;
+        chk_part p;
         p.cx = cx;
         p.part = part;
         p.exact = cx->ex->part_c[part];
@@ -206,9 +198,9 @@ int chk_simplifying(chk_round *rd, vigen_error *err)
         for (int k = 1; k <= cap; k++)
             for (slong i = 0; i < s; i++) arb_mul(p.cp + k * s + i, p.cp + (k - 1) * s + i, p.c + i, cx->prec);
         unsigned long long dB, dC, dD;
-        rep->B[part] = level_of(&p, assumption_B, cap, &dB);
-        rep->C[part] = level_of(&p, assumption_C, cap, &dC);
-        rep->D[part] = level_of(&p, assumption_D, cap, &dD);
+        rep->B[part] = level_of(&p, chk_assumption_B, cap, &dB);
+        rep->C[part] = level_of(&p, chk_assumption_C, cap, &dC);
+        rep->D[part] = level_of(&p, chk_assumption_D, cap, &dD);
         /* stage order: C(q) and B(q) */
         vigen_check_level B = rep->B[part], C = rep->C[part], S;
         S.value = B.value < C.value ? B.value : C.value;

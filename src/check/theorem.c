@@ -19,8 +19,8 @@ static int imin(int a, int b) { return a < b ? a : b; }
 
 /* Decides x_i = y_i for every i (b = bt, c = ct); HOLDS, FAILS or UNDECIDED,
  * and *data when some hold is within the precision of the data. */
-static int decide_equal(ctx_t *cx, arb_srcptr x, arb_srcptr y, const unsigned char *ex, const unsigned char *ey,
-                        slong id, int *data)
+int chk_decide_equal(ctx_t *cx, arb_srcptr x, arb_srcptr y, const unsigned char *ex, const unsigned char *ey,
+                     slong id, int *data)
 {
     int st = HOLDS;
     arb_t r;
@@ -37,9 +37,7 @@ static int decide_equal(ctx_t *cx, arb_srcptr x, arb_srcptr y, const unsigned ch
     return st;
 }
 
-/* The bushy trees of order 1..Q: root weights bhat (colour r), leaves rows of
- * M (colour l): sum_i bhat_i (M 1)_i^(q-1) = 1/q. */
-static void bushy(ctx_t *cx, vigen_check_theorem *th, int Q)
+int chk_bushy(ctx_t *cx, int from, int Q, int fail[2], int *all)
 {
     slong s = cx->s, prec = cx->prec;
     const arb_mat_struct *M[2] = {cx->A, cx->At};
@@ -58,13 +56,18 @@ static void bushy(ctx_t *cx, vigen_check_theorem *th, int Q)
             for (slong j = 0; j < s; j++) arb_add(rs + l * s + i, rs + l * s + i, arb_mat_entry(M[l], i, j), prec);
             arb_one(pw + l * s + i);
         }
-    th->bushy_fail[0] = th->bushy_fail[1] = 0;
-    th->bushy_to = 0;
-    for (int n = 1; n <= Q; n++) {
-        if (n > 1)
+    /* from the first order asked: (M 1)^(from - 1) at once */
+    if (from > 1)
+        for (slong k = 0; k < 2 * s; k++) arb_pow_ui(pw + k, rs + k, (ulong)(from - 1), prec);
+    fail[0] = fail[1] = 0;
+    int to = from - 1;
+    *all = 0;
+    for (int n = from; n <= Q; n++) {
+        if (n > from)
             for (slong k = 0; k < 2 * s; k++) arb_mul(pw + k, pw + k, rs + k, prec);
         arb_one(q);
         arb_div_ui(q, q, (ulong)n, prec);
+        int nfail = 0;
         for (int root = 0; root < 2; root++)
             for (int leaf = 0; leaf < 2; leaf++) {
                 arb_dot(v, NULL, 0, bh[root], 1, pw + leaf * s, 1, s, prec);
@@ -84,14 +87,16 @@ static void bushy(ctx_t *cx, vigen_check_theorem *th, int Q)
                 int exact = cx->ex->part[root] && cx->ex->part[leaf];
                 chk_ctx_shape(cx, n, (ulong)n, 100 + n, root, leaf);
                 int st = chk_decide(cx, r, exact, m);
+                nfail += st == FAILS;
                 if (st != FAILS) continue;
                 /* leaves of the root's colour: a monochromatic tree (general H);
                  * of the other colour (or a single vertex): alternating, separable H too */
-                if (!th->bushy_fail[0]) th->bushy_fail[0] = n;
-                if ((leaf != root || n == 1) && !th->bushy_fail[1]) th->bushy_fail[1] = n;
+                if (!fail[0]) fail[0] = n;
+                if ((leaf != root || n == 1) && !fail[1]) fail[1] = n;
             }
-        th->bushy_to = n;
-        if (th->bushy_fail[0] && th->bushy_fail[1]) break;
+        to = n;
+        if (nfail == 4 && !*all) *all = n;
+        if (fail[0] && fail[1]) break;
     }
     _arb_vec_clear(rs, 2 * s);
     _arb_vec_clear(pw, 2 * s);
@@ -100,6 +105,7 @@ static void bushy(ctx_t *cx, vigen_check_theorem *th, int Q)
     arb_clear(r);
     mag_clear(m);
     mag_clear(t);
+    return to;
 }
 
 int chk_theorem(chk_round *rd, vigen_error *err)
@@ -119,10 +125,10 @@ int chk_theorem(chk_round *rd, vigen_error *err)
     /* b = bt and c = ct (aliases when the tableau does not give them) */
     int data = 0, eq = HOLDS;
     th->why_not = NULL;
-    if (cx->has_bt) eq = decide_equal(cx, cx->b, cx->bt, x->b, x->bt, 90, &data);
+    if (cx->has_bt) eq = chk_decide_equal(cx, cx->b, cx->bt, x->b, x->bt, 90, &data);
     if (eq != HOLDS) th->why_not = eq == FAILS ? "b != bt" : "b = bt is undecided";
     if (eq == HOLDS && cx->has_At) {
-        eq = decide_equal(cx, cx->c, cx->ct, x->c, x->ct, 91, &data);
+        eq = chk_decide_equal(cx, cx->c, cx->ct, x->c, x->ct, 91, &data);
         if (eq != HOLDS) th->why_not = eq == FAILS ? "c != ct" : "c = ct is undecided";
     }
     if (eq == HOLDS && rep->consistent != VIGEN_CHECK_YES) th->why_not = "the row sums do not all hold";
@@ -143,6 +149,7 @@ int chk_theorem(chk_round *rd, vigen_error *err)
     if (Q < rd->P + 1) Q = rd->P + 1;
     if (rep->claim_order >= 0 && Q < rep->claim_order + 1) Q = rep->claim_order + 1;
     if (Q > 64) Q = 64;
-    bushy(cx, th, Q);
+    int all;
+    th->bushy_to = chk_bushy(cx, 1, Q, th->bushy_fail, &all);
     return VIGEN_OK;
 }
