@@ -171,6 +171,10 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
  * enumerated order conditions, Butcher's theorem beyond them), -1 when it is
  * not decided. */
 int vigen_emit_certified_order(const vigen_tableau *t);
+/* The same for a family of problems (VIGEN_CHECK_GENERAL, VIGEN_CHECK_SEPARABLE,
+ * ... of vigen/check.h): the split variant's order with exact flows is the
+ * order for H = T(p) + V(q). */
+int vigen_emit_certified_order_family(const vigen_tableau *t, int family);
 
 /* Loads FILE for emission, once (vigen_method_load), and asks it for the
  * tableau (vigen_method_tableau): a tableau file as it is; a spec generated with
