@@ -23,6 +23,23 @@
 #include "vigen/error.h"
 #include "vigen/limits.h"
 
+/* the longest generalized_order claim read */
+#define VIGEN_MAX_GENERALIZED 16
+
+/* The named flows of a splitting file (`flows = {...}`,
+ * src/method/splitting_file.h) whose method became this tableau.  Two flows:
+ * the first is the letter A of the substeps (substep_drift[k] = 1), the
+ * second B. */
+typedef struct {
+    slong nflows;
+    char **names;          /* [nflows] */
+    int perturbation;      /* the flow that carries epsilon in H = A + eps B */
+    slong ncorrector;      /* a processed method: the first ncorrector substeps are the corrector C and
+                            * the last ncorrector its inverse (kernel between); 0 otherwise */
+    int ngeneralized;      /* the claim generalized_order = {r1, ..., rk}; 0 when absent */
+    int generalized[VIGEN_MAX_GENERALIZED];
+} vigen_flows;
+
 typedef struct {
     char *name;
     slong s;
@@ -52,6 +69,7 @@ typedef struct {
     slong nsubsteps;
     int *substep_drift;
     char **substep_coef;
+    vigen_flows *flows;          /* named flows of the splitting file; NULL for every other method */
 } vigen_tableau;
 
 /* Allocates an s-stage tableau with all balls zero and no texts. */
@@ -63,6 +81,9 @@ void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src);
 /* Replaces t's substeps by copies of drift[0..n-1] and coef[0..n-1] (n = 0:
  * none). */
 void vigen_tableau_set_substeps(vigen_tableau *t, slong n, const int *drift, char *const *coef);
+
+/* Replaces t's named flows by a copy of fl (NULL: none). */
+void vigen_tableau_set_flows(vigen_tableau *t, const vigen_flows *fl);
 
 /* Reads a tableau file (run once in a fresh sandbox).  Messages name the file
  * and the entry ("gauss2.lua: A[2][1]: ..."): missing fields, wrong sizes, Lua

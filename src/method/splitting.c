@@ -169,18 +169,67 @@ static void take_info(vigen_tableau *t, vigen_tableau *info)
     t->digits = info->digits;
 }
 
+/* One step of the method as substeps: the kernel, or for a processed method
+ * the corrector C, the kernel and C^-1 (C's substeps reversed and negated).
+ * drift[k] is the letter: 1 for the first flow (A, the drift), 0 for the
+ * second (B, the kick). */
+static int step_substeps(vigen_splitting *step, const vigen_splitting *sp, const char *path, vigen_error *err)
+{
+    memset(step, 0, sizeof *step);
+    if (sp->nflows > 2)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: a splitting of %ld flows: its order is not decided for more "
+                               "than two flows (vigen checks splittings of two flows, A + B)", path, (long)sp->nflows);
+    slong m = sp->ncorrector, n = sp->n + 2 * m;
+    step->n = n;
+    step->drift = calloc((size_t)n, sizeof *step->drift);
+    step->coef = texts_alloc(n);
+    if (step->drift == NULL) abort();
+    for (slong k = 0; k < m; k++) {
+        step->drift[k] = sp->corrector_flow[k] == 0;
+        step->coef[k] = vigen_strdup(sp->corrector_coef[k]);
+        step->drift[n - 1 - k] = step->drift[k];
+        step->coef[n - 1 - k] = vigen_strdup_printf("-(%s)", sp->corrector_coef[k]);
+    }
+    for (slong k = 0; k < sp->n; k++) {
+        step->drift[m + k] = sp->drift[k];
+        step->coef[m + k] = vigen_strdup(sp->coef[k]);
+    }
+    return VIGEN_OK;
+}
+
+/* the named flows, the corrector's length and the generalized-order claim
+ * onto the tableau (files with `flows` or `corrector` only) */
+static void take_flows(vigen_tableau *t, const vigen_splitting *sp)
+{
+    if (!sp->named && sp->ncorrector == 0) return;
+    vigen_flows fl;
+    memset(&fl, 0, sizeof fl);
+    fl.nflows = sp->nflows;
+    fl.names = sp->flow_names;
+    fl.perturbation = sp->perturbation;
+    fl.ncorrector = sp->ncorrector;
+    fl.ngeneralized = sp->ngeneralized;
+    memcpy(fl.generalized, sp->generalized, sizeof fl.generalized);
+    vigen_tableau_set_flows(t, &fl);
+}
+
 int vigen_method_splitting_read(void **state, vigen_sandbox *sb, const char *path, vigen_method_loader load,
                                 vigen_error *err)
 {
     *state = NULL;
-    vigen_splitting sp;
+    vigen_splitting sp, step;
     vigen_tableau info, t;
     vigen_tableau_init(&info, 1);
     int rc = vigen_splitting_from_table(&sp, &info, sb, path, err);
     vigen_sandbox_free(sb);
     if (rc == VIGEN_OK) {
-        rc = splitting_tableau(&t, &sp, path, err);
-        if (rc == VIGEN_OK) vigen_tableau_set_substeps(&t, sp.n, sp.drift, sp.coef);
+        rc = step_substeps(&step, &sp, path, err);
+        if (rc == VIGEN_OK) rc = splitting_tableau(&t, &step, path, err);
+        if (rc == VIGEN_OK) {
+            vigen_tableau_set_substeps(&t, step.n, step.drift, step.coef);
+            take_flows(&t, &sp);
+        }
+        vigen_splitting_clear(&step);
         vigen_splitting_clear(&sp);
     }
     if (rc == VIGEN_OK) {
@@ -323,6 +372,14 @@ static void compose(vigen_tableau *t, const vigen_tableau *u, const vigen_compos
                 coef[l * n + k] = product_text(co->gamma[l], u->substep_coef[k]);
             }
         vigen_tableau_set_substeps(t, N, drift, coef);
+        /* a composition's step is no longer C K C^-1: the generalized-order
+         * claim and the corrector belong to the base */
+        if (u->flows) {
+            vigen_flows fl = *u->flows;
+            fl.ncorrector = 0;
+            fl.ngeneralized = 0;
+            vigen_tableau_set_flows(t, &fl);
+        }
         for (slong k = 0; k < N; k++) free(coef[k]);
         free(coef);
         free(drift);

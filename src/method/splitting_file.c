@@ -56,57 +56,206 @@ static int start(lua_State *L, vigen_sandbox *sb, const char *const *known, vige
 void vigen_splitting_clear(vigen_splitting *sp)
 {
     for (slong k = 0; k < sp->n && sp->coef; k++) free(sp->coef[k]);
+    for (slong k = 0; k < sp->nflows && sp->flow_names; k++) free(sp->flow_names[k]);
+    for (slong k = 0; k < sp->ncorrector && sp->corrector_coef; k++) free(sp->corrector_coef[k]);
     free(sp->coef);
     free(sp->drift);
+    free(sp->flow_names);
+    free(sp->flow);
+    free(sp->corrector_flow);
+    free(sp->corrector_coef);
     memset(sp, 0, sizeof *sp);
+}
+
+/* The flow index of the string on top of the stack, -1 when it names none. */
+static int flow_index(lua_State *L, const vigen_splitting *sp)
+{
+    if (lua_type(L, -1) != LUA_TSTRING) return -1;
+    size_t len = 0;
+    const char *name = lua_tolstring(L, -1, &len);
+    for (slong f = 0; f < sp->nflows; f++)
+        if (strlen(sp->flow_names[f]) == len && memcmp(sp->flow_names[f], name, len) == 0) return (int)f;
+    return -1;
+}
+
+static void flow_list(vigen_strbuf *sb, const vigen_splitting *sp)
+{
+    for (slong f = 0; f < sp->nflows; f++)
+        vigen_strbuf_printf(sb, "%s\"%s\"", f ? ", " : "", sp->flow_names[f]);
+}
+
+/* `flows` (absent: the kick/drift file's two flows "drift" and "kick") */
+static int read_flows(vigen_splitting *sp, lua_State *L, const char *path, vigen_error *err)
+{
+    static const char *const kick_drift[2] = {"drift", "kick"};
+    push_raw(L, "flows");
+    int rc = VIGEN_OK;
+    if (lua_isnil(L, -1)) {
+        sp->nflows = 2;
+        sp->flow_names = calloc(2, sizeof *sp->flow_names);
+        if (sp->flow_names == NULL) abort();
+        for (int f = 0; f < 2; f++) sp->flow_names[f] = vigen_strdup(kick_drift[f]);
+        lua_pop(L, 1);
+        return VIGEN_OK;
+    }
+    sp->named = 1;
+    lua_Integer n = plain_list(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : -1;
+    if (n < 2 || n > VIGEN_MAX_STAGES) {
+        lua_pop(L, 1);
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: 'flows' must be a plain list of 2 to %d flow names, e.g. "
+                               "flows = {\"kepler\", \"interaction\"}", path, VIGEN_MAX_STAGES);
+    }
+    sp->flow_names = calloc((size_t)n, sizeof *sp->flow_names);
+    if (sp->flow_names == NULL) abort();
+    for (slong k = 0; k < n && rc == VIGEN_OK; k++) {
+        lua_rawgeti(L, -1, k + 1);
+        size_t len = 0;
+        const char *name = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &len) : NULL;
+        char label[32];
+        snprintf(label, sizeof label, "flows[%ld]", (long)(k + 1));
+        int dup = flow_index(L, sp);
+        if (name == NULL || len == 0)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: %s must be a flow name (a non-empty string)", path, label);
+        else if ((rc = vigen_refuse_nul(name, len, path, label, err)) != VIGEN_OK) {
+        } else if (dup >= 0)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: %s \"%s\" repeats flows[%d]; each flow is named once",
+                                 path, label, name, dup + 1);
+        else sp->flow_names[sp->nflows++] = vigen_strdup(name);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    if (rc != VIGEN_OK) return rc;
+    push_raw(L, "perturbation");
+    sp->perturbation = 1;
+    if (!lua_isnil(L, -1)) {
+        int f = flow_index(L, sp);
+        if (f < 0) {
+            vigen_strbuf sb;
+            vigen_strbuf_init(&sb);
+            flow_list(&sb, sp);
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'perturbation' must name one of the flows (%s): the part "
+                                 "eps B of H = A + eps B", path, sb.data);
+            vigen_strbuf_clear(&sb);
+        }
+        sp->perturbation = f;
+    }
+    lua_pop(L, 1);
+    return rc;
+}
+
+/* The list `key` of substeps {FLOW, coef} (the table on top of the stack),
+ * from 1 (min) to max entries, into flow[] and coef[]. */
+static int read_substeps(slong *out_n, int **out_flow, char ***out_coef, const vigen_splitting *sp, lua_State *L,
+                         const char *key, lua_Integer min, const char *path, vigen_error *err)
+{
+    vigen_strbuf names, shape;
+    vigen_strbuf_init(&names);
+    vigen_strbuf_init(&shape);
+    if (sp->named) {
+        flow_list(&names, sp);
+        vigen_strbuf_printf(&shape, "{FLOW, coef} with FLOW one of %s", names.data);
+    } else vigen_strbuf_append(&shape, "{\"kick\", coef} or {\"drift\", coef}");
+    const char *why = sp->named ? "" : " (kick: p <- p - coef h dV/dq; drift: q <- q + coef h dT/dp)";
+    int rc = VIGEN_OK;
+    push_raw(L, key);
+    lua_Integer n = plain_list(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : -1;
+    if (n < min || n > 4 * VIGEN_MAX_STAGES)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: '%s' must be a plain list of %d to %d substeps, each %s",
+                             path, key, (int)min, 4 * VIGEN_MAX_STAGES, shape.data);
+    else {
+        *out_n = (slong)n;
+        *out_flow = calloc((size_t)n, sizeof **out_flow);
+        *out_coef = calloc((size_t)n, sizeof **out_coef);
+        if (*out_flow == NULL || *out_coef == NULL) abort();
+    }
+    for (slong k = 0; k < n && rc == VIGEN_OK; k++) {
+        lua_rawgeti(L, -1, k + 1);
+        int f = -1;
+        if (plain_list(L, -1) && lua_rawlen(L, -1) == 2) {
+            lua_rawgeti(L, -1, 1);
+            f = flow_index(L, sp);
+            if (f < 0 && sp->named && lua_type(L, -1) == LUA_TSTRING) {
+                vigen_strbuf shown;
+                vigen_strbuf_init(&shown);
+                size_t len = 0;
+                const char *name = lua_tolstring(L, -1, &len);
+                vigen_printable_append(&shown, name, len);
+                rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: %s[%ld][1] \"%s\" is not a flow of this file (%s)", path,
+                                     key, (long)(k + 1), shown.data, names.data);
+                vigen_strbuf_clear(&shown);
+            }
+            lua_pop(L, 1);
+        }
+        if (f < 0 && rc == VIGEN_OK)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: %s[%ld] must be %s%s", path, key, (long)(k + 1), shape.data,
+                                 why);
+        if (rc == VIGEN_OK) {
+            (*out_flow)[k] = f;
+            lua_rawgeti(L, -1, 2);
+            char label[48];
+            snprintf(label, sizeof label, "%s[%ld][2]", key, (long)(k + 1));
+            rc = vigen_table_read_entry(L, &(*out_coef)[k], path, label, err);
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    vigen_strbuf_clear(&names);
+    vigen_strbuf_clear(&shape);
+    return rc;
+}
+
+/* the claim generalized_order = {r1, ..., rk} */
+static int read_generalized(vigen_splitting *sp, lua_State *L, const char *path, vigen_error *err)
+{
+    push_raw(L, "generalized_order");
+    int rc = VIGEN_OK;
+    if (!lua_isnil(L, -1)) {
+        lua_Integer n = plain_list(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : -1;
+        if (n < 1 || n > VIGEN_MAX_GENERALIZED || !sp->named)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'generalized_order' (a claim) must be a plain list of 1 to %d "
+                                 "positive integers {r1, r2, ...}, in a file with named 'flows'", path,
+                                 VIGEN_MAX_GENERALIZED);
+        for (lua_Integer k = 0; k < n && rc == VIGEN_OK; k++) {
+            lua_rawgeti(L, -1, k + 1);
+            if (lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 && lua_tointeger(L, -1) < 1000)
+                sp->generalized[sp->ngeneralized++] = (int)lua_tointeger(L, -1);
+            else
+                rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: generalized_order[%ld] must be a positive integer", path,
+                                     (long)(k + 1));
+            lua_pop(L, 1);
+        }
+    }
+    lua_pop(L, 1);
+    return rc;
 }
 
 int vigen_splitting_from_table(vigen_splitting *sp, vigen_tableau *info, vigen_sandbox *sb, const char *path,
                                vigen_error *err)
 {
     static const char *const known[] = {"name", "splitting", "source", "description", "order", "symplectic",
-                                        "order_separable", "order_nystrom", "digits", NULL};
+                                        "order_separable", "order_nystrom", "digits", "flows", "perturbation",
+                                        "corrector", "generalized_order", NULL};
     memset(sp, 0, sizeof *sp);
     lua_State *L = vigen_sandbox_state(sb);
     int rc = start(L, sb, known, info, path, err);
-    if (rc != VIGEN_OK) return rc;
-    push_raw(L, "splitting");
-    lua_Integer n = plain_list(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : -1;
-    if (n < 2 || n > 4 * VIGEN_MAX_STAGES) {
+    if (rc == VIGEN_OK) rc = read_flows(sp, L, path, err);
+    if (rc == VIGEN_OK) rc = read_substeps(&sp->n, &sp->flow, &sp->coef, sp, L, "splitting", 2, path, err);
+    if (rc == VIGEN_OK) {
+        push_raw(L, "corrector");
+        int present = !lua_isnil(L, -1);
         lua_pop(L, 1);
-        return vigen_error_set(err, VIGEN_E_SPEC, "%s: 'splitting' must be a plain list of 2 to %d substeps, each "
-                               "{\"kick\", coef} or {\"drift\", coef}", path, 4 * VIGEN_MAX_STAGES);
+        if (present)
+            rc = read_substeps(&sp->ncorrector, &sp->corrector_flow, &sp->corrector_coef, sp, L, "corrector", 1,
+                               path, err);
     }
-    sp->n = (slong)n;
-    sp->drift = calloc((size_t)n, sizeof *sp->drift);
-    sp->coef = calloc((size_t)n, sizeof *sp->coef);
-    if (sp->drift == NULL || sp->coef == NULL) rc = vigen_error_set(err, VIGEN_E_MEMORY, "out of memory");
-    for (slong k = 0; k < sp->n && rc == VIGEN_OK; k++) {
-        lua_rawgeti(L, -1, k + 1);
-        size_t len = 0;
-        const char *kind = NULL;
-        if (plain_list(L, -1) && lua_rawlen(L, -1) == 2) {
-            lua_rawgeti(L, -1, 1);
-            if (lua_type(L, -1) == LUA_TSTRING) kind = lua_tolstring(L, -1, &len);
-            int is_drift = kind && len == 5 && memcmp(kind, "drift", 5) == 0;
-            int is_kick = kind && len == 4 && memcmp(kind, "kick", 4) == 0;
-            lua_pop(L, 1);
-            if (!is_drift && !is_kick) kind = NULL;
-            sp->drift[k] = is_drift;
-        }
-        if (kind == NULL)
-            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: splitting[%ld] must be {\"kick\", coef} or {\"drift\", coef} "
-                                 "(kick: p <- p - coef h dV/dq; drift: q <- q + coef h dT/dp)", path, (long)(k + 1));
-        if (rc == VIGEN_OK) {
-            lua_rawgeti(L, -1, 2);
-            char label[48];
-            snprintf(label, sizeof label, "splitting[%ld][2]", (long)(k + 1));
-            rc = vigen_table_read_entry(L, &sp->coef[k], path, label, err);
-            lua_pop(L, 1);
-        }
-        lua_pop(L, 1);
+    if (rc == VIGEN_OK) rc = read_generalized(sp, L, path, err);
+    if (rc == VIGEN_OK) {
+        sp->drift = calloc((size_t)sp->n, sizeof *sp->drift);
+        if (sp->drift == NULL) abort();
+        /* kick/drift files: flow 0 is "drift"; two named flows: the first is the letter A */
+        for (slong k = 0; k < sp->n; k++) sp->drift[k] = sp->nflows == 2 && sp->flow[k] == 0;
     }
-    lua_pop(L, 1);
     if (rc != VIGEN_OK) vigen_splitting_clear(sp);
     return rc;
 }

@@ -66,6 +66,7 @@ void vigen_tableau_clear(vigen_tableau *t)
     free(t->generator);
     texts_free(t->substep_coef, t->nsubsteps);
     free(t->substep_drift);
+    vigen_tableau_set_flows(t, NULL);
     memset(t, 0, sizeof(*t));
 }
 
@@ -92,6 +93,18 @@ void vigen_tableau_set_substeps(vigen_tableau *t, slong n, const int *drift, cha
     memcpy(t->substep_drift, drift, sizeof(int) * (size_t)n);
     t->substep_coef = texts_copy(coef, n);
     t->nsubsteps = n;
+}
+
+void vigen_tableau_set_flows(vigen_tableau *t, const vigen_flows *fl)
+{
+    if (t->flows) texts_free(t->flows->names, t->flows->nflows);
+    free(t->flows);
+    t->flows = NULL;
+    if (fl == NULL) return;
+    t->flows = malloc(sizeof *t->flows);
+    if (t->flows == NULL) abort();
+    *t->flows = *fl;
+    t->flows->names = texts_copy(fl->names, fl->nflows);
 }
 
 void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)
@@ -127,6 +140,7 @@ void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)
     dst->claim_order_nys = src->claim_order_nys;
     dst->generated_now = src->generated_now;
     vigen_tableau_set_substeps(dst, src->nsubsteps, src->substep_drift, src->substep_coef);
+    vigen_tableau_set_flows(dst, src->flows);
 }
 
 int vigen_tableau_entry_eval(arb_t res, const char *text, slong prec, vigen_error *err)
