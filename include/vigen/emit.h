@@ -57,9 +57,14 @@
  *   scalar one (templates/prk/batch.h.in, batch.c.in; docs/ensembles.md).
  *
  * Variants: src/emit/variants.def lists the steppers the emitter can write,
- * chosen by name (vigen_emit_options.variant; today one, "prk", the default:
- * the partitioned Runge-Kutta stepper above, for double, long double and
- * float128).  Each is a template directory
+ * chosen by name (vigen_emit_options.variant): "prk", the default, the
+ * partitioned Runge-Kutta stepper above, for double, long double and
+ * float128; and "split", a splitting stepper that calls the exact flows of
+ * the parts of H back (NAME_alloc_split of a vigen_split_problem, the
+ * substeps of the file in order, consecutive ones of a flow merged, time
+ * carried by the first flow; docs/splitting.md), for splitting files and
+ * compositions of them, the default for a file whose `flows` are named
+ * (anything but drift and kick).  Each is a template directory
  * templates/<variant>/ (stepper.h.in, stepper.c.in: readable C with
  * @NAME@ and @@BLOCK@@ slots and @if FLAG@ sections, every slot declared in
  * the template's first comment) and a slot builder in C that computes every

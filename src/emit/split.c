@@ -3,10 +3,12 @@
  *
  * Its input is the method's substeps in order of application, each a flow
  * (by index into the file's flows) and a coefficient text.  A file with
- * named flows gives them as written; a file of kicks and drifts has the two
- * flows "drift" (flow 0, H_0 = T) and "kick" (flow 1, H_1 = V), so that
- * a user who solves T and V exactly (or any two parts) runs any kick-drift
- * method of the library with those flows.
+ * named flows gives them as written (a processed method: one step is the
+ * corrector, the kernel and the corrector's inverse, the state at every
+ * step's end the true one); a file of kicks and drifts has the two flows
+ * "drift" (flow 0, H_0 = T) and "kick" (flow 1, H_1 = V), so that a user who
+ * solves T and V exactly (or any two parts) runs any kick-drift method of
+ * the library with those flows.
  *
  * Consecutive substeps of one flow are merged, their coefficients added in
  * ball arithmetic (exactly: the sum is rounded once), and a substep whose
@@ -37,7 +39,9 @@ typedef struct {
 static const char *const kick_drift_names[] = { "drift", "kick" };
 
 /* The substeps of E's method; VIGEN_E_USAGE when it has none (a tableau
- * that is not a splitting). */
+ * that is not a splitting).  The tableau of a splitting of two flows keeps
+ * its substeps as drifts (the first flow) and kicks (the second), and the
+ * file's names of the flows when it has them. */
 static int split_input_get(split_input *in, emit_ctx *E)
 {
     const vigen_tableau *t = E->t;
@@ -48,6 +52,7 @@ static int split_input_get(split_input *in, emit_ctx *E)
                                "default variant", t->name ? t->name : "unnamed");
     in->nflows = 2;
     in->names = kick_drift_names;
+    if (t->flows != NULL && t->flows->nflows == 2) in->names = (const char *const *)t->flows->names;
     in->n = t->nsubsteps;
     in->flow = malloc(sizeof(int) * (size_t)t->nsubsteps);
     if (in->flow == NULL) abort();

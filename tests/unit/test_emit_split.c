@@ -10,13 +10,18 @@
  *     of h;
  *   - two oscillators split into their rotations (exact flows that
  *     commute): every step is the exact solution, to round-off, at any h;
- *   - the free rigid body, body angular momentum m, H = sum m_i^2 / (2 I_i)
+ *   - the free rigid body, split into its three axis rotations (H1 and
+ *     H2 + H3, the flow of the latter a step of the same method over the
+ *     rotations about axes 2 and 3: a flow of the method's order), and body angular momentum m, H = sum m_i^2 / (2 I_i)
  *     = c1 m1^2 / 2 + c3 m3^2 / 2 + |m|^2 / (2 I2) with c1 = 1/I1 - 1/I2,
  *     c3 = 1/I3 - 1/I2: the Casimir |m|^2 has no flow, so H splits into
  *     rotations about body axes 1 and 3 (exact flows); against classical
  *     RK4 in long double with a step 10^-4 (a method of another kind), the
  *     error falls by 4 and 16 per halving; the Casimir is kept to round-off
  *     and the energy error stays within O(h^p);
+ *   - a file with named flows is emitted as the split variant by default,
+ *     its substeps merged (a zero coefficient dropped, two of one flow
+ *     added): Strang's bits;
  *   - a flow that fails or leaves a NaN: its status (VIGEN_ENONFINITE for
  *     the NaN), t, q, p unchanged bit for bit, failed_steps counted;
  *   - flow calls per step: Strang 2 drifts and 1 kick (the drifts of a step
@@ -45,6 +50,7 @@
 #include "sx_strang.h"
 #include "sx_yoshida.h"
 #include "sx_strang_ld.h"
+#include "sx_rot.h"
 
 /* ---- the harmonic oscillator: dim 1 (or 2 for the two rotations) -------- */
 typedef struct {
@@ -268,6 +274,24 @@ static double rb_error(const vigen_stepper_type *T, void *w, int n, const double
     return sqrt((m[0] - ref[0]) * (m[0] - ref[0]) + (m[1] - ref[1]) * (m[1] - ref[1]) + (m[2] - ref[2]) * (m[2] - ref[2]));
 }
 
+/* Error ratios per halving on the rigid body from n0 steps over [0, 2], the
+ * Casimir at every step and the energy error against the state error. */
+static void rb_check_orders(const char *what, const vigen_stepper_type *T, void *w, double want, int n0,
+                            const double *ref)
+{
+    double e[3], cas[3], en[3];
+    for (int k = 0; k < 3; k++) e[k] = rb_error(T, w, n0 << k, ref, cas + k, en + k);
+    const double r1 = e[0] / e[1], r2 = e[1] / e[2];
+    CHECK_MSG(fabs(r1 / want - 1) < 0.15 && fabs(r2 / want - 1) < 0.15, "%s %s: ratios %g %g (errors %g %g %g)", what,
+              T->name, r1, r2, e[0], e[1], e[2]);
+    for (int k = 0; k < 3; k++) {
+        CHECK_MSG(cas[k] < 1e-14, "%s %s: Casimir moved by %g", what, T->name, cas[k]);
+        /* the energy error is of the order of the method, bounded by the error's size */
+        CHECK_MSG(en[k] < 10 * e[k] + 1e-14, "%s %s: energy error %g, state error %g", what, T->name, en[k], e[k]);
+    }
+    T->free(w);
+}
+
 static void test_rigid_body(void)
 {
     const vigen_flow_fn fl[2] = { rb_axis1, rb_axis3 };
@@ -279,20 +303,78 @@ static void test_rigid_body(void)
         { &sx_strang_type, sx_strang_alloc_split(&sp, NULL), 4, 20 },
         { &sx_yoshida_type, sx_yoshida_alloc_split(&sp, NULL), 16, 10 },
     };
-    for (int c = 0; c < 2; c++) {
-        double e[3], cas[3], en[3];
-        for (int k = 0; k < 3; k++) e[k] = rb_error(cases[c].T, cases[c].w, cases[c].n0 << k, ref, cas + k, en + k);
-        const double r1 = e[0] / e[1], r2 = e[1] / e[2];
-        CHECK_MSG(fabs(r1 / cases[c].want - 1) < 0.15 && fabs(r2 / cases[c].want - 1) < 0.15,
-                  "rigid body %s: ratios %g %g (errors %g %g %g)", cases[c].T->name, r1, r2, e[0], e[1], e[2]);
-        for (int k = 0; k < 3; k++) {
-            CHECK_MSG(cas[k] < 1e-14, "rigid body %s: Casimir moved by %g", cases[c].T->name, cas[k]);
-            /* the energy error is of the order of the method, bounded by the error's size */
-            CHECK_MSG(en[k] < 10 * e[k] + 1e-14, "rigid body %s: energy error %g, state error %g", cases[c].T->name,
-                      en[k], e[k]);
-        }
-        cases[c].T->free(cases[c].w);
+    for (int c = 0; c < 2; c++) rb_check_orders("rigid body", cases[c].T, cases[c].w, cases[c].want, cases[c].n0, ref);
+}
+
+/* The three axis rotations, H = H1 + (H2 + H3), H_i = m_i^2 / (2 I_i): flow 0
+ * the rotation about axis 1, flow 1 that of H2 + H3 by one step of an
+ * emitted stepper of the same method over the rotations about axes 2 and 3
+ * (a flow of the method's order: the order holds). */
+typedef struct { const vigen_stepper_type *T; void *inner; } nested_ctx;
+static int rb_full1(double t, double h, double *q, double *p, void *ctx)
+{
+    (void)t; (void)p; (void)ctx;
+    axis_flow(0, 1 / I1, h, q);
+    return VIGEN_SUCCESS;
+}
+static int rb_full2(double t, double h, double *q, double *p, void *ctx)
+{
+    (void)t; (void)p; (void)ctx;
+    axis_flow(1, 1 / I2, h, q);
+    return VIGEN_SUCCESS;
+}
+static int rb_full3(double t, double h, double *q, double *p, void *ctx)
+{
+    (void)t; (void)p; (void)ctx;
+    axis_flow(2, 1 / I3, h, q);
+    return VIGEN_SUCCESS;
+}
+static int rb_nested(double t, double h, double *q, double *p, void *ctx)
+{
+    const nested_ctx *c = ctx;
+    return c->T->step(c->inner, &t, q, p, h);
+}
+
+static void test_rigid_body_three_axes(void)
+{
+    const vigen_flow_fn inner_fl[2] = { rb_full2, rb_full3 }, outer_fl[2] = { rb_full1, rb_nested };
+    vigen_split_problem inner = { 3, 2, inner_fl, NULL, NULL, NULL };
+    const double m0[3] = { 0.4, 0.8, 0.6 };
+    double ref[3];
+    rb_reference(m0, 2.0, ref);
+    nested_ctx cs = { &sx_strang_type, sx_strang_alloc_split(&inner, NULL) };
+    nested_ctx cy = { &sx_yoshida_type, sx_yoshida_alloc_split(&inner, NULL) };
+    vigen_split_problem outer_s = { 3, 2, outer_fl, &cs, NULL, NULL }, outer_y = { 3, 2, outer_fl, &cy, NULL, NULL };
+    struct { const vigen_stepper_type *T; void *w; double want; int n0; } cases[2] = {
+        { &sx_strang_type, sx_strang_alloc_split(&outer_s, NULL), 4, 20 },
+        { &sx_yoshida_type, sx_yoshida_alloc_split(&outer_y, NULL), 16, 10 },
+    };
+    for (int c = 0; c < 2; c++) rb_check_orders("rigid body, three axes", cases[c].T, cases[c].w, cases[c].want, cases[c].n0, ref);
+    cs.T->free(cs.inner);
+    cy.T->free(cy.inner);
+}
+
+/* A file with named flows ("axis1", "axis3") is emitted as the split variant
+ * without --variant; its Strang step (written with a zero and a repeated
+ * substep, merged by the emitter) has order 2 on the rigid body. */
+static void test_named_flows(void)
+{
+    CHECK(SX_ROT_NFLOWS == 2 && SX_ROT_FLOW_AXIS1 == 0 && SX_ROT_FLOW_AXIS3 == 1 && SX_ROT_SUBSTEPS == 3);
+    CHECK(SX_ROT_ORDER == 2);
+    const vigen_flow_fn fl[2] = { rb_axis1, rb_axis3 };
+    vigen_split_problem sp = { 3, 2, fl, NULL, NULL, NULL };
+    sx_rot_workspace *w = sx_rot_alloc_split(&sp, NULL);
+    sx_strang_workspace *v = sx_strang_alloc_split(&sp, NULL);
+    double t = 0, m[3] = { 0.4, 0.8, 0.6 }, p[3] = { 0 }, tv = 0, mv[3] = { 0.4, 0.8, 0.6 }, pv[3] = { 0 };
+    for (int k = 0; k < 50; k++) {
+        CHECK(sx_rot_step(w, &t, m, p, 0.04) == VIGEN_SUCCESS);
+        CHECK(sx_strang_step(v, &tv, mv, pv, 0.04) == VIGEN_SUCCESS);
     }
+    /* the same method as Stormer-Verlet's drift-kick-drift: the same bits */
+    CHECK(memcmp(m, mv, sizeof m) == 0 && t == tv);
+    CHECK(sx_rot_flow_calls(w, 0) == 100 && sx_rot_flow_calls(w, 1) == 50);
+    sx_rot_free(w);
+    sx_strang_free(v);
 }
 
 /* ---- failures: the flow's status, the state unchanged --------------------- */
@@ -496,6 +578,8 @@ int main(void)
     test_oscillator_order();
     test_commuting_rotations();
     test_rigid_body();
+    test_rigid_body_three_axes();
+    test_named_flows();
     test_failures();
     test_restart();
     test_ensemble();
