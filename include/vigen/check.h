@@ -273,11 +273,48 @@ typedef struct {
     const char *why;             /* when not computed (static) */
     int degree;                  /* p + 1 */
     slong nterms;                /* Lyndon words of that length */
+    slong ncap;                  /* the length of coef as allocated (>= nterms) */
     char **words;                /* "AAB" */
     char **brackets;             /* "[A,[A,B]]" */
     arb_ptr coef;
     arb_t norm;                  /* the 2-norm of coef */
 } vigen_check_lie_error;
+
+/* The orders of a splitting with named flows (or a corrector) for H = A +
+ * eps B, B the flow `perturbation` (generalized.c).  The log of one step,
+ * h (A + eps B) + sum_n h^n Z_n, is computed in the free Lie algebra to
+ * degree `degree`; its part with j letters B carries eps^j.  r[j] is the
+ * generalized order for eps^j: every term with j letters B of degree <=
+ * r[j] vanishes and one of degree r[j] + 1 does not, so that the local error
+ * is O(eps h^(r1+1) + eps^2 h^(r2+1) + ...) and the error in the energy
+ * and over a fixed time O(eps h^r1 + eps^2 h^r2 + ...), the convention of
+ * Laskar & Robutel (2001) and Blanes et al. (2013): SABA_n is (2n, 2).  The
+ * classical order p (general A + B) is the least r[j]; the generalized
+ * order is written (r1, ..., rk) with k the first j where r[j] = p (the
+ * terms eps^j h^p beyond it are dominated). */
+#define VIGEN_GEN_MAX_DEGREE 14
+enum { VIGEN_GEN_DECIDED = 0, VIGEN_GEN_AT_LEAST = 1, VIGEN_GEN_UNDECIDED = 2 };
+typedef struct {
+    int computed;                /* the file names two flows or has a corrector */
+    const char *why;             /* not decided: why (static), else NULL */
+    char *letter_a, *letter_b;   /* the flows behind A and B (B carries eps), from malloc */
+    int flipped;                 /* B is the file's first flow (the Lie basis's letter A) */
+    int processed;               /* the step is C K C^-1 */
+    int degree;                  /* terms computed to this degree */
+    int rounded;                 /* coefficients are rounded decimals: vanishing means to the data's precision */
+    int within_data;             /* some term taken as vanishing only to the data's precision */
+    int classical;               /* the classical order p */
+    int classical_state;         /* VIGEN_GEN_*: p decided, p >= classical (nothing fails to degree),
+                                    or undecided (a term is undecided at degree classical + 1) */
+    int k;                       /* the generalized order has k entries r[1..k] */
+    int r[VIGEN_GEN_MAX_DEGREE + 1];
+    int state[VIGEN_GEN_MAX_DEGREE + 1];   /* VIGEN_GEN_* of each r[j] */
+    vigen_check_lie_error terms[VIGEN_GEN_MAX_DEGREE + 1];  /* [j]: the leading terms of eps^j (degree
+                                                               r[j] + 1) in the Lyndon basis, when decided */
+    int claim_status;            /* generalized_order claimed: tri-state (VIGEN_CHECK_YES ...); -1 absent */
+    int claim_k;
+    int claim[VIGEN_MAX_GENERALIZED];
+} vigen_check_generalized;
 
 /* The linear stability interval on q'' = -omega^2 q (stability.c). */
 enum { VIGEN_CHECK_STAB_NONE = 0, VIGEN_CHECK_STAB_BOUNDED = 1, VIGEN_CHECK_STAB_UNBOUNDED = 2,
@@ -352,6 +389,7 @@ typedef struct {
     vigen_check_error_constant error_constant[VIGEN_CHECK_EC_FAMILIES];
     vigen_check_stability stability;
     vigen_check_lie_error lie_error;
+    vigen_check_generalized *generalized;   /* named flows: the orders for H = A + eps B; else NULL */
     vigen_check_cost cost;
 
     int claim_order;             /* -1 when the file states none */

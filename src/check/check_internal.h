@@ -218,7 +218,24 @@ void chk_collect_reducible(vigen_check_report *rep, const vigen_tableau *t);
  * (lie.c); le->computed = 0 with le->why when it does not apply. */
 int chk_lie_error(vigen_check_lie_error *le, const vigen_tableau *t, int p, slong prec, vigen_error *err);
 void chk_lie_error_clear(vigen_check_lie_error *le);
+/* lie.c: series in the free associative algebra on {A, B} truncated at
+ * degree N, vectors of 2^(N+1) balls: the word of n letters with bits b (the
+ * first letter the most significant, A = 0, B = 1) at index (1 << n) | b.
+ * chk_lie_mul: out = x y (no aliasing).  chk_lie_is_lyndon: the word (b, n)
+ * is a Lyndon word.  chk_lie_bracket: its standard bracketing P(w) into out,
+ * the bracket's text appended to sb.  chk_lie_log: log of the product of t's
+ * substeps exp(coef_k h X_k) in order of application (X = A for the drift
+ * letter, B for the kick; flip = 1 swaps them).  chk_lie_lyndon: the
+ * coefficients of lg's homogeneous part of degree n (nb >= 0: with nb
+ * letters B only) in the Lyndon basis into le (lg's part is consumed). */
+void chk_lie_mul(arb_ptr out, arb_srcptr x, arb_srcptr y, slong N, slong prec);
+int chk_lie_is_lyndon(slong b, slong n);
+void chk_lie_bracket(arb_ptr out, vigen_strbuf *sb, slong b, slong n, slong N, slong prec);
+int chk_lie_log(arb_ptr lg, const vigen_tableau *t, slong N, int flip, slong prec, vigen_error *err);
+void chk_lie_lyndon(vigen_check_lie_error *le, arb_ptr lg, slong N, slong n, int nb, slong prec);
 slong chk_adequate_prec(const vigen_tableau *t);
+/* generalized.c: frees rep->generalized (NULL: nothing) */
+void chk_generalized_free(vigen_check_generalized *g);
 
 /* checks.c: one round of every check of vigen/check_fields.def */
 int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,

@@ -34,7 +34,7 @@ static slong word_len(slong w)
 }
 
 /* out = x y truncated at degree N (out must not alias x or y) */
-static void series_mul(arb_ptr out, arb_srcptr x, arb_srcptr y, slong N, slong prec)
+void chk_lie_mul(arb_ptr out, arb_srcptr x, arb_srcptr y, slong N, slong prec)
 {
     slong size = (slong)1 << (N + 1);
     _arb_vec_zero(out, size);
@@ -53,7 +53,7 @@ static void series_mul(arb_ptr out, arb_srcptr x, arb_srcptr y, slong N, slong p
 
 /* 1 when the word of length n with bits b is a Lyndon word: strictly smaller
  * than each of its proper rotations (and so aperiodic) */
-static int is_lyndon(slong b, slong n)
+int chk_lie_is_lyndon(slong b, slong n)
 {
     for (slong r = 1; r < n; r++) {
         slong rot = ((b << r) | (b >> (n - r))) & (((slong)1 << n) - 1);
@@ -65,7 +65,7 @@ static int is_lyndon(slong b, slong n)
 /* P(w) of the Lyndon word (n letters, bits b) as a homogeneous element of
  * degree n into out (size 2^(n+1)), and its bracket text appended to sb:
  * w = u v with v the longest proper Lyndon suffix, P(w) = [P(u), P(v)]. */
-static void standard_bracket(arb_ptr out, vigen_strbuf *sb, slong b, slong n, slong N, slong prec)
+void chk_lie_bracket(arb_ptr out, vigen_strbuf *sb, slong b, slong n, slong N, slong prec)
 {
     slong size = (slong)1 << (N + 1);
     _arb_vec_zero(out, size);
@@ -76,22 +76,74 @@ static void standard_bracket(arb_ptr out, vigen_strbuf *sb, slong b, slong n, sl
     }
     slong k = 1;   /* length of v */
     for (slong j = n - 1; j >= 1; j--)
-        if (is_lyndon(b & (((slong)1 << j) - 1), j)) {
+        if (chk_lie_is_lyndon(b & (((slong)1 << j) - 1), j)) {
             k = j;
             break;
         }
     arb_ptr pu = _arb_vec_init(size), pv = _arb_vec_init(size), t = _arb_vec_init(size);
     vigen_strbuf_append(sb, "[");
-    standard_bracket(pu, sb, b >> k, n - k, N, prec);
+    chk_lie_bracket(pu, sb, b >> k, n - k, N, prec);
     vigen_strbuf_append(sb, ",");
-    standard_bracket(pv, sb, b & (((slong)1 << k) - 1), k, N, prec);
+    chk_lie_bracket(pv, sb, b & (((slong)1 << k) - 1), k, N, prec);
     vigen_strbuf_append(sb, "]");
-    series_mul(out, pu, pv, N, prec);
-    series_mul(t, pv, pu, N, prec);
+    chk_lie_mul(out, pu, pv, N, prec);
+    chk_lie_mul(t, pv, pu, N, prec);
     _arb_vec_sub(out, out, t, size, prec);
     _arb_vec_clear(pu, size);
     _arb_vec_clear(pv, size);
     _arb_vec_clear(t, size);
+}
+
+int chk_lie_log(arb_ptr lg, const vigen_tableau *t, slong N, int flip, slong prec, vigen_error *err)
+{
+    slong size = (slong)1 << (N + 1);
+    arb_ptr y = _arb_vec_init(size), f = _arb_vec_init(size), t2 = _arb_vec_init(size);
+    arb_ptr z = _arb_vec_init(size), pw = _arb_vec_init(size);
+    arb_t c, ck;
+    arb_init(c);
+    arb_init(ck);
+    int rc = VIGEN_OK;
+    _arb_vec_zero(lg, size);
+    arb_one(y + 1);   /* the empty word */
+    for (slong k = 0; k < t->nsubsteps && rc == VIGEN_OK; k++) {
+        rc = vigen_tableau_entry_eval(c, t->substep_coef[k], prec, err);
+        if (rc != VIGEN_OK) break;
+        /* exp(c X) = sum_j c^j X^j / j! */
+        _arb_vec_zero(f, size);
+        arb_one(ck);
+        slong letter = (t->substep_drift[k] ? 0 : 1) ^ (flip ? 1 : 0), w = 1;
+        for (slong j = 0; j <= N; j++) {
+            arb_set(f + w, ck);
+            arb_mul(ck, ck, c, prec);
+            arb_div_si(ck, ck, j + 1, prec);
+            w = (w << 1) | letter;
+        }
+        chk_lie_mul(t2, y, f, N, prec);
+        _arb_vec_swap(y, t2, size);
+    }
+    if (rc == VIGEN_OK) {
+        /* log(1 + z) = sum_k (-1)^(k+1) z^k / k */
+        _arb_vec_set(z, y, size);
+        arb_zero(z + 1);
+        _arb_vec_set(pw, z, size);
+        for (slong k = 1; k <= N; k++) {
+            for (slong w = 1; w < size; w++) {
+                arb_div_si(c, pw + w, k, prec);
+                if (k % 2) arb_add(lg + w, lg + w, c, prec);
+                else arb_sub(lg + w, lg + w, c, prec);
+            }
+            chk_lie_mul(t2, pw, z, N, prec);
+            _arb_vec_swap(pw, t2, size);
+        }
+    }
+    arb_clear(c);
+    arb_clear(ck);
+    _arb_vec_clear(y, size);
+    _arb_vec_clear(f, size);
+    _arb_vec_clear(t2, size);
+    _arb_vec_clear(z, size);
+    _arb_vec_clear(pw, size);
+    return rc;
 }
 
 void chk_lie_error_clear(vigen_check_lie_error *le)
@@ -102,14 +154,51 @@ void chk_lie_error_clear(vigen_check_lie_error *le)
     }
     free(le->brackets);
     free(le->words);
-    if (le->coef) _arb_vec_clear(le->coef, le->nterms);
+    if (le->coef) _arb_vec_clear(le->coef, le->ncap);
     le->brackets = le->words = NULL;
     le->coef = NULL;
-    le->nterms = 0;
+    le->nterms = le->ncap = 0;
     le->computed = 0;
     le->degree = 0;
     le->why = NULL;
     arb_zero(le->norm);
+}
+
+void chk_lie_lyndon(vigen_check_lie_error *le, arb_ptr lg, slong N, slong n, int nb, slong prec)
+{
+    chk_lie_error_clear(le);
+    slong size = (slong)1 << (N + 1);
+    arb_ptr pw = _arb_vec_init(size);
+    /* the Lyndon words of length n (with nb letters B) in increasing order,
+     * each coefficient read off and its bracket removed */
+    slong cap = 0;
+    for (slong b = 0; b < ((slong)1 << n); b++) cap += chk_lie_is_lyndon(b, n);
+    le->brackets = calloc((size_t)cap, sizeof(char *));
+    le->words = calloc((size_t)cap, sizeof(char *));
+    le->coef = _arb_vec_init(cap);
+    if (le->brackets == NULL || le->words == NULL) abort();
+    for (slong b = 0; b < ((slong)1 << n); b++) {
+        if (!chk_lie_is_lyndon(b, n) || (nb >= 0 && __builtin_popcountl((unsigned long)b) != nb)) continue;
+        vigen_strbuf sb;
+        vigen_strbuf_init(&sb);
+        chk_lie_bracket(pw, &sb, b, n, N, prec);
+        slong w = ((slong)1 << n) | b, k = le->nterms++;
+        arb_set(le->coef + k, lg + w);
+        le->brackets[k] = sb.data;
+        le->words[k] = malloc((size_t)n + 1);
+        if (le->words[k] == NULL) abort();
+        for (slong i = 0; i < n; i++) le->words[k][i] = (b >> (n - 1 - i)) & 1 ? 'B' : 'A';
+        le->words[k][n] = '\0';
+        for (slong v = 0; v < size; v++) arb_submul(lg + v, le->coef + k, pw + v, prec);
+    }
+    /* the cleared vector's length is cap, however many were kept */
+    le->ncap = cap;
+    le->degree = (int)n;
+    le->computed = 1;
+    arb_zero(le->norm);
+    for (slong k = 0; k < le->nterms; k++) arb_addmul(le->norm, le->coef + k, le->coef + k, prec);
+    arb_sqrtpos(le->norm, le->norm, prec);
+    _arb_vec_clear(pw, size);
 }
 
 int chk_lie_error(vigen_check_lie_error *le, const vigen_tableau *t, int p, slong prec, vigen_error *err)
@@ -129,79 +218,9 @@ int chk_lie_error(vigen_check_lie_error *le, const vigen_tableau *t, int p, slon
         return VIGEN_OK;
     }
     slong size = (slong)1 << (N + 1);
-    arb_ptr y = _arb_vec_init(size), f = _arb_vec_init(size), t2 = _arb_vec_init(size);
-    arb_ptr z = _arb_vec_init(size), pw = _arb_vec_init(size), lg = _arb_vec_init(size);
-    arb_t c, ck;
-    arb_init(c);
-    arb_init(ck);
-    int rc = VIGEN_OK;
-    arb_one(y + 1);   /* the empty word */
-    for (slong k = 0; k < t->nsubsteps && rc == VIGEN_OK; k++) {
-        rc = vigen_tableau_entry_eval(c, t->substep_coef[k], prec, err);
-        if (rc != VIGEN_OK) break;
-        /* exp(c X) = sum_j c^j X^j / j! */
-        _arb_vec_zero(f, size);
-        arb_one(ck);
-        slong letter = t->substep_drift[k] ? 0 : 1, w = 1;
-        for (slong j = 0; j <= N; j++) {
-            arb_set(f + w, ck);
-            arb_mul(ck, ck, c, prec);
-            arb_div_si(ck, ck, j + 1, prec);
-            w = (w << 1) | letter;
-        }
-        series_mul(t2, y, f, N, prec);
-        _arb_vec_swap(y, t2, size);
-    }
-    if (rc == VIGEN_OK) {
-        /* log(1 + z) = sum_k (-1)^(k+1) z^k / k */
-        _arb_vec_set(z, y, size);
-        arb_zero(z + 1);
-        _arb_vec_set(pw, z, size);
-        _arb_vec_zero(lg, size);
-        for (slong k = 1; k <= N; k++) {
-            for (slong w = 1; w < size; w++) {
-                arb_div_si(c, pw + w, k, prec);
-                if (k % 2) arb_add(lg + w, lg + w, c, prec);
-                else arb_sub(lg + w, lg + w, c, prec);
-            }
-            series_mul(t2, pw, z, N, prec);
-            _arb_vec_swap(pw, t2, size);
-        }
-        /* the Lyndon words of length N in increasing order, each
-         * coefficient read off and its bracket removed */
-        slong cap = 0;
-        for (slong b = 0; b < ((slong)1 << N); b++) cap += is_lyndon(b, N);
-        le->brackets = calloc((size_t)cap, sizeof(char *));
-        le->words = calloc((size_t)cap, sizeof(char *));
-        le->coef = _arb_vec_init(cap);
-        if (le->brackets == NULL || le->words == NULL) abort();
-        for (slong b = 0; b < ((slong)1 << N); b++) {
-            if (!is_lyndon(b, N)) continue;
-            vigen_strbuf sb;
-            vigen_strbuf_init(&sb);
-            standard_bracket(pw, &sb, b, N, N, prec);
-            slong w = ((slong)1 << N) | b, k = le->nterms++;
-            arb_set(le->coef + k, lg + w);
-            le->brackets[k] = sb.data;
-            le->words[k] = malloc((size_t)N + 1);
-            if (le->words[k] == NULL) abort();
-            for (slong i = 0; i < N; i++) le->words[k][i] = (b >> (N - 1 - i)) & 1 ? 'B' : 'A';
-            le->words[k][N] = '\0';
-            for (slong v = 0; v < size; v++) arb_submul(lg + v, le->coef + k, pw + v, prec);
-        }
-        le->degree = (int)N;
-        le->computed = 1;
-        arb_zero(le->norm);
-        for (slong k = 0; k < le->nterms; k++) arb_addmul(le->norm, le->coef + k, le->coef + k, prec);
-        arb_sqrtpos(le->norm, le->norm, prec);
-    }
-    arb_clear(c);
-    arb_clear(ck);
-    _arb_vec_clear(y, size);
-    _arb_vec_clear(f, size);
-    _arb_vec_clear(t2, size);
-    _arb_vec_clear(z, size);
-    _arb_vec_clear(pw, size);
+    arb_ptr lg = _arb_vec_init(size);
+    int rc = chk_lie_log(lg, t, N, 0, prec, err);
+    if (rc == VIGEN_OK) chk_lie_lyndon(le, lg, N, N, -1, prec);
     _arb_vec_clear(lg, size);
     return rc;
 }

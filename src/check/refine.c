@@ -239,6 +239,8 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
     for (int f = 0; f < 2; f++)
         if (rep->claim_order_family[f] >= 0 && rep->claim_order_family_status[f] != VIGEN_CHECK_YES) code = 1;
     if (rep->against_differences > 0 || rep->against_undecided > 0) code = 1;
+    if (rep->generalized && rep->generalized->claim_status >= 0 && rep->generalized->claim_status != VIGEN_CHECK_YES)
+        code = 1;
     rep->exit_code = code;
     return VIGEN_OK;
 }

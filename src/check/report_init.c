@@ -148,6 +148,7 @@ void vigen_check_report_clear(vigen_check_report *rep)
     arb_clear(rep->stability.x);
     chk_lie_error_clear(&rep->lie_error);
     arb_clear(rep->lie_error.norm);
+    chk_generalized_free(rep->generalized);
     free(rep->path);
     free(rep->name);
     flint_free(rep->rational_denominator);

@@ -73,6 +73,47 @@ static void print_text_row(FILE *out, const entry *e)
     free(dir);
 }
 
+/* "(10,6,4)", an entry not decided written ">=r" */
+static char *generalized_word(const vigen_check_generalized *g)
+{
+    vigen_strbuf sb;
+    vigen_strbuf_init(&sb);
+    if (g->why) vigen_strbuf_append(&sb, "-");
+    else {
+        vigen_strbuf_append(&sb, "(");
+        for (int j = 1; j <= g->k; j++)
+            vigen_strbuf_printf(&sb, "%s%s%d", j > 1 ? "," : "", g->state[j] == VIGEN_GEN_DECIDED ? "" : ">=", g->r[j]);
+        vigen_strbuf_append(&sb, ")");
+    }
+    return sb.data;
+}
+
+static int has_generalized(const entry *e)
+{
+    return e->checked && e->rep.generalized && e->rep.generalized->computed;
+}
+
+/* the methods of named flows: their classical and generalized orders */
+static void print_generalized(FILE *out, const entry *es, size_t n)
+{
+    size_t count = 0;
+    for (size_t k = 0; k < n; k++) count += has_generalized(&es[k]);
+    if (count == 0) return;
+    fprintf(out, "\n%-26s %5s  %-13s %s\n", "named flows", "order", "generalized", "H = A + eps B");
+    for (size_t k = 0; k < n; k++) {
+        if (!has_generalized(&es[k])) continue;
+        const vigen_check_generalized *g = es[k].rep.generalized;
+        char *name = vigen_printable(es[k].name), *w = generalized_word(g);
+        char *a = vigen_printable(g->letter_a), *b = vigen_printable(g->letter_b);
+        char p[16] = "-";
+        if (!g->why) snprintf(p, sizeof p, "%s%d", g->classical_state == VIGEN_GEN_DECIDED ? "" : ">=", g->classical);
+        fprintf(out, "%-26s %5s  %-13s %s + eps %s%s\n", name, p, w, a, b, g->processed ? " (processed)" : "");
+        free(name); free(w); free(a); free(b);
+    }
+    fputs("order: classical order for general A + B; generalized (r1, r2, ...): error O(eps h^r1 + eps^2 h^r2\n"
+          "+ ...), certified from the Lie-algebra terms of one step (vigen check shows them).\n", out);
+}
+
 static void print_json_row(FILE *out, const entry *e, int first)
 {
     fputs(first ? "\n  {\"name\": " : ",\n  {\"name\": ", out);
@@ -100,6 +141,25 @@ static void print_json_row(FILE *out, const entry *e, int first)
         vigen_json_write_string(out, symplectic_word(&e->rep));
         fputs(", \"source\": ", out);
         vigen_json_write_string(out, e->source);
+        if (has_generalized(e)) {
+            const vigen_check_generalized *g = e->rep.generalized;
+            fputs(", \"generalized\": {\"A\": ", out);
+            vigen_json_write_string(out, g->letter_a);
+            fputs(", \"B\": ", out);
+            vigen_json_write_string(out, g->letter_b);
+            fprintf(out, ", \"processed\": %s, \"decided\": %s", g->processed ? "true" : "false",
+                    g->why ? "false" : "true");
+            if (!g->why) {
+                fprintf(out, ", \"classical_order\": %d, \"classical_at_least\": %s, \"orders\": [", g->classical,
+                        g->classical_state == VIGEN_GEN_DECIDED ? "false" : "true");
+                for (int j = 1; j <= g->k; j++) fprintf(out, "%s%d", j > 1 ? ", " : "", g->r[j]);
+                fputs("], \"orders_at_least\": [", out);
+                for (int j = 1; j <= g->k; j++)
+                    fprintf(out, "%s%s", j > 1 ? ", " : "", g->state[j] == VIGEN_GEN_DECIDED ? "false" : "true");
+                fputc(']', out);
+            }
+            fprintf(out, ", \"claim_holds\": %s}", g->claim_status == VIGEN_CHECK_YES ? "true" : "false");
+        }
     }
     fputc('}', out);
 }
@@ -157,6 +217,7 @@ int vigen_library_list(FILE *out, int json, vigen_error *err)
         fputs("\ngen, sep, nys: certified order for general H, separable H = T(p) + V(q) and Nystrom\n"
               "H = p^T M^-1 p / 2 + V(q) (8+: every order checked holds); evals: force evaluations per\n"
               "step for separable H.  Any command takes a method's name in place of a file.\n", out);
+        print_generalized(out, es, n);
     }
     for (size_t k = 0; k < n; k++) {
         free(es[k].name);

@@ -299,6 +299,61 @@ static void json_lie_error(FILE *out, const vigen_check_report *rep)
     fputs("]}", out);
 }
 
+static const char *gen_state_word(int state)
+{
+    return state == VIGEN_GEN_DECIDED ? "decided" : state == VIGEN_GEN_AT_LEAST ? "at_least" : "undecided";
+}
+
+static void json_generalized(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_generalized *g = rep->generalized;
+    if (g == NULL || !g->computed) {
+        fputs("null", out);
+        return;
+    }
+    fprintf(out, "{\"A\": \"%s\", \"B\": \"%s\", \"processed\": %s, \"degree\": %d, \"rounded\": %s, "
+                 "\"within_data\": %s, \"why\": ", g->letter_a, g->letter_b, g->processed ? "true" : "false",
+            g->degree, g->rounded ? "true" : "false", g->within_data ? "true" : "false");
+    if (g->why) fprintf(out, "\"%s\"", g->why);
+    else fputs("null", out);
+    if (!g->why) {
+        fprintf(out, ", \"classical_order\": %d, \"classical_status\": \"%s\", \"orders\": [", g->classical,
+                gen_state_word(g->classical_state));
+        for (int j = 1; j <= g->k; j++) fprintf(out, "%s%d", j > 1 ? ", " : "", g->r[j]);
+        fputs("], \"orders_status\": [", out);
+        for (int j = 1; j <= g->k; j++) fprintf(out, "%s\"%s\"", j > 1 ? ", " : "", gen_state_word(g->state[j]));
+        fputs("], \"terms\": [", out);
+        int first = 1;
+        for (int j = 1; j <= g->k; j++) {
+            const vigen_check_lie_error *le = &g->terms[j];
+            if (!le->computed) continue;
+            fprintf(out, "%s{\"eps\": %d, \"h\": %d, \"degree\": %d, \"norm\": ", first ? "" : ", ", j, g->r[j],
+                    le->degree);
+            first = 0;
+            json_number(out, le->norm);
+            fputs(", \"terms\": [", out);
+            for (slong k = 0; k < le->nterms; k++) {
+                fprintf(out, "%s{\"word\": \"%s\", \"bracket\": \"%s\", \"coefficient\": ", k ? ", " : "",
+                        le->words[k], le->brackets[k]);
+                json_number(out, le->coef + k);
+                json_ball20(out, le->coef + k);
+                fputc('}', out);
+            }
+            fputs("]}", out);
+        }
+        fputc(']', out);
+    }
+    fputs(", \"claim\": ", out);
+    if (g->claim_status < 0) fputs("null", out);
+    else {
+        fputc('[', out);
+        for (int j = 0; j < g->claim_k; j++) fprintf(out, "%s%d", j ? ", " : "", g->claim[j]);
+        fprintf(out, "], \"claim_status\": \"%s\"", g->claim_status == VIGEN_CHECK_YES ? "holds" :
+                g->claim_status == VIGEN_CHECK_NO ? "fails" : "undecided");
+    }
+    fputc('}', out);
+}
+
 static void json_stability_interval(FILE *out, const vigen_check_report *rep)
 {
     if (rep->stability.status == VIGEN_CHECK_STAB_BOUNDED) json_number(out, rep->stability.x);

@@ -389,8 +389,13 @@ static void text_lie_error(FILE *out, const vigen_check_report *rep)
 {
     const vigen_check_lie_error *le = &rep->lie_error;
     if (le->computed) {
-        fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A drifts, B kicks, in order), 2-norm ",
-                le->degree);
+        const vigen_check_generalized *g = rep->generalized;
+        if (g && g->computed)
+            fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A %s, B %s, in order), 2-norm ",
+                    le->degree, g->flipped ? g->letter_b : g->letter_a, g->flipped ? g->letter_a : g->letter_b);
+        else
+            fprintf(out, "Lie basis     principal error h^%d x (Lyndon basis; A drifts, B kicks, in order), 2-norm ",
+                    le->degree);
         put_figure(out, le->norm);
         fputc('\n', out);
         for (slong k = 0; k < le->nterms; k++) {
@@ -398,6 +403,55 @@ static void text_lie_error(FILE *out, const vigen_check_report *rep)
             put_figure(out, le->coef + k);
             fputc('\n', out);
         }
+    }
+}
+
+static void text_orders_list(FILE *out, const vigen_check_generalized *g, int k)
+{
+    fputc('(', out);
+    for (int j = 1; j <= k; j++)
+        fprintf(out, "%s%s%d", j > 1 ? "," : "", g->state[j] == VIGEN_GEN_DECIDED ? "" : ">=", g->r[j]);
+    fputc(')', out);
+}
+
+static void text_generalized(FILE *out, const vigen_check_report *rep)
+{
+    const vigen_check_generalized *g = rep->generalized;
+    if (g == NULL || !g->computed) return;
+    fprintf(out, "generalized   H = %s + eps %s (A = %s, B = %s)%s\n", g->letter_a, g->letter_b, g->letter_a,
+            g->letter_b, g->processed ? "; the step C K C^-1 of the processed method" : "");
+    if (g->why) fprintf(out, "  not decided: %s\n", g->why);
+    else {
+        fputs("  generalized order ", out);
+        text_orders_list(out, g, g->k);
+        fputs(": error O(", out);
+        for (int j = 1; j <= g->k; j++)
+            fprintf(out, "%seps%s%.0d h^%s%d", j > 1 ? " + " : "", j > 1 ? "^" : "", j > 1 ? j : 0,
+                    g->state[j] == VIGEN_GEN_DECIDED ? "" : ">=", g->r[j]);
+        fprintf(out, "); classical order %s%d for general A + B (terms to degree %d%s)\n",
+                g->classical_state == VIGEN_GEN_DECIDED ? "" : ">=", g->classical, g->degree,
+                g->rounded ? (g->within_data ? "; terms of rounded coefficients vanish to the data's precision" : "; "
+                              "rounded coefficients") : "");
+        for (int j = 1; j <= g->k; j++) {
+            const vigen_check_lie_error *le = &g->terms[j];
+            if (!le->computed) continue;
+            fprintf(out, "  eps^%d h^%-3d 2-norm ", j, g->r[j]);
+            put_figure(out, le->norm);
+            fprintf(out, " (%ld Lyndon term%s of degree %d)\n", (long)le->nterms, le->nterms == 1 ? "" : "s",
+                    le->degree);
+            for (slong k = 0; k < le->nterms && k < 8; k++) {
+                fprintf(out, "    %-30s ", le->brackets[k]);
+                put_figure(out, le->coef + k);
+                fputc('\n', out);
+            }
+            if (le->nterms > 8) fprintf(out, "    ... %ld more (all of them with --json)\n", (long)(le->nterms - 8));
+        }
+    }
+    if (g->claim_status >= 0) {
+        fputs("  claim generalized_order = {", out);
+        for (int j = 0; j < g->claim_k; j++) fprintf(out, "%s%d", j ? ", " : "", g->claim[j]);
+        fprintf(out, "}: %s\n", g->claim_status == VIGEN_CHECK_YES ? (g->within_data ? "holds (within the data's "
+                "precision)" : "holds") : g->claim_status == VIGEN_CHECK_NO ? "fails" : "undecided");
     }
 }
 

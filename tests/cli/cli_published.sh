@@ -44,6 +44,13 @@ leok_zhang_ex2_iii 1 True
 leok_zhang_ex4 2 True
 leok_zhang_ex5_i 2 True
 leok_zhang_ex5_ii 4 True
+wisdom_holman 2 True
+saba_1 2 True
+saba_2 2 True
+saba_3 2 True
+saba_4 2 True
+saba_10_6_4 4 True
+wisdom_holman_corrected 2 True
 "
 count=0
 while read -r name order symp; do
