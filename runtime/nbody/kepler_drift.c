@@ -1,0 +1,156 @@
+/* kepler_drift.c — the two-body flow x'' = -mu x/|x|^3 by universal
+ * variables (Danby, Fundamentals of Celestial Mechanics, ch. 6.9; Wisdom &
+ * Hernandez 2015, MNRAS 453, 3015).
+ *
+ * With r0 = |x|, eta = x.v, beta = 2 mu/r0 - |v|^2 (> 0 bound) and
+ * zeta = mu - beta r0, the universal anomaly s after time h solves
+ *   F(s) = r0 s + eta G2(s) + zeta G3(s) - h = 0,   G_k(s) = s^k c_k(beta s^2),
+ * c_k the Stumpff functions; F'(s) = r(s) = r0 + eta G1 + zeta G2 > 0, so
+ * F increases and a bracket is kept while Laguerre-Conway iterations
+ * converge.  Then x += (f - 1) x + g v, v += fdot x + (gdot - 1) v with
+ * f - 1 = -mu G2/r0, g = r0 G1 + eta G2, fdot = -mu G1/(r r0),
+ * gdot - 1 = -mu G2/r: the increments, small for small h, keep the round-off
+ * of the update small.  g is taken in the form r0 G1 + eta G2 rather than
+ * h - mu G3 (equal at the exact root): with it f, g, fdot, gdot are the
+ * exact Kepler map of the time that s stands for, so that the round-off
+ * left in s moves the orbit along itself (a phase) and never changes its
+ * energy, which would otherwise drift steadily. */
+#include <float.h>
+#include <math.h>
+#include <vigen/nbody.h>
+
+#define KEPLER_PI 3.14159265358979323846
+
+/* c0..c3 of z: the series (to z^10, below round-off) for |z| <= 1; above,
+ * the trigonometric (z > 0) or hyperbolic (z < 0) closed forms in the
+ * forms free of cancellation: c2 = 2 sin^2(y/2)/z, c3 = (y - sin y)/(z y)
+ * (cancellation at most 6 to 1 for z > 1). */
+static void stumpff(double z, double c[4])
+{
+    if (fabs(z) <= 1) {
+        c[3] = (1 - z / 20 * (1 - z / 42 * (1 - z / 72 * (1 - z / 110 * (1 - z / 156 * (1 - z / 210 * (1 - z / 272
+               * (1 - z / 342 * (1 - z / 420 * (1 - z / 506)))))))))) / 6;
+        c[2] = (1 - z / 12 * (1 - z / 30 * (1 - z / 56 * (1 - z / 90 * (1 - z / 132 * (1 - z / 182 * (1 - z / 240
+               * (1 - z / 306 * (1 - z / 380 * (1 - z / 462)))))))))) / 2;
+        c[1] = 1 - z * c[3];
+        c[0] = 1 - z * c[2];
+    } else if (z > 0) {
+        double y = sqrt(z), sy = sin(y), hy = sin(y / 2);
+        c[0] = cos(y);
+        c[1] = sy / y;
+        c[2] = 2 * hy * hy / z;
+        c[3] = (y - sy) / (z * y);
+    } else {
+        double y = sqrt(-z), sy = sinh(y), hy = sinh(y / 2);
+        c[0] = cosh(y);
+        c[1] = sy / y;
+        c[2] = -2 * hy * hy / z;
+        c[3] = (sy - y) / (-z * y);
+    }
+}
+
+/* G0..G3 at s for beta. */
+static void gfunctions(double beta, double s, double g[4])
+{
+    double c[4];
+    stumpff(beta * s * s, c);
+    g[0] = c[0];
+    g[1] = s * c[1];
+    g[2] = s * s * c[2];
+    g[3] = s * s * s * c[3];
+}
+
+int vigen_kepler_drift(double mu, double h, double *x, double *v)
+{
+    if (x == NULL || v == NULL || !(mu > 0) || !isfinite(mu) || !isfinite(h)) return VIGEN_EINVAL;
+    for (int c = 0; c < 3; c++)
+        if (!isfinite(x[c]) || !isfinite(v[c])) return VIGEN_ENONFINITE;
+    double r0 = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
+    if (!(r0 > 0)) return VIGEN_EINVAL;
+    if (h == 0) return VIGEN_SUCCESS;
+    double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    double eta = x[0] * v[0] + x[1] * v[1] + x[2] * v[2];
+    double beta = 2 * mu / r0 - v2, zeta = mu - beta * r0;
+    if (!isfinite(beta) || !isfinite(eta)) return VIGEN_ENONFINITE;
+    /* a radial orbit (angular momentum zero to round-off) reaches the
+     * centre when it falls inward or is bound: a collision */
+    double lx = x[1] * v[2] - x[2] * v[1], ly = x[2] * v[0] - x[0] * v[2], lz = x[0] * v[1] - x[1] * v[0];
+    double l2 = lx * lx + ly * ly + lz * lz;
+    if (l2 <= 64 * DBL_EPSILON * DBL_EPSILON * r0 * r0 * v2 && (eta * h < 0 || beta > 0 || v2 == 0))
+        return VIGEN_EINVAL;
+    /* a bound orbit: h modulo the period 2 pi mu / beta^(3/2) */
+    if (beta > 0) {
+        double period = 2 * KEPLER_PI * mu / (beta * sqrt(beta));
+        if (fabs(h) > period) h = remainder(h, period);
+        if (h == 0) return VIGEN_SUCCESS;
+    }
+    /* bracket of s: F(0) = -h; grow the other end until F changes sign */
+    double s = h / r0 - eta * h * h / (2 * r0 * r0 * r0), g[4];
+    double lo = 0, hi = 0;
+    double step = h / r0;
+    if (h > 0) {
+        hi = step;
+        for (int it = 0;; it++) {
+            gfunctions(beta, hi, g);
+            double f = r0 * hi + eta * g[2] + zeta * g[3] - h;
+            if (f >= 0 || isinf(f)) break;
+            if (it > 200 || isnan(f)) return VIGEN_ENONFINITE;
+            lo = hi;
+            hi *= 2;
+        }
+    } else {
+        lo = step;
+        for (int it = 0;; it++) {
+            gfunctions(beta, lo, g);
+            double f = r0 * lo + eta * g[2] + zeta * g[3] - h;
+            if (f <= 0 || isinf(f)) break;
+            if (it > 200 || isnan(f)) return VIGEN_ENONFINITE;
+            hi = lo;
+            lo *= 2;
+        }
+    }
+    if (!(s > lo && s < hi)) s = (lo + hi) / 2;
+    /* Laguerre-Conway (n = 5) inside the bracket; a step that leaves it,
+     * and every step after the 30th, bisects instead (the bracket of
+     * doubles is exhausted within 2100 halvings at most) */
+    int converged = 0;
+    for (int it = 0; it < 2200; it++) {
+        gfunctions(beta, s, g);
+        double f = r0 * s + eta * g[2] + zeta * g[3] - h;
+        double fp = r0 + eta * g[1] + zeta * g[2];
+        double fpp = eta * g[0] + zeta * g[1];
+        if (!isfinite(f) || !isfinite(fp)) return VIGEN_ENONFINITE;
+        if (f == 0) {
+            converged = 1;
+            break;
+        }
+        if (f < 0) lo = s; else hi = s;
+        double disc = fabs(16 * fp * fp - 20 * f * fpp);
+        double den = fp + (fp >= 0 ? 1 : -1) * 2 * sqrt(disc);
+        double next = den != 0 ? s - 5 * f / den : (lo + hi) / 2;
+        if (!(next > lo && next < hi) || it >= 30) next = lo + (hi - lo) / 2;
+        double ds = next - s;
+        s = next;
+        if (fabs(ds) <= 2 * DBL_EPSILON * fabs(s) || next == lo || next == hi) {
+            converged = 1;
+            break;
+        }
+    }
+    if (!converged) return VIGEN_ENOCONV;
+    gfunctions(beta, s, g);
+    double r = r0 + eta * g[1] + zeta * g[2];
+    if (!(r > 0) || !isfinite(r)) return r > 0 ? VIGEN_ENONFINITE : VIGEN_EINVAL;
+    double fm1 = -mu * g[2] / r0, gg = r0 * g[1] + eta * g[2];
+    double fdot = -mu * g[1] / (r * r0), gdm1 = -mu * g[2] / r;
+    double xn[3], vn[3];
+    for (int c = 0; c < 3; c++) {
+        xn[c] = x[c] + (fm1 * x[c] + gg * v[c]);
+        vn[c] = v[c] + (fdot * x[c] + gdm1 * v[c]);
+        if (!isfinite(xn[c]) || !isfinite(vn[c])) return VIGEN_ENONFINITE;
+    }
+    for (int c = 0; c < 3; c++) {
+        x[c] = xn[c];
+        v[c] = vn[c];
+    }
+    return VIGEN_SUCCESS;
+}
