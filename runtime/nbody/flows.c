@@ -60,28 +60,6 @@ int vigen_nbody_democratic_kepler(double t, double h, double *q, double *p, void
     return kepler_all(sys, h, q, p, NULL, sys->G * sys->m[0], sys->m);
 }
 
-/* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
- * pairs i < j with i >= from, the pair (0, 1) left out when skip01. */
-static void pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01)
-{
-    size_t n = sys->n;
-    memset(f, 0, 3 * n * sizeof *f);
-    for (size_t i = from; i < n; i++)
-        for (size_t j = i + 1; j < n; j++) {
-            if (skip01 && i == 0 && j == 1) continue;
-            double d[3], r2 = 0;
-            for (int c = 0; c < 3; c++) {
-                d[c] = x[3 * j + c] - x[3 * i + c];
-                r2 += d[c] * d[c];
-            }
-            double k = sys->G * sys->m[i] * sys->m[j] / (r2 * sqrt(r2));
-            for (int c = 0; c < 3; c++) {
-                f[3 * i + c] += k * d[c];
-                f[3 * j + c] -= k * d[c];
-            }
-        }
-}
-
 /* Adds h times the force to p (bodies 1..n-1) when every value is finite. */
 static int kick(vigen_nbody *sys, double h, double *p, const double *force)
 {
@@ -104,7 +82,7 @@ int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, voi
     vigen_nbody_jacobi_positions_inverse(sys, q, x);
     /* the pair (0, 1) and the Jacobi term of body 1 cancel exactly
      * (x_1 - x_0 = q_1): both left out */
-    pair_forces(sys, x, f, 0, 1);
+    vigen_nbody_pair_forces(sys, x, f, 0, 1);
     vigen_nbody_jacobi_momenta(sys, f, f);
     for (size_t i = 2; i < n; i++) {
         const double *qi = q + 3 * i;
@@ -121,7 +99,7 @@ int vigen_nbody_democratic_interaction(double t, double h, double *q, double *p,
     vigen_nbody *sys = ctx;
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
     double *f = sys->work + 3 * sys->n;
-    pair_forces(sys, q, f, 1, 0);
+    vigen_nbody_pair_forces(sys, q, f, 1, 0);
     return kick(sys, h, p, f);
 }
 
@@ -154,7 +132,7 @@ static int vector_field(vigen_nbody *sys, int coords, const double *q, const dou
     double *x = sys->work, *v = sys->work + d, *f = sys->work + 2 * d;
     vigen_nbody_from_coordinates(sys, coords, q, p, x, v);
     for (size_t k = 0; k < d; k++) v[k] /= sys->m[k / 3];
-    pair_forces(sys, x, f, 0, 0);
+    vigen_nbody_pair_forces(sys, x, f, 0, 0);
     if (coords == VIGEN_NBODY_JACOBI) {
         vigen_nbody_jacobi_positions(sys, v, dq);
         vigen_nbody_jacobi_momenta(sys, f, dp);

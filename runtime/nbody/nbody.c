@@ -88,12 +88,15 @@ double vigen_nbody_energy(const vigen_nbody *sys, const double *x, const double 
     return s + c;
 }
 
-void vigen_nbody_forces(const vigen_nbody *sys, const double *x, double *f)
+/* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
+ * pairs i < j with i >= from, the pair (0, 1) left out when skip01. */
+void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01)
 {
     size_t n = sys->n;
     memset(f, 0, 3 * n * sizeof *f);
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = from; i < n; i++)
         for (size_t j = i + 1; j < n; j++) {
+            if (skip01 && i == 0 && j == 1) continue;
             double d[3], r2 = 0;
             for (int c = 0; c < 3; c++) {
                 d[c] = x[3 * j + c] - x[3 * i + c];
@@ -105,6 +108,11 @@ void vigen_nbody_forces(const vigen_nbody *sys, const double *x, double *f)
                 f[3 * j + c] -= k * d[c];
             }
         }
+}
+
+void vigen_nbody_forces(const vigen_nbody *sys, const double *x, double *f)
+{
+    vigen_nbody_pair_forces(sys, x, f, 0, 0);
 }
 
 /* ---- Jacobi ------------------------------------------------------------ */

@@ -19,6 +19,10 @@ struct vigen_nbody {
     double *saved;   /* 6 n doubles: the state before a corrector */
 };
 
+/* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
+ * pairs i < j with i >= from, the pair (0, 1) left out when skip01 (nbody.c). */
+void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01);
+
 /* The linear maps of the changes of coordinates (nbody.c), positions and
  * momenta apart: q' = A x (also velocities: dq'/dt = A dx/dt) and
  * p' = A^-T p (also forces), and their inverses; in place allowed. */
