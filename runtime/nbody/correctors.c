@@ -69,9 +69,12 @@ static int corrector_run(const vigen_split_problem *sp, int kernel, int order, d
     if (m == 0 || (direction != 1 && direction != -1) || sp->nflows < 2 || !isfinite(h)) return VIGEN_EINVAL;
     vigen_flow_fn K = sp->flow[0], I = sp->flow[1];
     for (int k = 0; k < m; k++) {
-        /* C = Z_1 ... Z_m; C^-1 = Z_m(-a) ... Z_1(-a), Z(-a, b) the inverse of Z(a, b) */
+        /* C = Z(-a_1, b_1) ... Z(-a_m, b_m) and C^-1 = Z(a_m, b_m) ... Z(a_1, b_1),
+         * Z(a, b) the inverse of Z(-a, b); the sign of a in C is that of the
+         * maps applied in sequence (the generators above compose in the
+         * opposite order) */
         int i = direction > 0 ? k : m - 1 - k;
-        double ah = direction * a[i] * h, bh = b[i] * h;
+        double ah = -direction * a[i] * h, bh = b[i] * h;
         int st;
         if ((st = K(0, ah, q, p, sp->ctx)) != VIGEN_SUCCESS) return st;
         if ((st = I(0, bh, q, p, sp->ctx)) != VIGEN_SUCCESS) return st;

@@ -149,20 +149,22 @@ enum { VIGEN_NBODY_KERNEL_KDK = 0, VIGEN_NBODY_KERNEL_DKD = 1 };
 
 /* Applies the corrector of the given order (3, 5, 7, 11 or 17) for the
  * kernel to (q, p) in the Jacobi split problem's coordinates: direction
- * +1 the corrector C (mapped state -> true state: apply before output),
- * -1 its inverse (true state -> mapped state: apply once before the first
- * step).  The kernel's energy error O(eps h^2) becomes
- * O(eps h^(order+1) + eps^2 h^2).  The corrector is a composition of the
- * Kepler and interaction flows: for i = 1..m, m = (order - 1)/2, the pair
- * Z(a_i, b_i) = K(a_i h) I(b_i h) K(-2 a_i h) I(-b_i h) K(a_i h) (K the
- * Kepler flow, I the interaction flow) with a_i = i sqrt(7/40) and b_i
- * from vigen_nbody_corrector_coefficients.  Returns VIGEN_SUCCESS, a flow's
+ * +1 the corrector C (mapped state -> true state: apply to a copy of the
+ * state for output), -1 its inverse (true state -> mapped state: apply
+ * once before the first step).  The kernel's energy error O(eps h^2)
+ * becomes O(eps h^(order+1) + eps^2 h^2).  The corrector is a composition
+ * of the Kepler flow K and the interaction flow I with a_i = i sqrt(7/40)
+ * and b_i of vigen_nbody_corrector_coefficients, m = (order - 1)/2:
+ *   C    = for i = 1..m:  K(-a_i h) I(b_i h) K(2 a_i h) I(-b_i h) K(-a_i h)
+ *   C^-1 = for i = m..1:  K(a_i h) I(b_i h) K(-2 a_i h) I(-b_i h) K(a_i h)
+ * (each line applied left to right).  Returns VIGEN_SUCCESS, a flow's
  * status (q and p unchanged) or VIGEN_EINVAL (an order not offered, a bad
  * kernel or direction). */
 int vigen_nbody_corrector_apply(vigen_nbody *sys, int kernel, int order, double h, double *q, double *p,
                                 int direction);
 /* The same with the flows of any split problem (flow[0] the Kepler part,
- * flow[1] the perturbation), for problems split like the N-body one. */
+ * flow[1] the perturbation), for problems split like the N-body one;
+ * VIGEN_ENOMEM when the copy of the state cannot be allocated. */
 int vigen_split_corrector_apply(const vigen_split_problem *sp, int kernel, int order, double h, double *q,
                                 double *p, int direction);
 /* The coefficients of the corrector: m = (order - 1)/2 pairs a[i], b[i]
