@@ -21,17 +21,25 @@
 
 #define KEPLER_PI 3.14159265358979323846
 
-/* c0..c3 of z: the series (to z^10, below round-off) for |z| <= 1; above,
+/* c0..c3 of z: the series (to z^6 for |z| <= 0.1, to z^10 for |z| <= 1:
+ * the first term left out below 1e-20 of the sum); above,
  * the trigonometric (z > 0) or hyperbolic (z < 0) closed forms in the
  * forms free of cancellation: c2 = 2 sin^2(y/2)/z, c3 = (y - sin y)/(z y)
  * (cancellation at most 6 to 1 for z > 1). */
 static void stumpff(double z, double c[4])
 {
-    if (fabs(z) <= 1) {
-        c[3] = (1 - z / 20 * (1 - z / 42 * (1 - z / 72 * (1 - z / 110 * (1 - z / 156 * (1 - z / 210 * (1 - z / 272
-               * (1 - z / 342 * (1 - z / 420 * (1 - z / 506)))))))))) / 6;
-        c[2] = (1 - z / 12 * (1 - z / 30 * (1 - z / 56 * (1 - z / 90 * (1 - z / 132 * (1 - z / 182 * (1 - z / 240
-               * (1 - z / 306 * (1 - z / 380 * (1 - z / 462)))))))))) / 2;
+    if (fabs(z) <= 0.1) {
+        c[3] = (1 - z * (1.0 / 20) * (1 - z * (1.0 / 42) * (1 - z * (1.0 / 72) * (1 - z * (1.0 / 110)
+               * (1 - z * (1.0 / 156) * (1 - z * (1.0 / 210))))))) / 6;
+        c[2] = (1 - z * (1.0 / 12) * (1 - z * (1.0 / 30) * (1 - z * (1.0 / 56) * (1 - z * (1.0 / 90)
+               * (1 - z * (1.0 / 132) * (1 - z * (1.0 / 182))))))) / 2;
+        c[1] = 1 - z * c[3];
+        c[0] = 1 - z * c[2];
+    } else if (fabs(z) <= 1) {
+        c[3] = (1 - z * (1.0 / 20) * (1 - z * (1.0 / 42) * (1 - z * (1.0 / 72) * (1 - z * (1.0 / 110) * (1 - z * (1.0 / 156) * (1 - z * (1.0 / 210) * (1 - z * (1.0 / 272)
+               * (1 - z * (1.0 / 342) * (1 - z * (1.0 / 420) * (1 - z * (1.0 / 506))))))))))) / 6;
+        c[2] = (1 - z * (1.0 / 12) * (1 - z * (1.0 / 30) * (1 - z * (1.0 / 56) * (1 - z * (1.0 / 90) * (1 - z * (1.0 / 132) * (1 - z * (1.0 / 182) * (1 - z * (1.0 / 240)
+               * (1 - z * (1.0 / 306) * (1 - z * (1.0 / 380) * (1 - z * (1.0 / 462))))))))))) / 2;
         c[1] = 1 - z * c[3];
         c[0] = 1 - z * c[2];
     } else if (z > 0) {
@@ -84,60 +92,62 @@ int vigen_kepler_drift(double mu, double h, double *x, double *v)
         if (fabs(h) > period) h = remainder(h, period);
         if (h == 0) return VIGEN_SUCCESS;
     }
-    /* bracket of s: F(0) = -h; grow the other end until F changes sign */
+    /* s has the sign of h (F(0) = -h, F increasing): the bracket starts as
+     * (0, inf) or (-inf, 0) and closes as F is evaluated; the first guess
+     * is the series s = h/r0 - eta h^2/(2 r0^3) (its first term when the
+     * second flips the sign) */
     double s = h / r0 - eta * h * h / (2 * r0 * r0 * r0), g[4];
-    double lo = 0, hi = 0;
-    double step = h / r0;
-    if (h > 0) {
-        hi = step;
-        for (int it = 0;; it++) {
-            gfunctions(beta, hi, g);
-            double f = r0 * hi + eta * g[2] + zeta * g[3] - h;
-            if (f >= 0 || isinf(f)) break;
-            if (it > 200 || isnan(f)) return VIGEN_ENONFINITE;
-            lo = hi;
-            hi *= 2;
-        }
-    } else {
-        lo = step;
-        for (int it = 0;; it++) {
-            gfunctions(beta, lo, g);
-            double f = r0 * lo + eta * g[2] + zeta * g[3] - h;
-            if (f <= 0 || isinf(f)) break;
-            if (it > 200 || isnan(f)) return VIGEN_ENONFINITE;
-            hi = lo;
-            lo *= 2;
-        }
-    }
-    if (!(s > lo && s < hi)) s = (lo + hi) / 2;
-    /* Laguerre-Conway (n = 5) inside the bracket; a step that leaves it,
-     * and every step after the 30th, bisects instead (the bracket of
-     * doubles is exhausted within 2100 halvings at most) */
+    if (!(s * h > 0)) s = h / r0;
+    double lo = h > 0 ? 0 : -INFINITY, hi = h > 0 ? INFINITY : 0;
+    /* Laguerre-Conway (n = 5) inside the bracket.  A step that leaves the
+     * bracket, and every step after the 30th, bisects it instead, or
+     * doubles s while one end is still infinite; within 2200 iterations
+     * the doubles between the ends are exhausted.  Converged when the step
+     * is at round-off, or when it stops decreasing near it: F is then at
+     * the noise of its own round-off (terms of size h), where no step
+     * improves s (a stall counts within 4096 eps of s only). */
     int converged = 0;
+    double last = INFINITY;
     for (int it = 0; it < 2200; it++) {
         gfunctions(beta, s, g);
         double f = r0 * s + eta * g[2] + zeta * g[3] - h;
         double fp = r0 + eta * g[1] + zeta * g[2];
         double fpp = eta * g[0] + zeta * g[1];
-        if (!isfinite(f) || !isfinite(fp)) return VIGEN_ENONFINITE;
+        if (isnan(f) || !isfinite(fp)) return VIGEN_ENONFINITE;
         if (f == 0) {
             converged = 1;
             break;
         }
         if (f < 0) lo = s; else hi = s;
         double disc = fabs(16 * fp * fp - 20 * f * fpp);
-        double den = fp + (fp >= 0 ? 1 : -1) * 2 * sqrt(disc);
-        double next = den != 0 ? s - 5 * f / den : (lo + hi) / 2;
-        if (!(next > lo && next < hi) || it >= 30) next = lo + (hi - lo) / 2;
-        double ds = next - s;
-        s = next;
-        if (fabs(ds) <= 2 * DBL_EPSILON * fabs(s) || next == lo || next == hi) {
+        double den = fp + (fp >= 0 ? 1 : -1) * sqrt(disc);
+        double next = den != 0 && isfinite(f) ? s - 5 * f / den : NAN;
+        int bisect = !(next > lo && next < hi) || it >= 30;
+        if (bisect) {
+            if (isinf(hi)) next = 2 * s;
+            else if (isinf(lo)) next = 2 * s;
+            else next = lo + (hi - lo) / 2;
+            if (!isfinite(next)) return VIGEN_ENONFINITE;
+        }
+        double ds = fabs(next - s);
+        if (ds <= 2 * DBL_EPSILON * fabs(next) || next == lo || next == hi
+            || (!bisect && ds >= last && ds <= 4096 * DBL_EPSILON * fabs(next))) {
+            /* the G functions at the last, round-off step by their
+             * derivatives (G_k' = G_(k-1), G0' = -beta G1): the error is
+             * (4096 eps s)^2 at most, far below round-off */
+            double d = next - s;
+            g[3] += g[2] * d;
+            g[2] += g[1] * d;
+            g[1] += g[0] * d;
+            g[0] -= beta * g[1] * d;
+            s = next;
             converged = 1;
             break;
         }
+        s = next;
+        if (!bisect) last = ds;
     }
     if (!converged) return VIGEN_ENOCONV;
-    gfunctions(beta, s, g);
     double r = r0 + eta * g[1] + zeta * g[2];
     if (!(r > 0) || !isfinite(r)) return r > 0 ? VIGEN_ENONFINITE : VIGEN_EINVAL;
     double fm1 = -mu * g[2] / r0, gg = r0 * g[1] + eta * g[2];
