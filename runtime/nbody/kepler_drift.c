@@ -87,9 +87,8 @@ int vigen_kepler_drift(double mu, double h, double *x, double *v)
     if (l2 <= 64 * DBL_EPSILON * DBL_EPSILON * r0 * r0 * v2 && (eta * h < 0 || beta > 0 || v2 == 0))
         return VIGEN_EINVAL;
     /* a bound orbit: h modulo the period 2 pi mu / beta^(3/2) */
-    if (beta > 0) {
-        double period = 2 * KEPLER_PI * mu / (beta * sqrt(beta));
-        if (fabs(h) > period) h = remainder(h, period);
+    if (beta > 0 && h * h * beta * beta * beta > 4 * KEPLER_PI * KEPLER_PI * mu * mu) {
+        h = remainder(h, 2 * KEPLER_PI * mu / (beta * sqrt(beta)));
         if (h == 0) return VIGEN_SUCCESS;
     }
     /* s has the sign of h (F(0) = -h, F increasing): the bracket starts as
@@ -150,8 +149,9 @@ int vigen_kepler_drift(double mu, double h, double *x, double *v)
     if (!converged) return VIGEN_ENOCONV;
     double r = r0 + eta * g[1] + zeta * g[2];
     if (!(r > 0) || !isfinite(r)) return r > 0 ? VIGEN_ENONFINITE : VIGEN_EINVAL;
-    double fm1 = -mu * g[2] / r0, gg = r0 * g[1] + eta * g[2];
-    double fdot = -mu * g[1] / (r * r0), gdm1 = -mu * g[2] / r;
+    double ir0 = 1 / r0, ir = 1 / r;
+    double fm1 = -mu * g[2] * ir0, gg = r0 * g[1] + eta * g[2];
+    double fdot = -mu * g[1] * ir * ir0, gdm1 = -mu * g[2] * ir;
     double xn[3], vn[3];
     for (int c = 0; c < 3; c++) {
         xn[c] = x[c] + (fm1 * x[c] + gg * v[c]);
