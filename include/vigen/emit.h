@@ -171,6 +171,11 @@ char *vigen_emit_identifier(const char *name);
  * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
 int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
 
+/* The variant vigen_emit_render writes for t when asked for `variant`
+ * (NULL: the default): variant itself, else "split" for a splitting whose
+ * flows are named (anything but drift and kick), else "prk". */
+const char *vigen_emit_variant_chosen(const vigen_tableau *t, const char *variant);
+
 /* The order NAME_ORDER and the stepper type's order field carry: the order
  * the checker certifies for general H (a claim of the file that holds, the
  * enumerated order conditions, Butcher's theorem beyond them), -1 when it is

@@ -111,6 +111,12 @@ static int named_flows(const vigen_tableau *t)
     return t->flows->nflows != 2;
 }
 
+const char *vigen_emit_variant_chosen(const vigen_tableau *t, const char *variant)
+{
+    if (variant != NULL) return variant;
+    return named_flows(t) ? "split" : variants[0].name;
+}
+
 int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
                       char **ident, vigen_error *err)
 {

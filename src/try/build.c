@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "emit/names.h"
 #include "emit/template.h"
 #include "vigen/check.h"
 #include "vigen/emit.h"
@@ -25,6 +26,7 @@ void try_build_clear(try_build *b)
 {
     free(b->label);
     free(b->exe);
+    free(b->flows);
     memset(b, 0, sizeof *b);
 }
 
@@ -68,6 +70,20 @@ static int emit(try_build *b, size_t k, const char *file, int check, int allow_i
         rc = vigen_emit_load_render(&t, &loaded, file, &eo, &h, &c, &ident, err);
     }
     if (rc == VIGEN_OK && check) rc = certify(b, &t, b->label, err);
+    if (rc == VIGEN_OK && strcmp(vigen_emit_variant_chosen(&t, NULL), "split") == 0 && t.flows) {
+        /* the driver maps the method's flows to the problem's by name (a
+         * name made safe for a string literal no longer matches, and is
+         * refused there as a flow the problem lacks) */
+        vigen_strbuf fl;
+        vigen_strbuf_init(&fl);
+        vigen_strbuf_append(&fl, "");
+        for (slong j = 0; j < t.flows->nflows; j++) {
+            char *safe = vigen_emit_safe_text(t.flows->names[j], 60);
+            vigen_strbuf_printf(&fl, "%s\"%s\"", j ? ", " : "", safe);
+            free(safe);
+        }
+        b->flows = fl.data;
+    }
     if (loaded) vigen_tableau_clear(&t);
     char fname[48];
     if (rc == VIGEN_OK) {
@@ -86,12 +102,14 @@ static int emit(try_build *b, size_t k, const char *file, int check, int allow_i
 
 /* lm: the built-in Lagrangian method, or NULL for an emitted stepper. */
 static int render_driver(char **path, size_t k, const char *label, const try_lagrangian_method *lm,
-                         const try_paths *p, vigen_error *err)
+                         const char *flows, const try_paths *p, vigen_error *err)
 {
     vigen_slots slots;
     vigen_slots_init(&slots);
     vigen_slots_textf(&slots, "NAME", "m%zu", k);
     vigen_slots_flag(&slots, "LAGRANGIAN", lm != NULL);
+    vigen_slots_flag(&slots, "SPLIT", flows != NULL);
+    vigen_slots_text(&slots, "FLOWS", flows ? flows : "");
     vigen_slots_textf(&slots, "KIND", "%d", lm ? lm->kind : 0);
     vigen_slots_text(&slots, "METHOD", label);
     char *text = NULL;
@@ -198,7 +216,7 @@ int try_build_method(try_build *b, size_t k, const char *method, const try_paths
         if (rc == VIGEN_OK)
             rc = emit(b, k, file, check, allow_inexact ? 1 : library ? 2 : 0, &hpath, &cpath, err);
     }
-    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, b->label, lm, p, err);
+    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, b->label, lm, b->flows, p, err);
     if (rc == VIGEN_OK) rc = compile(b, k, cc, dpath, cpath, p, err);
     free(file);
     free(hpath);

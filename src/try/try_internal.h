@@ -90,6 +90,9 @@ typedef struct {
     char *exe;               /* the driver program */
     int certified, certified_separable; /* orders, when asked for (check = 1) */
     int builtin;             /* a built-in Lagrangian method: certified is its proven order */
+    char *flows;             /* a splitting stepper of named flows (the split variant): the flows'
+                                names as a C initialiser ("\"kepler\", \"interaction\""); NULL
+                                otherwise */
 } try_build;
 /* Builds method k of the run into the working directory.  With check, the
  * tableau's orders are certified too (vigen/check.h).  allow_inexact: a

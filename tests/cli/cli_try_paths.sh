@@ -8,7 +8,8 @@
 # digits and a warning saying so, the sixth-order one more accurate than the
 # fourth-order one at the same step; the same decimals in a file of the
 # user's refused unless --allow-inexact; a problem that is not mechanical
-# (charged-particle) on the general path.
+# (charged-particle) on the general path; splittings of named flows
+# (Wisdom-Holman) on the problems' own Kepler flows.
 set -u
 VIGEN=$1
 SRC=$2
@@ -69,6 +70,43 @@ check 'awk "/^yoshida_4 /{ exit !(\$(NF-1) < 3.01) }" "$T/o.out"' "outer-solar-s
 "$VIGEN" try gauss_1 --problem charged-particle --time 1 --json > "$T/c.json" 2> "$T/c.err"
 rc=$?
 check '[ $rc -eq 0 ] && grep -q "\"path\": \"general\"" "$T/c.json"' "charged-particle: not the general path (exit $rc)"
+
+# splittings of named flows on the problems' own exact flows: Wisdom-Holman
+# on kepler (the Kepler flow is the whole problem, the interaction zero:
+# exact to round-off at 10 steps per period, e = 0.6), and on the outer
+# solar system, whose energy error O(eps h^2) (generalized order (2, 2))
+# falls by 4 per halving of h, the corrected kernel's far below it
+"$VIGEN" try wisdom_holman --problem kepler --steps-per-period 10 --time 200 --json > "$T/wk.json" 2> "$T/wk.err"
+rc=$?
+check '[ $rc -eq 0 ]' "wisdom_holman on kepler: exit $rc ($(cat "$T/wk.err"))"
+for h in 100 50; do
+  "$VIGEN" try wisdom_holman wisdom_holman_corrected --problem outer-solar-system --h $h --time 200000 --json \
+    > "$T/wo$h.json" 2> "$T/wo$h.err" || { echo "FAIL: wisdom_holman on outer-solar-system, h = $h: $(cat "$T/wo$h.err")"; fail=1; }
+done
+python3 - "$T/wk.json" "$T/wo100.json" "$T/wo50.json" <<'PY' || fail=1
+import json, sys
+k = json.load(open(sys.argv[1]))["methods"][0]
+o100 = {m["name"]: m for m in json.load(open(sys.argv[2]))["methods"]}
+o50 = {m["name"]: m for m in json.load(open(sys.argv[3]))["methods"]}
+bad = []
+if k["path"] != "split": bad.append("kepler: path %r" % k["path"])
+if not k["global_error"] < 1e-11: bad.append("kepler: Wisdom-Holman not exact: error %r" % k["global_error"])
+# interaction h/2, kepler h, interaction h/2: 3 flow calls per step
+if abs(k["grad_evals_per_step"] - 3) > 1e-12: bad.append("kepler: %r flow calls per step" % k["grad_evals_per_step"])
+r = o100["wisdom_holman"]["energy_error_max"] / o50["wisdom_holman"]["energy_error_max"]
+if not 3.5 < r < 4.5: bad.append("outer solar system: energy error ratio %r per halving, not 4" % r)
+for o in (o100, o50):
+    if not o["wisdom_holman_corrected"]["energy_error_max"] < o["wisdom_holman"]["energy_error_max"] / 100:
+        bad.append("the corrector does not reduce the energy error: %r %r" % (
+            o["wisdom_holman_corrected"]["energy_error_max"], o["wisdom_holman"]["energy_error_max"]))
+    if o["wisdom_holman"]["path"] != "split": bad.append("outer solar system: path %r" % o["wisdom_holman"]["path"])
+for b in bad: print("FAIL:", b)
+sys.exit(1 if bad else 0)
+PY
+# a problem without a Kepler splitting: one line that says so, exit 2
+"$VIGEN" try wisdom_holman --problem pendulum --time 5 > "$T/wp.out" 2> "$T/wp.err"
+rc=$?
+check '[ $rc -eq 2 ] && grep -q "has no Kepler splitting" "$T/wp.err"' "wisdom_holman on pendulum: exit $rc ($(cat "$T/wp.err"))"
 
 [ $fail = 0 ] && echo "cli_try_paths: ok"
 exit $fail

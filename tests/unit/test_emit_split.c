@@ -38,7 +38,8 @@
  *     round-off on the oscillator;
  *   - the emitter: byte-identical output for identical input, the flows
  *     named in the header, a tableau that is no splitting and --batch
- *     refused with a message. */
+ *     refused with a message; the golden split stepper
+ *     (tests/data/emit/golden/rotations_strang.*) unchanged. */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -551,6 +552,46 @@ static int render(const char *file, const char *variant, int batch, char **h, ch
     return rc;
 }
 
+static char *slurp(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (f == NULL) return NULL;
+    fseek(f, 0, SEEK_END);
+    const long n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *s = calloc((size_t)n + 1, 1);
+    if (s && fread(s, 1, (size_t)n, f) != (size_t)n) s[0] = '\0';
+    fclose(f);
+    return s;
+}
+
+/* The golden split stepper (reviewed by hand; regenerate with
+ *   vigen emit tests/data/emit/split/rotations_strang.lua --name rotations_strang -o tests/data/emit/golden
+ * after a change of templates/split/) is what the emitter writes now. */
+static void test_golden(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    vigen_emit_options opt;
+    memset(&opt, 0, sizeof opt);
+    opt.name = "rotations_strang";
+    opt.real = VIGEN_REAL_DOUBLE;
+    opt.template_dir = VIGEN_SOURCE_DIR "/templates";
+    opt.input_label = "rotations_strang.lua";
+    vigen_tableau t;
+    int loaded = 0;
+    char *h = NULL, *c = NULL, *ident = NULL;
+    CHECK(vigen_emit_load_render(&t, &loaded, VIGEN_SOURCE_DIR "/tests/data/emit/split/rotations_strang.lua", &opt, &h,
+                                 &c, &ident, &err) == VIGEN_OK);
+    if (loaded) vigen_tableau_clear(&t);
+    char *gh = slurp(VIGEN_SOURCE_DIR "/tests/data/emit/golden/rotations_strang.h");
+    char *gc = slurp(VIGEN_SOURCE_DIR "/tests/data/emit/golden/rotations_strang.c");
+    CHECK_MSG(h && gh && strcmp(h, gh) == 0, "golden rotations_strang.h differs from a fresh emission");
+    CHECK_MSG(c && gc && strcmp(c, gc) == 0, "golden rotations_strang.c differs from a fresh emission");
+    free(h); free(c); free(ident); free(gh); free(gc);
+    vigen_error_clear(&err);
+}
+
 static void test_emitter(void)
 {
     vigen_error err;
@@ -585,5 +626,6 @@ int main(void)
     test_ensemble();
     test_dense_events_alloc();
     test_emitter();
+    test_golden();
     TEST_MAIN_END();
 }
