@@ -234,8 +234,6 @@ void chk_lie_bracket(arb_ptr out, vigen_strbuf *sb, slong b, slong n, slong N, s
 int chk_lie_log(arb_ptr lg, const vigen_tableau *t, slong N, int flip, slong prec, vigen_error *err);
 void chk_lie_lyndon(vigen_check_lie_error *le, arb_ptr lg, slong N, slong n, int nb, slong prec);
 slong chk_adequate_prec(const vigen_tableau *t);
-/* generalized.c: frees rep->generalized (NULL: nothing) */
-void chk_generalized_free(vigen_check_generalized *g);
 
 /* checks.c: one round of every check of vigen/check_fields.def */
 int chk_round_run(vigen_check_report *rep, ctx_t *cx, vigen_tableau *t, vigen_tableau *against,

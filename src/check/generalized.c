@@ -28,6 +28,7 @@
 
 enum { DEFAULT_DEGREE = 12 };
 
+/* (freed with the report: report_init.c) */
 static vigen_check_generalized *gen_new(void)
 {
     vigen_check_generalized *g = calloc(1, sizeof *g);
@@ -47,18 +48,6 @@ static void gen_reset(vigen_check_generalized *g)
     g->why = NULL;
     g->letter_a = g->letter_b = NULL;
     g->claim_status = -1;
-}
-
-void chk_generalized_free(vigen_check_generalized *g)
-{
-    if (g == NULL) return;
-    for (int j = 0; j <= VIGEN_GEN_MAX_DEGREE; j++) {
-        chk_lie_error_clear(&g->terms[j]);
-        arb_clear(g->terms[j].norm);
-    }
-    free(g->letter_a);
-    free(g->letter_b);
-    free(g);
 }
 
 /* the verdict on one word coefficient from its balls at two precisions

@@ -128,6 +128,19 @@ void chk_notes_clear(vigen_check_report *rep)
     rep->reducible = NULL;
 }
 
+/* rep->generalized (generalized.c allocates it on the first round) */
+static void generalized_free(vigen_check_generalized *g)
+{
+    if (g == NULL) return;
+    for (int j = 0; j <= VIGEN_GEN_MAX_DEGREE; j++) {
+        chk_lie_error_clear(&g->terms[j]);
+        arb_clear(g->terms[j].norm);
+    }
+    free(g->letter_a);
+    free(g->letter_b);
+    free(g);
+}
+
 void vigen_check_report_clear(vigen_check_report *rep)
 {
     chk_failures_clear(rep);
@@ -148,7 +161,7 @@ void vigen_check_report_clear(vigen_check_report *rep)
     arb_clear(rep->stability.x);
     chk_lie_error_clear(&rep->lie_error);
     arb_clear(rep->lie_error.norm);
-    chk_generalized_free(rep->generalized);
+    generalized_free(rep->generalized);
     free(rep->path);
     free(rep->name);
     flint_free(rep->rational_denominator);
