@@ -145,6 +145,36 @@ static double interaction_energy(double t, const double *q, const double *p, voi
     return vigen_nbody_jacobi_energy(t, q, p, ctx) - jacobi_kepler_energy(q, p);
 }
 
+/* Democratic heliocentric: H_kepler and H_jump from their formulas, and
+ * H_interaction = H - H_kepler - H_jump. */
+static double democratic_kepler_jump(const double *q, const double *p, int jump)
+{
+    double Mtot = 0, S[3] = { 0, 0, 0 }, H = 0;
+    for (int i = 0; i < NMAX; i++) Mtot += oss_mass[i];
+    for (int i = 1; i < NMAX; i++)
+        for (int c = 0; c < 3; c++) S[c] += p[3 * i + c];
+    if (jump) return (S[0] * S[0] + S[1] * S[1] + S[2] * S[2]) / (2 * oss_mass[0]);
+    H = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / (2 * Mtot);
+    for (int i = 1; i < NMAX; i++) {
+        const double *qi = q + 3 * i, *pi = p + 3 * i;
+        H += (pi[0] * pi[0] + pi[1] * pi[1] + pi[2] * pi[2]) / (2 * oss_mass[i])
+             - oss_G * oss_mass[0] * oss_mass[i] / sqrt(qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2]);
+    }
+    return H;
+}
+
+static double democratic_interaction_energy(double t, const double *q, const double *p, void *ctx)
+{
+    return vigen_nbody_democratic_energy(t, q, p, ctx) - democratic_kepler_jump(q, p, 0)
+           - democratic_kepler_jump(q, p, 1);
+}
+
+static double democratic_jump_energy(double t, const double *q, const double *p, void *ctx)
+{
+    (void)t; (void)ctx;
+    return democratic_kepler_jump(q, p, 1);
+}
+
 static void fields(void)
 {
     double x[DMAX], p[DMAX], q[DMAX], pc[DMAX], dq[DMAX], dp[DMAX], E0;
@@ -180,6 +210,31 @@ static void fields(void)
         if (err > worst) worst = err;
     }
     CHECK_MSG(worst <= 1, "the Jacobi kick disagrees with differences of H_interaction (%.3g)", worst);
+    /* democratic heliocentric: the kick p -= h dH_int/dq and the jump
+     * q += h dH_jump/dp, each changing only its half of the state */
+    vigen_nbody_to_democratic(sys, x, p, q, pc);
+    memcpy(q1, q, sizeof q);
+    memcpy(p1, pc, sizeof pc);
+    CHECK(vigen_nbody_democratic_interaction(0, h, q1, p1, sys) == VIGEN_SUCCESS);
+    CHECK(memcmp(q1, q, sizeof q) == 0);
+    worst = 0;
+    for (int k = 0; k < DMAX; k++) {
+        double g = fd(democratic_interaction_energy, sys, q, pc, q, k), kick = (p1[k] - pc[k]) / h;
+        double err = fabs(kick + g) / (1e-5 * fabs(g) + 1e-14);
+        if (err > worst) worst = err;
+    }
+    CHECK_MSG(worst <= 1, "the democratic kick disagrees with differences of H_interaction (%.3g)", worst);
+    memcpy(q1, q, sizeof q);
+    memcpy(p1, pc, sizeof pc);
+    CHECK(vigen_nbody_democratic_jump(0, h, q1, p1, sys) == VIGEN_SUCCESS);
+    CHECK(memcmp(p1, pc, sizeof pc) == 0);
+    worst = 0;
+    for (int k = 0; k < DMAX; k++) {
+        double g = fd(democratic_jump_energy, sys, q, pc, pc, k), move = (q1[k] - q[k]) / h;
+        double err = fabs(move - g) / (1e-6 * fabs(g) + 1e-14);
+        if (err > worst) worst = err;
+    }
+    CHECK_MSG(worst <= 1, "the jump disagrees with differences of H_jump (%.3g)", worst);
     vigen_nbody_free(sys);
     vigen_problem_free(pb);
 }
