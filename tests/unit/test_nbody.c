@@ -501,6 +501,54 @@ static void problem_splits(void)
     vigen_problem_free(pb);
 }
 
+/* A system of 40 bodies (the scratch in the system's memory, above 32):
+ * each flow by h and back by -h returns to the start, and the vector field
+ * agrees with differences of H. */
+static void many_bodies(void)
+{
+    enum { NB = 40, DB = 3 * NB };
+    double m[NB], x[DB], p[DB], q[DB], pc[DB], q0[DB], p0[DB], dq[DB], dp[DB];
+    m[0] = 1;
+    for (int i = 1; i < NB; i++) {
+        double r = 1 + 0.37 * i, ang = 2.1 * i, v = sqrt(1 / r);
+        m[i] = 1e-6 * (1 + i % 3);
+        x[3 * i] = r * cos(ang); x[3 * i + 1] = r * sin(ang); x[3 * i + 2] = 0.01 * (i % 5);
+        p[3 * i] = -m[i] * v * sin(ang); p[3 * i + 1] = m[i] * v * cos(ang); p[3 * i + 2] = 0;
+    }
+    x[0] = x[1] = x[2] = p[0] = p[1] = p[2] = 0;
+    vigen_nbody *sys;
+    CHECK(vigen_nbody_alloc(&sys, NB, 1, m) == VIGEN_SUCCESS);
+    for (int coords = 0; coords < 2; coords++) {
+        vigen_split_problem sp;
+        vigen_nbody_split(sys, coords, &sp);
+        vigen_nbody_to_coordinates(sys, coords, x, p, q, pc);
+        memcpy(q0, q, sizeof q);
+        memcpy(p0, pc, sizeof pc);
+        for (size_t k = 0; k < sp.nflows; k++) {
+            CHECK(sp.flow[k](0, 0.3, q, pc, sp.ctx) == VIGEN_SUCCESS);
+            CHECK(sp.flow[k](0, -0.3, q, pc, sp.ctx) == VIGEN_SUCCESS);
+        }
+        double sq, spp, eq = maxdiff(q, q0, DB, &sq), ep = maxdiff(pc, p0, DB, &spp);
+        CHECK_MSG(eq <= 1e-13 * sq && ep <= 1e-13 * spp, "40 bodies, coords %d: flows and back %.3g %.3g", coords,
+                  eq / sq, ep / spp);
+        CHECK(sp.vector_field(0, q, pc, dq, dp, sp.ctx) == VIGEN_SUCCESS);
+        /* differences of H carry an absolute error of about 1e-8 of the
+         * largest component (eps |H| over the step) */
+        double sdq = 0, sdp = 0;
+        for (int k = 0; k < DB; k++) {
+            sdq = fmax(sdq, fabs(dq[k]));
+            sdp = fmax(sdp, fabs(dp[k]));
+        }
+        for (int k = 3; k < DB; k += 7) {
+            double gq = fd(sp.H, sp.ctx, q, pc, q, k), gp = fd(sp.H, sp.ctx, q, pc, pc, k);
+            CHECK_MSG(fabs(-gq - dp[k]) <= 1e-5 * fabs(dp[k]) + 1e-6 * sdp
+                      && fabs(gp - dq[k]) <= 1e-5 * fabs(dq[k]) + 1e-6 * sdq,
+                      "40 bodies, coords %d, k %d: %.6g %.6g %.6g %.6g", coords, k, -gq, dp[k], gp, dq[k]);
+        }
+    }
+    vigen_nbody_free(sys);
+}
+
 int main(void)
 {
     round_trips();
@@ -510,5 +558,6 @@ int main(void)
     corrector_inverse();
     bad_input();
     problem_splits();
+    many_bodies();
     TEST_MAIN_END();
 }
