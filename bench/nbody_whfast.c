@@ -11,7 +11,9 @@
  * Per row: the method, the step, the maximum relative energy error over
  * 100 outputs (a run of its own, the corrector applied at each output),
  * and the wall time of the bare run (no outputs; best and median of
- * `repeats` runs). */
+ * `repeats` runs).  With the arguments "one METHOD H CORRECTOR STEPS" it
+ * makes one bare run only (rebound_run.sh counts its instructions with
+ * callgrind). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -170,7 +172,10 @@ static void row(const char *name, int is_rebound, double h, int corrector, int r
 
 int main(int argc, char **argv)
 {
-    int repeats = argc > 1 ? atoi(argv[1]) : 5;
+    /* "one whfast|vigen H CORRECTOR STEPS": one bare run, for counting
+     * instructions under callgrind */
+    int one = argc == 6 && strcmp(argv[1], "one") == 0;
+    int repeats = argc > 1 && !one ? atoi(argv[1]) : 5;
     if (repeats < 1 || repeats > 32) repeats = 5;
     vigen_problem *pb;
     if (vigen_problem_create(&pb, "outer-solar-system", NULL, NULL, 0) != VIGEN_SUCCESS) return 1;
@@ -198,6 +203,13 @@ int main(int argc, char **argv)
     for (int k = 0; k < D; k++) {
         x0[k] = q[k] - X[k % 3] / M;
         v0[k] = p[k] / mass[k / 3] - V[k % 3] / M;
+    }
+    if (one) {
+        double h = atof(argv[3]);
+        int corrector = atoi(argv[4]);
+        long nsteps = atol(argv[5]);
+        sink = strcmp(argv[2], "whfast") == 0 ? rebound_time(h, corrector, nsteps) : vigen_time(h, corrector, nsteps);
+        return 0;
     }
     static const double steps[] = { 400, 200, 100, 50, 25, 12.5 };
     static const int correctors[] = { 0, 3, 11, 17 };

@@ -116,5 +116,8 @@ int vigen_nbody_corrector_apply(vigen_nbody *sys, int kernel, int order, double 
     vigen_split_problem sp;
     if (sys == NULL || q == NULL || p == NULL) return VIGEN_EINVAL;
     vigen_nbody_split(sys, VIGEN_NBODY_JACOBI, &sp);
-    return corrector_restoring(&sp, kernel, order, h, q, p, direction, sys->saved);
+    /* the copy of the state on the stack for up to 32 bodies (thread-safe
+     * like the flows), in the system's memory above */
+    double local[6 * 32];
+    return corrector_restoring(&sp, kernel, order, h, q, p, direction, sys->n <= 32 ? local : sys->saved);
 }

@@ -4,10 +4,21 @@
  * (vigen/nbody.h states the Hamiltonians).  Every flow writes its result
  * into the system's scratch memory first and copies it into (q, p) only
  * when every body succeeded and every value is finite, so that a failure
- * leaves the state unchanged. */
+ * leaves the state unchanged.  The scratch is on the stack for systems of
+ * up to STACK_BODIES bodies (the flows are then safe to call from several
+ * threads on one system), the system's own memory above. */
 #include <math.h>
 #include <string.h>
 #include "nbody_internal.h"
+
+enum { STACK_BODIES = 32 };
+
+/* The scratch of 9 n doubles: local (9 STACK_BODIES doubles) or the
+ * system's. */
+static double *scratch(vigen_nbody *sys, double *local)
+{
+    return sys->n <= STACK_BODIES ? local : sys->work;
+}
 
 static int all_finite(const double *a, size_t k)
 {
@@ -23,7 +34,8 @@ static int kepler_all(vigen_nbody *sys, double h, double *q, double *p, const do
 {
     if (!isfinite(h)) return VIGEN_EINVAL;
     size_t n = sys->n, d = 3 * n;
-    double *qn = sys->work, *pn = sys->work + d;
+    double local[9 * STACK_BODIES], *work = scratch(sys, local);
+    double *qn = work, *pn = work + d;
     for (int c = 0; c < 3; c++) {
         qn[c] = q[c] + h * p[c] / sys->mtot;
         pn[c] = p[c];
@@ -61,10 +73,10 @@ int vigen_nbody_democratic_kepler(double t, double h, double *q, double *p, void
 }
 
 /* Adds h times the force to p (bodies 1..n-1) when every value is finite. */
-static int kick(vigen_nbody *sys, double h, double *p, const double *force)
+static int kick(vigen_nbody *sys, double h, double *p, const double *force, double *work)
 {
     size_t n = sys->n;
-    double *pn = sys->work + 6 * n;
+    double *pn = work + 6 * n;
     for (int c = 0; c < 3; c++) pn[c] = p[c];
     for (size_t k = 3; k < 3 * n; k++) pn[k] = p[k] + h * force[k];
     if (!all_finite(pn, 3 * n)) return VIGEN_ENONFINITE;
@@ -78,7 +90,8 @@ int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, voi
     vigen_nbody *sys = ctx;
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
     size_t n = sys->n;
-    double *x = sys->work, *f = sys->work + 3 * n;
+    double local[9 * STACK_BODIES], *work = scratch(sys, local);
+    double *x = work, *f = work + 3 * n;
     vigen_nbody_jacobi_positions_inverse(sys, q, x);
     /* the pair (0, 1) and the Jacobi term of body 1 cancel exactly
      * (x_1 - x_0 = q_1): both left out */
@@ -90,7 +103,7 @@ int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, voi
         double k = sys->G * sys->m[i] * sys->interior[i - 1] / (r2 * sqrt(r2));
         for (int c = 0; c < 3; c++) f[3 * i + c] += k * qi[c];
     }
-    return kick(sys, h, p, f);
+    return kick(sys, h, p, f, work);
 }
 
 int vigen_nbody_democratic_interaction(double t, double h, double *q, double *p, void *ctx)
@@ -98,9 +111,10 @@ int vigen_nbody_democratic_interaction(double t, double h, double *q, double *p,
     (void)t;
     vigen_nbody *sys = ctx;
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
-    double *f = sys->work + 3 * sys->n;
+    double local[9 * STACK_BODIES], *work = scratch(sys, local);
+    double *f = work + 3 * sys->n;
     vigen_nbody_pair_forces(sys, q, f, 1, 0);
-    return kick(sys, h, p, f);
+    return kick(sys, h, p, f, work);
 }
 
 int vigen_nbody_democratic_jump(double t, double h, double *q, double *p, void *ctx)
@@ -109,7 +123,7 @@ int vigen_nbody_democratic_jump(double t, double h, double *q, double *p, void *
     vigen_nbody *sys = ctx;
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
     size_t n = sys->n;
-    double S[3] = { 0, 0, 0 }, *qn = sys->work;
+    double local[9 * STACK_BODIES], S[3] = { 0, 0, 0 }, *qn = scratch(sys, local);
     for (size_t i = 1; i < n; i++)
         for (int c = 0; c < 3; c++) S[c] += p[3 * i + c];
     for (int c = 0; c < 3; c++) {
@@ -129,7 +143,8 @@ static int vector_field(vigen_nbody *sys, int coords, const double *q, const dou
 {
     if (sys == NULL || q == NULL || p == NULL || dq == NULL || dp == NULL) return VIGEN_EINVAL;
     size_t n = sys->n, d = 3 * n;
-    double *x = sys->work, *v = sys->work + d, *f = sys->work + 2 * d;
+    double local[9 * STACK_BODIES], *work = scratch(sys, local);
+    double *x = work, *v = work + d, *f = work + 2 * d;
     vigen_nbody_from_coordinates(sys, coords, q, p, x, v);
     for (size_t k = 0; k < d; k++) v[k] /= sys->m[k / 3];
     vigen_nbody_pair_forces(sys, x, f, 0, 0);
@@ -159,7 +174,8 @@ int vigen_nbody_democratic_vector_field(double t, const double *q, const double 
 static double energy(vigen_nbody *sys, int coords, const double *q, const double *p)
 {
     size_t d = 3 * sys->n;
-    double *x = sys->work, *pi = sys->work + d;
+    double local[9 * STACK_BODIES], *work = scratch(sys, local);
+    double *x = work, *pi = work + d;
     vigen_nbody_from_coordinates(sys, coords, q, p, x, pi);
     return vigen_nbody_energy(sys, x, pi);
 }

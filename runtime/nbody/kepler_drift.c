@@ -57,6 +57,14 @@ static void stumpff(double z, double c[4])
     }
 }
 
+/* 1 when the 3 + 3 values are finite: 0 x a is 0 for a finite a and NaN
+ * for an infinite or NaN one, and a NaN stays in the sum. */
+static int all_finite6(const double *a, const double *b)
+{
+    double z = (0 * a[0] + 0 * a[1]) + (0 * a[2] + 0 * b[0]) + (0 * b[1] + 0 * b[2]);
+    return z == 0;
+}
+
 /* G0..G3 at s for beta. */
 static void gfunctions(double beta, double s, double g[4])
 {
@@ -71,8 +79,7 @@ static void gfunctions(double beta, double s, double g[4])
 int vigen_kepler_drift(double mu, double h, double *x, double *v)
 {
     if (x == NULL || v == NULL || !(mu > 0) || !isfinite(mu) || !isfinite(h)) return VIGEN_EINVAL;
-    for (int c = 0; c < 3; c++)
-        if (!isfinite(x[c]) || !isfinite(v[c])) return VIGEN_ENONFINITE;
+    if (!all_finite6(x, v)) return VIGEN_ENONFINITE;
     double r0 = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]);
     if (!(r0 > 0)) return VIGEN_EINVAL;
     if (h == 0) return VIGEN_SUCCESS;
@@ -156,8 +163,8 @@ int vigen_kepler_drift(double mu, double h, double *x, double *v)
     for (int c = 0; c < 3; c++) {
         xn[c] = x[c] + (fm1 * x[c] + gg * v[c]);
         vn[c] = v[c] + (fdot * x[c] + gdm1 * v[c]);
-        if (!isfinite(xn[c]) || !isfinite(vn[c])) return VIGEN_ENONFINITE;
     }
+    if (!all_finite6(xn, vn)) return VIGEN_ENONFINITE;
     for (int c = 0; c < 3; c++) {
         x[c] = xn[c];
         v[c] = vn[c];

@@ -145,6 +145,58 @@ static double interaction_energy(double t, const double *q, const double *p, voi
     return vigen_nbody_jacobi_energy(t, q, p, ctx) - jacobi_kepler_energy(q, p);
 }
 
+/* Democratic heliocentric: H_kepler and H_jump from their formulas, and
+ * H_interaction = H - H_kepler - H_jump. */
+static double democratic_kepler_jump(const double *q, const double *p, int jump)
+{
+    double Mtot = 0, S[3] = { 0, 0, 0 }, H = 0;
+    for (int i = 0; i < NMAX; i++) Mtot += oss_mass[i];
+    for (int i = 1; i < NMAX; i++)
+        for (int c = 0; c < 3; c++) S[c] += p[3 * i + c];
+    if (jump) return (S[0] * S[0] + S[1] * S[1] + S[2] * S[2]) / (2 * oss_mass[0]);
+    H = (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) / (2 * Mtot);
+    for (int i = 1; i < NMAX; i++) {
+        const double *qi = q + 3 * i, *pi = p + 3 * i;
+        H += (pi[0] * pi[0] + pi[1] * pi[1] + pi[2] * pi[2]) / (2 * oss_mass[i])
+             - oss_G * oss_mass[0] * oss_mass[i] / sqrt(qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2]);
+    }
+    return H;
+}
+
+static double democratic_interaction_energy(double t, const double *q, const double *p, void *ctx)
+{
+    return vigen_nbody_democratic_energy(t, q, p, ctx) - democratic_kepler_jump(q, p, 0)
+           - democratic_kepler_jump(q, p, 1);
+}
+
+static double democratic_jump_energy(double t, const double *q, const double *p, void *ctx)
+{
+    (void)t; (void)ctx;
+    return democratic_kepler_jump(q, p, 1);
+}
+
+/* A flow of one part H_k by h = 0.5 from (q, p) against h times the
+ * differences of H_k: moves_q 0, a kick (p by -h dH_k/dq, q unchanged);
+ * 1, a drift (q by h dH_k/dp, p unchanged); errors relative to rel |g| +
+ * abs. */
+static void part_check(vigen_flow_fn flow, double (*Hk)(double, const double *, const double *, void *),
+                       vigen_nbody *sys, double *q, double *p, int moves_q, double rel, double abs,
+                       const char *what)
+{
+    double q1[DMAX], p1[DMAX], h = 0.5, worst = 0;
+    memcpy(q1, q, sizeof q1);
+    memcpy(p1, p, sizeof p1);
+    CHECK(flow(0, h, q1, p1, sys) == VIGEN_SUCCESS);
+    CHECK(memcmp(moves_q ? p1 : q1, moves_q ? p : q, sizeof q1) == 0);
+    for (int k = 0; k < DMAX; k++) {
+        double g = fd(Hk, sys, q, p, moves_q ? p : q, k);
+        double change = moves_q ? (q1[k] - q[k]) / h : -(p1[k] - p[k]) / h;
+        double err = fabs(change - g) / (rel * fabs(g) + abs);
+        if (err > worst) worst = err;
+    }
+    CHECK_MSG(worst <= 1, "the %s disagrees with differences of its part of H (%.3g)", what, worst);
+}
+
 static void fields(void)
 {
     double x[DMAX], p[DMAX], q[DMAX], pc[DMAX], dq[DMAX], dp[DMAX], E0;
@@ -166,20 +218,15 @@ static void fields(void)
         }
         CHECK_MSG(worst <= 1, "coords %d: the vector field disagrees with differences of H (%.3g)", coords, worst);
     }
-    /* the Jacobi interaction kick: p changes by -h dH_int/dq, q unchanged */
+    /* each part's flow by h = 0.5 against h times the part's gradient: the
+     * kicks move p by -h dH_int/dq and leave q, the jump moves q by
+     * h dH_jump/dp and leaves p */
     vigen_nbody_to_jacobi(sys, x, p, q, pc);
-    double q1[DMAX], p1[DMAX], h = 0.5;
-    memcpy(q1, q, sizeof q);
-    memcpy(p1, pc, sizeof pc);
-    CHECK(vigen_nbody_jacobi_interaction(0, h, q1, p1, sys) == VIGEN_SUCCESS);
-    CHECK(memcmp(q1, q, sizeof q) == 0);
-    double worst = 0;
-    for (int k = 0; k < DMAX; k++) {
-        double g = fd(interaction_energy, sys, q, pc, q, k), kick = (p1[k] - pc[k]) / h;
-        double err = fabs(kick + g) / (1e-6 * fabs(g) + 1e-16);
-        if (err > worst) worst = err;
-    }
-    CHECK_MSG(worst <= 1, "the Jacobi kick disagrees with differences of H_interaction (%.3g)", worst);
+    part_check(vigen_nbody_jacobi_interaction, interaction_energy, sys, q, pc, 0, 1e-6, 1e-16, "Jacobi kick");
+    vigen_nbody_to_democratic(sys, x, p, q, pc);
+    part_check(vigen_nbody_democratic_interaction, democratic_interaction_energy, sys, q, pc, 0, 1e-5, 1e-14,
+               "democratic kick");
+    part_check(vigen_nbody_democratic_jump, democratic_jump_energy, sys, q, pc, 1, 1e-6, 1e-14, "jump");
     vigen_nbody_free(sys);
     vigen_problem_free(pb);
 }
@@ -454,6 +501,54 @@ static void problem_splits(void)
     vigen_problem_free(pb);
 }
 
+/* A system of 40 bodies (the scratch in the system's memory, above 32):
+ * each flow by h and back by -h returns to the start, and the vector field
+ * agrees with differences of H. */
+static void many_bodies(void)
+{
+    enum { NB = 40, DB = 3 * NB };
+    double m[NB], x[DB], p[DB], q[DB], pc[DB], q0[DB], p0[DB], dq[DB], dp[DB];
+    m[0] = 1;
+    for (int i = 1; i < NB; i++) {
+        double r = 1 + 0.37 * i, ang = 2.1 * i, v = sqrt(1 / r);
+        m[i] = 1e-6 * (1 + i % 3);
+        x[3 * i] = r * cos(ang); x[3 * i + 1] = r * sin(ang); x[3 * i + 2] = 0.01 * (i % 5);
+        p[3 * i] = -m[i] * v * sin(ang); p[3 * i + 1] = m[i] * v * cos(ang); p[3 * i + 2] = 0;
+    }
+    x[0] = x[1] = x[2] = p[0] = p[1] = p[2] = 0;
+    vigen_nbody *sys;
+    CHECK(vigen_nbody_alloc(&sys, NB, 1, m) == VIGEN_SUCCESS);
+    for (int coords = 0; coords < 2; coords++) {
+        vigen_split_problem sp;
+        vigen_nbody_split(sys, coords, &sp);
+        vigen_nbody_to_coordinates(sys, coords, x, p, q, pc);
+        memcpy(q0, q, sizeof q);
+        memcpy(p0, pc, sizeof pc);
+        for (size_t k = 0; k < sp.nflows; k++) {
+            CHECK(sp.flow[k](0, 0.3, q, pc, sp.ctx) == VIGEN_SUCCESS);
+            CHECK(sp.flow[k](0, -0.3, q, pc, sp.ctx) == VIGEN_SUCCESS);
+        }
+        double sq, spp, eq = maxdiff(q, q0, DB, &sq), ep = maxdiff(pc, p0, DB, &spp);
+        CHECK_MSG(eq <= 1e-13 * sq && ep <= 1e-13 * spp, "40 bodies, coords %d: flows and back %.3g %.3g", coords,
+                  eq / sq, ep / spp);
+        CHECK(sp.vector_field(0, q, pc, dq, dp, sp.ctx) == VIGEN_SUCCESS);
+        /* differences of H carry an absolute error of about 1e-8 of the
+         * largest component (eps |H| over the step) */
+        double sdq = 0, sdp = 0;
+        for (int k = 0; k < DB; k++) {
+            sdq = fmax(sdq, fabs(dq[k]));
+            sdp = fmax(sdp, fabs(dp[k]));
+        }
+        for (int k = 3; k < DB; k += 7) {
+            double gq = fd(sp.H, sp.ctx, q, pc, q, k), gp = fd(sp.H, sp.ctx, q, pc, pc, k);
+            CHECK_MSG(fabs(-gq - dp[k]) <= 1e-5 * fabs(dp[k]) + 1e-6 * sdp
+                      && fabs(gp - dq[k]) <= 1e-5 * fabs(dq[k]) + 1e-6 * sdq,
+                      "40 bodies, coords %d, k %d: %.6g %.6g %.6g %.6g", coords, k, -gq, dp[k], gp, dq[k]);
+        }
+    }
+    vigen_nbody_free(sys);
+}
+
 int main(void)
 {
     round_trips();
@@ -463,5 +558,6 @@ int main(void)
     corrector_inverse();
     bad_input();
     problem_splits();
+    many_bodies();
     TEST_MAIN_END();
 }

@@ -43,8 +43,10 @@
  * finite, a body at the centre or on a radial orbit into it: a collision),
  * VIGEN_ENONFINITE (a non-finite state or result) or VIGEN_ENOCONV (the
  * Kepler equation not solved to round-off: not seen on finite orbits).  The
- * flows use scratch memory of the system (no allocation per call): one
- * system serves one thread at a time; vigen_nbody_clone makes another.
+ * flows allocate nothing: their scratch memory is on the stack for up to 32
+ * bodies (then several threads may call them on one system at once), the
+ * system's own above (then one system serves one thread at a time, and
+ * vigen_nbody_clone makes another).
  *
  * Only double is provided (no long double or __float128 versions).
  */

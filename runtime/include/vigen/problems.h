@@ -105,8 +105,8 @@ int vigen_problem_reference(const vigen_problem *pb, double t, double *q, double
  * splittings of <vigen/nbody.h>), for the splitting methods whose flows
  * are named "kepler", "interaction" (and "jump").  coordinates: NULL or
  * "jacobi", or "democratic-heliocentric" (N-body problems only).  Fills
- * *out (valid until vigen_problem_free; its ctx is not thread-safe: one
- * problem per thread) and returns VIGEN_SUCCESS, or VIGEN_EINVAL with a
+ * *out (valid until vigen_problem_free; its flows may run on several
+ * threads at once) and returns VIGEN_SUCCESS, or VIGEN_EINVAL with a
  * one-line reason in why (may be NULL) when the problem has no such
  * splitting.  The split problem's state is in its own coordinates:
  * vigen_problem_split_state changes a state between the problem's
