@@ -24,6 +24,7 @@ int vigen_cmd_order(const vigen_cli_args *args)
         return rc;
     }
     opt.progress = 1;
+    opt.allow_inexact = args->value[VIGEN_OPT_order_allow_inexact] != NULL;
     vigen_try_order_result res;
     int status = 0;
     if (vigen_try_order(args->operand, &opt, (int)levels, &res, &err) != VIGEN_OK)

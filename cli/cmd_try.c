@@ -84,6 +84,7 @@ int vigen_cmd_try(const vigen_cli_args *args)
         return rc;
     }
     opt.progress = 1;
+    opt.allow_inexact = args->value[VIGEN_OPT_try_allow_inexact] != NULL;
     int status;
     if (args->value[VIGEN_OPT_try_work_precision]) {
         status = work_precision(args, n, methods, &opt);

@@ -4,7 +4,8 @@
 #
 #   vigen_add_stepper(TARGET <target> TABLEAU <file.lua or method name> NAME <name>
 #                     [REAL double|long-double|float128]
-#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT] [DIM <n>] [BATCH])
+#                     [OUTPUT_DIR <dir>] [ALLOW_INEXACT] [DIM <n>] [BATCH]
+#                     [VARIANT <variant>])
 #   vigen_add_stepper(TARGET <target> SPEC <spec.lua> [DIGITS <n>] NAME <name> ...)
 #
 # With SPEC, a first rule runs
@@ -30,10 +31,12 @@
 # passes --dim N (a static dimension: NAME_alloc and NAME_alloc_mechanical
 # refuse problems of another dimension).  BATCH passes --batch (NAME_step_batch
 # too: W trajectories per call, docs/ensembles.md; double, explicit tableaux).
+# VARIANT passes --variant (e.g. split: the flows of the parts of H called
+# back, NAME_alloc_split; docs/splitting.md).
 # Compile the program without -ffast-math (the emitted code refuses it).
 
 function(vigen_add_stepper)
-  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT;BATCH" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR;DIM" "")
+  cmake_parse_arguments(PARSE_ARGV 0 VAS "ALLOW_INEXACT;BATCH" "TARGET;TABLEAU;SPEC;DIGITS;NAME;REAL;OUTPUT_DIR;DIM;VARIANT" "")
   if(VAS_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "vigen_add_stepper: unknown arguments: ${VAS_UNPARSED_ARGUMENTS}")
   endif()
@@ -114,6 +117,12 @@ function(vigen_add_stepper)
   endif()
   if(VAS_BATCH)
     list(APPEND extra --batch)
+  endif()
+  if(VAS_VARIANT)
+    if(NOT VAS_VARIANT MATCHES "^[a-z][a-z0-9_]*$")
+      message(FATAL_ERROR "vigen_add_stepper: VARIANT must be a variant's name (prk, split), not '${VAS_VARIANT}'")
+    endif()
+    list(APPEND extra --variant ${VAS_VARIANT})
   endif()
   if(DEFINED VAS_DIM)
     if(NOT VAS_DIM MATCHES "^[1-9][0-9]*$")

@@ -57,9 +57,14 @@
  *   scalar one (templates/prk/batch.h.in, batch.c.in; docs/ensembles.md).
  *
  * Variants: src/emit/variants.def lists the steppers the emitter can write,
- * chosen by name (vigen_emit_options.variant; today one, "prk", the default:
- * the partitioned Runge-Kutta stepper above, for double, long double and
- * float128).  Each is a template directory
+ * chosen by name (vigen_emit_options.variant): "prk", the default, the
+ * partitioned Runge-Kutta stepper above, for double, long double and
+ * float128; and "split", a splitting stepper that calls the exact flows of
+ * the parts of H back (NAME_alloc_split of a vigen_split_problem, the
+ * substeps of the file in order, consecutive ones of a flow merged, time
+ * carried by the first flow; docs/splitting.md), for splitting files and
+ * compositions of them, the default for a file whose `flows` are named
+ * (anything but drift and kick).  Each is a template directory
  * templates/<variant>/ (stepper.h.in, stepper.c.in: readable C with
  * @NAME@ and @@BLOCK@@ slots and @if FLAG@ sections, every slot declared in
  * the template's first comment) and a slot builder in C that computes every
@@ -166,11 +171,20 @@ char *vigen_emit_identifier(const char *name);
  * Returns VIGEN_OK, or the checker's error when t cannot be evaluated. */
 int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_error *err);
 
+/* The variant vigen_emit_render writes for t when asked for `variant`
+ * (NULL: the default): variant itself, else "split" for a splitting whose
+ * flows are named (anything but drift and kick), else "prk". */
+const char *vigen_emit_variant_chosen(const vigen_tableau *t, const char *variant);
+
 /* The order NAME_ORDER and the stepper type's order field carry: the order
  * the checker certifies for general H (a claim of the file that holds, the
  * enumerated order conditions, Butcher's theorem beyond them), -1 when it is
  * not decided. */
 int vigen_emit_certified_order(const vigen_tableau *t);
+/* The same for a family of problems (VIGEN_CHECK_GENERAL, VIGEN_CHECK_SEPARABLE,
+ * ... of vigen/check.h): the split variant's order with exact flows is the
+ * order for H = T(p) + V(q). */
+int vigen_emit_certified_order_family(const vigen_tableau *t, int family);
 
 /* Loads FILE for emission, once (vigen_method_load), and asks it for the
  * tableau (vigen_method_tableau): a tableau file as it is; a spec generated with

@@ -23,6 +23,12 @@
  *     time, when the problem has a reference solution;
  *   - gradient evaluations per step (calls of dH/dq plus calls of dH/dp) and
  *     nanoseconds per step (wall clock of the steps alone).
+ * Each method runs on the fastest path the problem allows: a mechanical
+ * problem (H = 1/2 p^T M^-1 p + V(t, q), M diagonal: separable with dH/dp
+ * linear and diagonal in p, which the driver checks) through the stepper's
+ * NAME_alloc_mechanical (Nystrom form; its forces counted as gradient
+ * evaluations), any other through NAME_alloc; the result says which
+ * (vigen_try_result.path).
  * A step that fails (stage iteration not converging, a non-finite state) ends
  * that method's run: its result says at which step and time, and why.
  */
@@ -46,6 +52,10 @@ typedef struct {
     double time;            /* final time; 0: the problem's default time */
     const char *cc;         /* C compiler; NULL: $CC, else "cc" */
     int progress;           /* 1: a progress line on stderr while it runs */
+    int allow_inexact;      /* round a method file's decimals as written when they have too few
+                               digits for double (`--allow-inexact`, as for vigen emit); the
+                               methods of the library (by name) are always taken with their
+                               published digits, with the emitter's warning */
 } vigen_try_options;
 
 /* Fills opt from the texts of the command line's options (NULL: absent):
@@ -80,6 +90,10 @@ typedef struct {
     double *ts, *energy;     /* time and signed relative energy error */
     size_t norbit;           /* orbit points: t0 and the first (up to 2000) steps */
     double *x, *y;           /* orbit: (q1, q2), or (q1, p1) when dim = 1 */
+    char *path;              /* how the stepper ran the problem: "mechanical" (Nystrom form,
+                                grad_per_step counts forces), "general" (dH/dq and dH/dp),
+                                "split" (the problem's exact flows, grad_per_step counts
+                                flow calls), "lagrangian"; NULL when the driver did not say */
 } vigen_try_result;
 
 /* Runs every method on the problem.  On VIGEN_OK *results holds n results

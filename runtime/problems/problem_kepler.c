@@ -2,7 +2,9 @@
  * eccentricity e: the orbit of semi-major axis 1 and period 2 pi started at
  * the pericentre; invariants angular momentum and the Runge-Lenz vector;
  * reference from Kepler's equation E - e sin E = t solved by Newton's
- * method to round-off. */
+ * method to round-off.  Its Kepler splitting: the Kepler part is the whole
+ * H (the flow: the universal-variable drift about mu = 1), the interaction
+ * is zero; the coordinates are the problem's own. */
 #include <math.h>
 #include "problems_internal.h"
 
@@ -71,6 +73,54 @@ static int reference(const vigen_problem *pb, double t, double *q, double *p)
     return 1;
 }
 
+/* The whole flow: the drift in the plane (z = 0, unchanged by the drift). */
+static int kepler_flow(double t, double h, double *q, double *p, void *ctx)
+{
+    (void)t; (void)ctx;
+    double x[3] = { q[0], q[1], 0 }, v[3] = { p[0], p[1], 0 };
+    int st = vigen_kepler_drift(1, h, x, v);
+    if (st != VIGEN_SUCCESS) return st;
+    q[0] = x[0]; q[1] = x[1];
+    p[0] = v[0]; p[1] = v[1];
+    return VIGEN_SUCCESS;
+}
+
+static int zero_flow(double t, double h, double *q, double *p, void *ctx)
+{
+    (void)t; (void)q; (void)p; (void)ctx;
+    return isfinite(h) ? VIGEN_SUCCESS : VIGEN_EINVAL;
+}
+
+static int vector_field(double t, const double *q, const double *p, double *dq, double *dp, void *ctx)
+{
+    double g[2];
+    dHdq(t, q, p, g, ctx);
+    dq[0] = p[0]; dq[1] = p[1];
+    dp[0] = -g[0]; dp[1] = -g[1];
+    return isfinite(dp[0]) && isfinite(dp[1]) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+}
+
+static const vigen_flow_fn flows[] = { kepler_flow, zero_flow };
+
+static int split(vigen_problem *pb, int coords, vigen_split_problem *out)
+{
+    if (coords != VIGEN_NBODY_JACOBI) return VIGEN_EINVAL;
+    *out = (vigen_split_problem){ .dim = 2, .nflows = 2, .flow = flows, .ctx = pb, .vector_field = vector_field,
+                                  .H = energy };
+    return VIGEN_SUCCESS;
+}
+
+static int same_state(const vigen_problem *pb, int to_split, const double *q, const double *p, double *qs,
+                      double *ps)
+{
+    (void)pb; (void)to_split;
+    for (int k = 0; k < 2; k++) {
+        qs[k] = q[k];
+        ps[k] = p[k];
+    }
+    return VIGEN_SUCCESS;
+}
+
 int vigen_pbi_kepler_setup(vigen_problem *pb)
 {
     double e = pb->param[0];
@@ -84,5 +134,7 @@ int vigen_pbi_kepler_setup(vigen_problem *pb)
     pb->invariant_names = names;
     pb->invariant = invariant;
     pb->reference = reference;
+    pb->split = split;
+    pb->split_convert = same_state;
     return VIGEN_SUCCESS;
 }

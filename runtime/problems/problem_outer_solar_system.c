@@ -6,7 +6,8 @@
  *   H = sum_i |p_i|^2/(2 m_i) - G sum_{i<j} m_i m_j / |q_i - q_j|,
  * q = (q_Sun, q_Jupiter, ..., q_Pluto), 18 coordinates, p_i = m_i v_i, the
  * Sun at rest at the origin.  Invariants: total linear and angular
- * momentum.  No reference solution. */
+ * momentum.  No reference solution.  Its Kepler splittings are the N-body
+ * ones of the runtime (Jacobi, democratic heliocentric). */
 #include <math.h>
 #include "problems_internal.h"
 
@@ -194,5 +195,5 @@ int vigen_pbi_outer_solar_system_setup(vigen_problem *pb)
     pb->ninvariants = 6;
     pb->invariant_names = names;
     pb->invariant = invariant;
-    return VIGEN_SUCCESS;
+    return vigen_pbi_nbody_split_setup(pb, NBODY, G, mass);
 }

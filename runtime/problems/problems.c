@@ -194,6 +194,7 @@ void vigen_problem_free(vigen_problem *pb)
     free(pb->q0);
     free(pb->p0);
     free(pb->data);
+    vigen_nbody_free(pb->nbody);
     free(pb);
 }
 
@@ -252,4 +253,43 @@ int vigen_problem_reference(const vigen_problem *pb, double t, double *q, double
 {
     if (pb->reference == NULL || !isfinite(t)) return 0;
     return pb->reference(pb, t, q, p);
+}
+
+/* The coordinates by name: NULL or "jacobi", "democratic-heliocentric". */
+static int coordinates_code(const char *name)
+{
+    if (name == NULL || strcmp(name, "jacobi") == 0) return VIGEN_NBODY_JACOBI;
+    if (strcmp(name, "democratic-heliocentric") == 0) return VIGEN_NBODY_DEMOCRATIC;
+    return -1;
+}
+
+int vigen_problem_split(vigen_problem *pb, const char *coordinates, vigen_split_problem *out, char *why,
+                        size_t why_size)
+{
+    if (why != NULL && why_size > 0) why[0] = '\0';
+    if (pb == NULL || out == NULL) return fail(why, why_size, "vigen_problem_split: NULL problem or result");
+    if (pb->split == NULL)
+        return fail(why, why_size, "problem '%s' has no Kepler splitting (problems with one: kepler, "
+                    "outer-solar-system, jupiter-saturn)", pb->info->name);
+    int coords = coordinates_code(coordinates);
+    if (coords < 0)
+        return fail(why, why_size, "unknown coordinates '%s' (coordinates: jacobi, democratic-heliocentric)",
+                    coordinates);
+    if (pb->split(pb, coords, out) != VIGEN_SUCCESS)
+        return fail(why, why_size, "problem '%s' offers no splitting in %s coordinates", pb->info->name,
+                    coordinates);
+    pb->split_coords = coords;
+    return VIGEN_SUCCESS;
+}
+
+const char *vigen_problem_split_flow_name(const vigen_problem *pb, size_t k)
+{
+    return pb != NULL && pb->split != NULL ? vigen_nbody_flow_name(pb->split_coords, k) : NULL;
+}
+
+int vigen_problem_split_state(const vigen_problem *pb, int to_split, const double *q, const double *p, double *qs,
+                              double *ps)
+{
+    if (pb == NULL || pb->split_convert == NULL || !q || !p || !qs || !ps) return VIGEN_EINVAL;
+    return pb->split_convert(pb, to_split, q, p, qs, ps);
 }

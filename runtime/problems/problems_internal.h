@@ -10,6 +10,7 @@
 #define VIGEN_PROBLEMS_INTERNAL_H
 
 #include <vigen/problems.h>
+#include <vigen/nbody.h>
 
 typedef double (*vigen_pbi_invariant_fn)(const vigen_problem *pb, size_t k, double t, const double *q,
                                    const double *p);
@@ -31,6 +32,15 @@ struct vigen_problem {
     vigen_pbi_invariant_fn invariant;
     vigen_pbi_reference_fn reference;
     void *data;                   /* the problem's own, freed with free() */
+    /* The Kepler splitting (split NULL: none): fills out for the coordinates
+     * (VIGEN_NBODY_JACOBI or _DEMOCRATIC; VIGEN_EINVAL when not offered),
+     * and changes a state between the problem's coordinates and the split
+     * problem's (to_split 1: (q, p) -> (qs, ps); 0: back). */
+    int (*split)(vigen_problem *pb, int coords, vigen_split_problem *out);
+    int (*split_convert)(const vigen_problem *pb, int to_split, const double *q, const double *p, double *qs,
+                         double *ps);
+    int split_coords;             /* the coordinates of the last vigen_problem_split */
+    vigen_nbody *nbody;           /* the N-body system of the splitting, or NULL */
 };
 
 /* Allocates q0 and p0 (dim entries each, zeroed) after setting pb->dim;
@@ -54,6 +64,12 @@ void vigen_pbi_unit_mass(vigen_problem *pb, vigen_grad_fn dHdq, double (*H)(doub
  * square) with d2V/dq2 = -pb->lag.d2Ldq2 and every other block zero; the
  * caller fills d2T/dp2. */
 void vigen_pbi_separable_hessian(const vigen_problem *pb, double t, const double *q, double *out);
+
+/* The Kepler splitting of an N-body problem whose state is inertial
+ * positions and momenta m_i v_i (nbody_split.c): makes pb->nbody from the
+ * masses and sets pb->split and pb->split_convert.  VIGEN_SUCCESS or
+ * VIGEN_ENOMEM. */
+int vigen_pbi_nbody_split_setup(vigen_problem *pb, size_t n, double G, const double *mass);
 
 #define PBI_PI 3.14159265358979323846
 

@@ -107,7 +107,9 @@ int vigen_emit_audit(vigen_tableau *t, const char *path, int *warnings, vigen_er
     return VIGEN_OK;
 }
 
-int vigen_emit_certified_order(const vigen_tableau *t)
+int vigen_emit_certified_order(const vigen_tableau *t) { return vigen_emit_certified_order_family(t, VIGEN_CHECK_GENERAL); }
+
+int vigen_emit_certified_order_family(const vigen_tableau *t, int family)
 {
     vigen_tableau u;
     vigen_tableau_copy(&u, t);
@@ -123,7 +125,7 @@ int vigen_emit_certified_order(const vigen_tableau *t)
     int order = -1;
     if (vigen_check_tableau(&rep, &u, NULL, &opt, &err) == VIGEN_OK) {
         int at_least, undecided;
-        int p = vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided);
+        int p = vigen_check_certified_order(&rep, family, &at_least, &undecided);
         if (!at_least && !undecided) order = p;
     }
     vigen_error_clear(&err);

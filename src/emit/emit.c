@@ -100,6 +100,23 @@ static int render_templates(const vigen_emit_variant *v, const char *top, const 
     return rc;
 }
 
+/* A splitting of flows the file names (not drift and kick): its flows are
+ * the user's, so that it is emitted as the split variant unless another is
+ * asked for. */
+static int named_flows(const vigen_tableau *t)
+{
+    if (t->flows == NULL || t->flows->names == NULL) return 0;
+    for (slong k = 0; k < t->flows->nflows; k++)
+        if (strcmp(t->flows->names[k], k == 0 ? "drift" : "kick") != 0) return 1;
+    return t->flows->nflows != 2;
+}
+
+const char *vigen_emit_variant_chosen(const vigen_tableau *t, const char *variant)
+{
+    if (variant != NULL) return variant;
+    return named_flows(t) ? "split" : variants[0].name;
+}
+
 int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, char **h_text, char **c_text,
                       char **ident, vigen_error *err)
 {
@@ -108,6 +125,7 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     const vigen_emit_variant *variant;
     int rc = check_options(&variant, opt, err);
     if (rc != VIGEN_OK) return rc;
+    if (opt->variant == NULL && named_flows(t)) variant = vigen_emit_variant_find("split");
     char *id = vigen_emit_identifier(opt->name ? opt->name : "stepper");
     emit_ctx E;
     memset(&E, 0, sizeof E);

@@ -2,6 +2,7 @@
  * file's texts made safe for comments and string literals, and the digest
  * of the canonical tableau text that the header records. */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "vigen/emit.h"
 #include "emit/names.h"
@@ -101,4 +102,19 @@ unsigned long long vigen_emit_digest(const vigen_tableau *t)
     digest_texts(&h, t->ct_text, t->s);
     digest_texts(&h, t->bt_text, t->s);
     return h;
+}
+
+void vigen_emit_header_about(vigen_slot *H, const vigen_tableau *t)
+{
+    if (t->description) {
+        char *d = vigen_emit_safe_text(t->description, 300);
+        vigen_slot_line(H, "Description: %s", d);
+        free(d);
+    }
+    if (t->source) {
+        char *d = vigen_emit_safe_text(t->source, 300);
+        vigen_slot_line(H, "Source: %s", d);
+        free(d);
+    }
+    vigen_slot_line(H, "Do not edit: regenerate with vigen emit.");
 }

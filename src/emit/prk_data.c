@@ -167,17 +167,7 @@ void vigen_emit_prk_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options 
     else
         vigen_slot_line(H, "Stages: %ld; certified order: not decided%s", (long)s,
                         t->claim_symplectic == 1 ? "; claimed symplectic" : "");
-    if (t->description) {
-        char *d = vigen_emit_safe_text(t->description, 300);
-        vigen_slot_line(H, "Description: %s", d);
-        free(d);
-    }
-    if (t->source) {
-        char *d = vigen_emit_safe_text(t->source, 300);
-        vigen_slot_line(H, "Source: %s", d);
-        free(d);
-    }
-    vigen_slot_line(H, "Do not edit: regenerate with vigen emit.");
+    vigen_emit_header_about(H, t);
 
     vigen_slot *C = vigen_slots_lines(S, "COEF_LINES");
     struct { const char *label; char **texts; slong n; int matrix; } parts[] = {

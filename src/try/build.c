@@ -8,9 +8,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include "emit/names.h"
 #include "emit/template.h"
 #include "vigen/check.h"
 #include "vigen/emit.h"
+#include "vigen/library.h"
 #include "support/progress.h"
 #include "try/try_internal.h"
 #include "support/strbuf.h"
@@ -23,6 +26,7 @@ void try_build_clear(try_build *b)
 {
     free(b->label);
     free(b->exe);
+    free(b->flows);
     memset(b, 0, sizeof *b);
 }
 
@@ -42,7 +46,11 @@ static int certify(try_build *b, vigen_tableau *t, const char *label, vigen_erro
     return rc;
 }
 
-static int emit(try_build *b, size_t k, const char *file, int check, char **hpath, char **cpath, vigen_error *err)
+/* allow_inexact: 1 rounds decimals with too few digits as written (the
+ * user's --allow-inexact), 2 does so after saying that the library's method
+ * is published with those digits (a method given by name). */
+static int emit(try_build *b, size_t k, const char *file, int check, int allow_inexact, char **hpath, char **cpath,
+                vigen_error *err)
 {
     char name[32];
     snprintf(name, sizeof name, "m%zu", k);
@@ -52,8 +60,30 @@ static int emit(try_build *b, size_t k, const char *file, int check, char **hpat
     int loaded = 0;
     char *h = NULL, *c = NULL, *ident = NULL;
     vigen_progress_set("%s: emitting the stepper", b->label);
+    eo.allow_inexact = allow_inexact == 1;
     int rc = vigen_emit_load_render(&t, &loaded, file, &eo, &h, &c, &ident, err);
+    if (rc == VIGEN_E_INEXACT && allow_inexact == 2) {
+        vigen_error_clear(err);
+        vigen_warn("%s: a method of the library published with decimals too short to round correctly to "
+                   "double: its coefficients are those decimals as written (as with --allow-inexact)", b->label);
+        eo.allow_inexact = 1;
+        rc = vigen_emit_load_render(&t, &loaded, file, &eo, &h, &c, &ident, err);
+    }
     if (rc == VIGEN_OK && check) rc = certify(b, &t, b->label, err);
+    if (rc == VIGEN_OK && strcmp(vigen_emit_variant_chosen(&t, NULL), "split") == 0 && t.flows) {
+        /* the driver maps the method's flows to the problem's by name (a
+         * name made safe for a string literal no longer matches, and is
+         * refused there as a flow the problem lacks) */
+        vigen_strbuf fl;
+        vigen_strbuf_init(&fl);
+        vigen_strbuf_append(&fl, "");
+        for (slong j = 0; j < t.flows->nflows; j++) {
+            char *safe = vigen_emit_safe_text(t.flows->names[j], 60);
+            vigen_strbuf_printf(&fl, "%s\"%s\"", j ? ", " : "", safe);
+            free(safe);
+        }
+        b->flows = fl.data;
+    }
     if (loaded) vigen_tableau_clear(&t);
     char fname[48];
     if (rc == VIGEN_OK) {
@@ -72,12 +102,14 @@ static int emit(try_build *b, size_t k, const char *file, int check, char **hpat
 
 /* lm: the built-in Lagrangian method, or NULL for an emitted stepper. */
 static int render_driver(char **path, size_t k, const char *label, const try_lagrangian_method *lm,
-                         const try_paths *p, vigen_error *err)
+                         const char *flows, const try_paths *p, vigen_error *err)
 {
     vigen_slots slots;
     vigen_slots_init(&slots);
     vigen_slots_textf(&slots, "NAME", "m%zu", k);
     vigen_slots_flag(&slots, "LAGRANGIAN", lm != NULL);
+    vigen_slots_flag(&slots, "SPLIT", flows != NULL);
+    vigen_slots_text(&slots, "FLOWS", flows ? flows : "");
     vigen_slots_textf(&slots, "KIND", "%d", lm ? lm->kind : 0);
     vigen_slots_text(&slots, "METHOD", label);
     char *text = NULL;
@@ -147,8 +179,27 @@ static int compile(try_build *b, size_t k, const char *cc, const char *driver, c
     return rc;
 }
 
+/* Whether file is a method of the library (`vigen list`: a file of one of
+ * its folders, which is how the command line resolves a name). */
+static int in_library(const char *file)
+{
+    char *dir = vigen_strdup(file);
+    char *slash = strrchr(dir, '/');
+    if (slash) *slash = '\0';
+    struct stat fs, ds;
+    int found = 0;
+    if (stat(slash ? dir : ".", &fs) == 0) {
+        char **dirs = vigen_library_dirs();
+        for (size_t k = 0; dirs && dirs[k] && !found; k++)
+            found = stat(dirs[k], &ds) == 0 && ds.st_dev == fs.st_dev && ds.st_ino == fs.st_ino;
+        vigen_library_dirs_free(dirs);
+    }
+    free(dir);
+    return found;
+}
+
 int try_build_method(try_build *b, size_t k, const char *method, const try_paths *p, const char *cc, int check,
-                     vigen_error *err)
+                     int allow_inexact, vigen_error *err)
 {
     memset(b, 0, sizeof *b);
     b->label = try_method_label(method);
@@ -161,9 +212,11 @@ int try_build_method(try_build *b, size_t k, const char *method, const try_paths
         b->certified = b->certified_separable = lm->order;
     } else {
         rc = try_method_resolve(&file, method, p, err);
-        if (rc == VIGEN_OK) rc = emit(b, k, file, check, &hpath, &cpath, err);
+        const int library = rc == VIGEN_OK && in_library(file);
+        if (rc == VIGEN_OK)
+            rc = emit(b, k, file, check, allow_inexact ? 1 : library ? 2 : 0, &hpath, &cpath, err);
     }
-    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, b->label, lm, p, err);
+    if (rc == VIGEN_OK) rc = render_driver(&dpath, k, b->label, lm, b->flows, p, err);
     if (rc == VIGEN_OK) rc = compile(b, k, cc, dpath, cpath, p, err);
     free(file);
     free(hpath);

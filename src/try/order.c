@@ -112,7 +112,7 @@ int vigen_try_order(const char *method, const vigen_try_options *opt, int levels
     int made = rc == VIGEN_OK;
     try_build b;
     memset(&b, 0, sizeof b);
-    if (rc == VIGEN_OK) rc = try_build_method(&b, 0, method, &paths, try_cc(opt), 1, err);
+    if (rc == VIGEN_OK) rc = try_build_method(&b, 0, method, &paths, try_cc(opt), 1, opt->allow_inexact, err);
     if (rc == VIGEN_OK) {
         res->label = vigen_strdup(b.label);
         res->certified = b.certified;

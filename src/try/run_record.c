@@ -21,6 +21,7 @@ void try_result_clear(vigen_try_result *r)
     free(r->energy);
     free(r->x);
     free(r->y);
+    free(r->path);
     memset(r, 0, sizeof *r);
 }
 
@@ -116,6 +117,9 @@ static int parse(vigen_try_result *r, FILE *f, vigen_error *err)
                 r->t_end = v[4];
                 ended = 1;
             }
+        } else if (strncmp(line, "path ", 5) == 0) {
+            free(r->path);
+            r->path = vigen_strdup(line + 5);
         } else if (strncmp(line, "final ", 6) == 0 && r->final_state) {
             numbers(line + 6, r->final_state, 2 * r->dim);
         } else if (strncmp(line, "ref ", 4) == 0 && ref) {

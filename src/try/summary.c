@@ -39,6 +39,16 @@ void vigen_try_print_summary(FILE *out, const vigen_try_options *opt, const vige
     fputs("max|dE|: largest relative energy error; drift/t: its least-squares slope per unit time;\n", out);
     fputs("invariants: largest deviation; error: |(q,p) - reference| at the end; grad/step: dH/dq\n"
           "and dH/dp calls per step\n", out);
+    /* the path of each method when it is not the general one */
+    for (size_t k = 0; k < n; k++) {
+        if (r[k].path == NULL || strcmp(r[k].path, "general") == 0 || strcmp(r[k].path, "lagrangian") == 0) continue;
+        if (strcmp(r[k].path, "mechanical") == 0)
+            fprintf(out, "%s: mechanical problem, stepped in Nystrom form (NAME_alloc_mechanical): grad/step counts "
+                    "forces\n", r[k].label);
+        else if (strcmp(r[k].path, "split") == 0)
+            fprintf(out, "%s: the problem's exact flows (NAME_alloc_split): grad/step counts flow calls\n",
+                    r[k].label);
+    }
 }
 
 void try_json_number(FILE *out, double v)
@@ -78,6 +88,9 @@ void vigen_try_print_json(FILE *out, const vigen_try_options *opt, const vigen_t
         try_json_number(out, r[k].grad_per_step);
         fputs(", \"ns_per_step\": ", out);
         try_json_number(out, r[k].ns_per_step);
+        fputs(", \"path\": ", out);
+        if (r[k].path) vigen_json_write_string(out, r[k].path);
+        else fputs("null", out);
         fputs(", \"failed\": ", out);
         if (r[k].failed) vigen_json_write_string(out, r[k].message);
         else fputs("null", out);

@@ -36,7 +36,7 @@ int vigen_try_run(size_t n, const char *const *methods, const vigen_try_options 
     if (every == 0) every = 1;
     for (size_t k = 0; k < n && rc == VIGEN_OK; k++) {
         try_build b;
-        rc = try_build_method(&b, k, methods[k], &paths, try_cc(opt), 0, err);
+        rc = try_build_method(&b, k, methods[k], &paths, try_cc(opt), 0, opt->allow_inexact, err);
         if (rc == VIGEN_OK) {
             vigen_progress_set("%s: %lu steps on %s", b.label, plan.steps, opt->problem);
             rc = try_run_driver(&res[k], &b, opt, plan.h, plan.steps, every, err);

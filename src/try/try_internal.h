@@ -90,11 +90,18 @@ typedef struct {
     char *exe;               /* the driver program */
     int certified, certified_separable; /* orders, when asked for (check = 1) */
     int builtin;             /* a built-in Lagrangian method: certified is its proven order */
+    char *flows;             /* a splitting stepper of named flows (the split variant): the flows'
+                                names as a C initialiser ("\"kepler\", \"interaction\""); NULL
+                                otherwise */
 } try_build;
 /* Builds method k of the run into the working directory.  With check, the
- * tableau's orders are certified too (vigen/check.h). */
+ * tableau's orders are certified too (vigen/check.h).  allow_inexact: a
+ * method file's decimals with too few digits are rounded as written (the
+ * emitter warns); a method of the library (a file of vigen_library_dirs,
+ * as a name on the command line resolves) is taken with its published
+ * digits in any case, with a warning that says so. */
 int try_build_method(try_build *b, size_t k, const char *method, const try_paths *p, const char *cc, int check,
-                     vigen_error *err);
+                     int allow_inexact, vigen_error *err);
 void try_build_clear(try_build *b);
 
 /* ---- run_record.c: one run of a driver --------------------------------- */

@@ -87,7 +87,7 @@ int vigen_try_work_precision(size_t n, const char *const *methods, const vigen_t
     int made = rc == VIGEN_OK;
     for (size_t k = 0; k < n && rc == VIGEN_OK; k++) {
         try_build b;
-        rc = try_build_method(&b, k, methods[k], &paths, try_cc(opt), 0, err);
+        rc = try_build_method(&b, k, methods[k], &paths, try_cc(opt), 0, opt->allow_inexact, err);
         if (rc == VIGEN_OK) {
             c[k].label = vigen_strdup(b.label);
             rc = run_levels(&c[k], &b, opt, plan.period, levels, err);

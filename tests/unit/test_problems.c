@@ -559,7 +559,7 @@ static void test_bad_params(void)
 
 int main(void)
 {
-    CHECK(vigen_problem_count() == 8);
+    CHECK(vigen_problem_count() == 9);
     CHECK(vigen_problem_info_at(vigen_problem_count()) == NULL);
     CHECK(vigen_problem_info_find("no-such-problem") == NULL);
     for (size_t i = 0; i < vigen_problem_count(); i++) {
@@ -567,7 +567,13 @@ int main(void)
         CHECK(info != NULL && info->name != NULL && info->description != NULL);
         CHECK(vigen_problem_info_find(info->name) == info);
         for (size_t k = 0; k < info->nparams; k++) CHECK(info->params[k].name && info->params[k].description);
+        /* the problems after the first eight give back the random points
+         * they drew, so that the variants below keep the points their
+         * tolerances were set with (point-vortices' finite differences
+         * are sensitive to the point) */
+        unsigned long long rng_before = rng_state;
         test_problem(info->name, NULL);
+        if (i >= 8) rng_state = rng_before;
     }
     for (size_t i = 0; i < sizeof variants / sizeof variants[0]; i++) test_problem(variants[i][0], variants[i][1]);
     test_kepler_closed_forms();

@@ -16,7 +16,7 @@
  *
  * Names (the registry, one row per problem): kepler, pendulum,
  * harmonic-oscillator, henon-heiles, fput, outer-solar-system,
- * point-vortices, charged-particle.
+ * point-vortices, charged-particle, jupiter-saturn.
  */
 #ifndef VIGEN_PROBLEMS_H
 #define VIGEN_PROBLEMS_H
@@ -24,6 +24,7 @@
 #include <stddef.h>
 #include <vigen/runtime.h>
 #include <vigen/lagrangian.h>
+#include <vigen/nbody.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -69,7 +70,8 @@ size_t vigen_problem_dim(const vigen_problem *pb);                  /* dimension
 
 /* The Hamiltonian (valid until vigen_problem_free); separable is set where
  * H = T(p) + V(q); hessian (for Newton's method) is given by every problem
- * but point-vortices (there the stepper uses finite differences). */
+ * but point-vortices and jupiter-saturn (there the stepper uses finite
+ * differences). */
 const vigen_hamiltonian *vigen_problem_hamiltonian(const vigen_problem *pb);
 /* The Lagrangian formulation, for the integrators of <vigen/lagrangian.h>,
  * with inverse Legendre map g (v with dL/dv(q, v) = p) in *g when g is not
@@ -96,6 +98,28 @@ double vigen_problem_invariant(const vigen_problem *pb, size_t k, double t, cons
  * written when the problem has one (exact, or computed to near full double
  * accuracy, as documented per problem), 0 otherwise. */
 int vigen_problem_reference(const vigen_problem *pb, double t, double *q, double *p);
+
+/* The Kepler splitting H = H_kepler + H_interaction (+ H_jump) of the
+ * problems that have one (kepler: the whole H is the Kepler part, the
+ * interaction is zero; outer-solar-system and jupiter-saturn: the N-body
+ * splittings of <vigen/nbody.h>), for the splitting methods whose flows
+ * are named "kepler", "interaction" (and "jump").  coordinates: NULL or
+ * "jacobi", or "democratic-heliocentric" (N-body problems only).  Fills
+ * *out (valid until vigen_problem_free; its flows may run on several
+ * threads at once) and returns VIGEN_SUCCESS, or VIGEN_EINVAL with a
+ * one-line reason in why (may be NULL) when the problem has no such
+ * splitting.  The split problem's state is in its own coordinates:
+ * vigen_problem_split_state changes a state between the problem's
+ * coordinates (those of vigen_problem_initial, _energy, _invariant,
+ * _reference) and the split problem's, to_split 1: (q, p) -> (qs, ps), 0:
+ * back (the coordinates of the last vigen_problem_split).  The name of flow
+ * k of the split problem is vigen_problem_split_flow_name (NULL past the
+ * end, or before any split). */
+int vigen_problem_split(vigen_problem *pb, const char *coordinates, vigen_split_problem *out, char *why,
+                        size_t why_size);
+const char *vigen_problem_split_flow_name(const vigen_problem *pb, size_t k);
+int vigen_problem_split_state(const vigen_problem *pb, int to_split, const double *q, const double *p, double *qs,
+                              double *ps);
 
 #ifdef __cplusplus
 }

@@ -1,0 +1,38 @@
+/* nbody_internal.h — the N-body system as its files share it: the masses,
+ * the constants of the Jacobi splitting computed once, and the scratch
+ * memory of the flows (so that a flow allocates nothing). */
+#ifndef VIGEN_NBODY_INTERNAL_H
+#define VIGEN_NBODY_INTERNAL_H
+
+#include <vigen/nbody.h>
+
+struct vigen_nbody {
+    size_t n;        /* bodies */
+    double G;
+    double *m;       /* n masses */
+    double mtot;     /* M = sum m */
+    double *interior; /* M_i = m_0 + ... + m_i */
+    double *frac;    /* m_i / M_i (Jacobi), frac[0] = 1 */
+    double *mred;    /* m'_i = m_i M_{i-1} / M_i, i >= 1 (mred[0] = M) */
+    double *mu;      /* G M_i: the Kepler constant of Jacobi body i */
+    double *work;    /* 9 n doubles of scratch for the flows */
+    double *saved;   /* 6 n doubles: the state before a corrector */
+};
+
+/* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
+ * pairs i < j with i >= from, the pair (0, 1) left out when skip01 (nbody.c). */
+void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01);
+
+/* The linear maps of the changes of coordinates (nbody.c), positions and
+ * momenta apart: q' = A x (also velocities: dq'/dt = A dx/dt) and
+ * p' = A^-T p (also forces), and their inverses; in place allowed. */
+void vigen_nbody_jacobi_positions(const vigen_nbody *sys, const double *x, double *q);
+void vigen_nbody_jacobi_positions_inverse(const vigen_nbody *sys, const double *q, double *x);
+void vigen_nbody_jacobi_momenta(const vigen_nbody *sys, const double *p, double *pj);
+void vigen_nbody_jacobi_momenta_inverse(const vigen_nbody *sys, const double *pj, double *p);
+void vigen_nbody_democratic_positions(const vigen_nbody *sys, const double *x, double *q);
+void vigen_nbody_democratic_positions_inverse(const vigen_nbody *sys, const double *q, double *x);
+void vigen_nbody_democratic_momenta(const vigen_nbody *sys, const double *p, double *pd);
+void vigen_nbody_democratic_momenta_inverse(const vigen_nbody *sys, const double *pd, double *p);
+
+#endif
