@@ -110,3 +110,14 @@ def test_wrong_types_are_type_errors():
         vigen.check(42)
     with pytest.raises(TypeError):
         vigen.check("gauss_2", max_order="4")
+
+
+def test_threads_get_what_one_thread_gets():
+    # the calls are serialised inside; each thread's answer is its own
+    from concurrent.futures import ThreadPoolExecutor
+
+    names = ["gauss_2", "yoshida_4", "stormer_verlet_velocity", "tests/data/check/rk4_claimed_symplectic.lua"] * 2
+    serial = [vigen.check(n) for n in names]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(vigen.check, names))
+    assert parallel == serial
