@@ -17,7 +17,7 @@ import warnings
 import cffi
 
 from . import _paths
-from .errors import Error, InputError, ResourceError, VigenWarning
+from .errors import Error, InputError, ResourceError, VigenWarning  # noqa: F401 (InputError for callers)
 
 # The templates (and, relative to them, the method library) of this build or
 # install, unless the user points VIGEN_TEMPLATE_DIR elsewhere: the library

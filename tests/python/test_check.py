@@ -105,6 +105,18 @@ def test_check_a_tableau_object_checks_its_file():
     assert vigen.check(t) == vigen.check("gauss_2")
 
 
+def test_check_a_generated_tableau(cli, tmp_path):
+    spec = "tableaux/specs/gauss_legendre_s2.lua"
+    t = vigen.generate(spec, digits=30)
+    path = tmp_path / "gauss_legendre_s2.lua"
+    cli("generate", spec, "--digits", "30", "-q", "-o", str(path), check=True)
+    expected = json.loads(cli("check", "--json", str(path)).stdout)
+    got = vigen.check(t)
+    assert got.pop("file") != expected.pop("file")      # a temporary copy was checked
+    assert got == expected
+    assert vigen.compare(t, "gauss_2")["methods"][0]["order"] == 4
+
+
 def test_wrong_types_are_type_errors():
     with pytest.raises(TypeError):
         vigen.check(42)
