@@ -3,11 +3,11 @@ ABI mode: nothing is compiled against Python, so the library built once
 serves every Python 3 interpreter.
 
 ``ffi`` and ``lib`` are the cffi objects; the functions are declared from
-the library's own headers (python/native/*.h but *_internal.h, shipped
-beside it: vigen_python.h first, then the others in name order; a header
-must be plain declarations, its '#' lines are dropped). ``call`` runs one
-function of the C interface and turns its result into Python values or
-exceptions; ``declare`` adds declarations of more functions of the library.
+the library's own header, vigen_python.h (shipped beside it; its '#' lines
+are dropped). ``call`` runs one function of the C interface and turns its
+result into Python values or exceptions; ``declare`` adds declarations of
+more functions of the library (those of its other headers: the module that
+uses them declares them).
 """
 import os
 import re
@@ -36,8 +36,7 @@ def _header_declarations(path):
 
 
 ffi = cffi.FFI()
-for _h in ["vigen_python.h"] + sorted(h for h in os.listdir(_DIR) if h.endswith(".h") and h != "vigen_python.h"):
-    ffi.cdef(_header_declarations(os.path.join(_DIR, _h)))
+ffi.cdef(_header_declarations(os.path.join(_DIR, "vigen_python.h")))
 lib = ffi.dlopen(_paths.NATIVE_LIBRARY)
 _declare_lock = threading.Lock()
 
@@ -47,10 +46,10 @@ _EXCEPTIONS = {2: InputError, 3: ResourceError}
 
 def declare(cdef_text):
     """Declares more functions of libvigen_python.so (C declarations as cffi
-    reads them, not declared before) and returns ``lib``, through which they
-    are then called."""
+    reads them; declaring a function again with the same type is harmless)
+    and returns ``lib``, through which they are then called."""
     with _declare_lock:
-        ffi.cdef(cdef_text)
+        ffi.cdef(cdef_text, override=True)
     return lib
 
 
