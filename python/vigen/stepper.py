@@ -110,17 +110,17 @@ typedef @REAL@ real;
 
 const void *vpy_type(void) { return &vstep_type; }
 
-void *vpy_alloc_mechanical(size_t dim, vigen_force_fn@SFX@ force, void *ctx, const real *inv_mass,
+void *vpy_alloc_mechanical(size_t dim, vigen_force_fn@SFX@ fn, void *ctx, const real *inv_mass,
                            const vigen_solver_options *opt)
 {
-    vigen_mechanical@SFX@ sys = { dim, force ? force : @USER_FORCE@, NULL, ctx, inv_mass };
+    vigen_mechanical@SFX@ sys = { dim, fn ? fn : @USER_FORCE@, NULL, ctx, inv_mass };
     return vstep_alloc_mechanical(&sys, opt);
 }
 
-void *vpy_alloc_hamiltonian(size_t dim, vigen_grad_fn@SFX@ dHdq, vigen_grad_fn@SFX@ dHdp, void *ctx, int separable,
+void *vpy_alloc_hamiltonian(size_t dim, vigen_grad_fn@SFX@ fq, vigen_grad_fn@SFX@ fp, void *ctx, int separable,
                             const vigen_solver_options *opt)
 {
-    vigen_hamiltonian@SFX@ sys = { .dim = dim, .dHdq = dHdq ? dHdq : @USER_DHDQ@, .dHdp = dHdp ? dHdp : @USER_DHDP@,
+    vigen_hamiltonian@SFX@ sys = { .dim = dim, .dHdq = fq ? fq : @USER_DHDQ@, .dHdp = fp ? fp : @USER_DHDP@,
                                    .ctx = ctx, .separable = separable };
     return vstep_alloc(&sys, opt);
 }
