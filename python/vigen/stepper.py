@@ -48,6 +48,7 @@ int vigen_python_ensemble_threads(void);
 const char *vigen_python_strerror(int status);
 
 const void *vpy_type(void);
+void vpy_options_default(vigen_solver_options *opt);
 void *vpy_alloc_mechanical(size_t dim, vpy_force_fn force, void *ctx, const REAL *inv_mass,
                            const vigen_solver_options *opt);
 void *vpy_alloc_hamiltonian(size_t dim, vpy_grad_fn dHdq, vpy_grad_fn dHdp, void *ctx, int separable,
@@ -109,6 +110,7 @@ typedef @REAL@ real;
 #include "vstep.c"
 
 const void *vpy_type(void) { return &vstep_type; }
+void vpy_options_default(vigen_solver_options *opt) { vigen_solver_options_default(opt); }
 
 void *vpy_alloc_mechanical(size_t dim, vigen_force_fn@SFX@ fn, void *ctx, const real *inv_mass,
                            const vigen_solver_options *opt)
@@ -378,7 +380,7 @@ class Stepper:
     # -- construction helpers
     def _solver_options(self, opts):
         o = self._ffi.new("vigen_solver_options *")
-        o.solver, o.max_iter, o.tol, o.kahan, o.extrapolate, o.fd_step, o.start_force = 0, 50, 0.0, 1, 1, 0.0, 0
+        self._lib.vpy_options_default(o)
         for k, v in opts.items():
             if k == "solver":
                 if v not in _SOLVERS:
