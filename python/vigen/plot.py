@@ -46,7 +46,7 @@ def _finish(fig, ax, title, path):
 def _curves(curves, what):
     """{label: data} from a dict, a list of (label, data...) or one unlabelled data tuple."""
     if isinstance(curves, dict):
-        return list(curves.items())
+        return [(k, v if isinstance(v, tuple) else (v,)) for k, v in curves.items()]
     if isinstance(curves, tuple):
         return [(None, curves)]
     try:
