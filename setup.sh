@@ -9,7 +9,11 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-packages=(build-essential cmake pkg-config libflint-arb-dev libflint-dev libgsl-dev liblua5.4-dev clang libclang-rt-dev python3 gnuplot-nox libopenmpi-dev openmpi-bin)
+# python3-*: the Python package (python/, docs/python.md) loads libvigen with
+# cffi and hands arrays out as NumPy's; pytest runs its tests; matplotlib
+# draws its plots (its tests and the docs' examples use it)
+packages=(build-essential cmake pkg-config libflint-arb-dev libflint-dev libgsl-dev liblua5.4-dev clang libclang-rt-dev python3 gnuplot-nox libopenmpi-dev openmpi-bin
+          python3-dev python3-cffi python3-numpy python3-pytest python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -30,6 +34,13 @@ if ! cmake --build build -j"$(nproc)" >build/build.log 2>&1; then
   exit 1
 fi
 echo "setup.sh: built build/vigen and the tests (log: build/build.log)"
+# `import vigen` for the python3 on PATH (which may be another interpreter
+# than Debian's /usr/bin/python3, e.g. pyenv's): a vigen.pth in its
+# site-packages names build/python and, when needed, Debian's dist-packages
+# for numpy and cffi (docs/python.md, "Install")
+if command -v python3 >/dev/null 2>&1; then
+  python3 python/setup_path.py build/python || echo "setup.sh: PYTHONPATH=$PWD/build/python makes 'import vigen' work" >&2
+fi
 
 case "${1:-run}" in
   run)
