@@ -23,10 +23,11 @@
  * as `vigen emit` resolves it) for real type real (0 double, 1 long double),
  * rendered with the emitter's name "vstep", with templates from
  * template_dir (NULL: as the command line finds them), with the batched
- * stepper when batch is nonzero: text = vstep.c, extra = vstep.h, message on
+ * stepper when batch is nonzero, rounding decimals given with too few
+ * digits as written when allow_inexact is nonzero (`--allow-inexact`): text = vstep.c, extra = vstep.h, message on
  * failure as `vigen emit` prints it.  The resolved path is not returned:
  * vigen_python_resolve gives it. */
-int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int real, int batch,
+int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int real, int batch, int allow_inexact,
                               const char *template_dir);
 
 /* Runs nsteps steps of size h from (*t, q, p) with vigen_integrate and

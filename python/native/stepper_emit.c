@@ -7,7 +7,7 @@
 #include "python_internal.h"
 #include "stepper.h"
 
-int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int real, int batch,
+int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int real, int batch, int allow_inexact,
                               const char *template_dir)
 {
     pyn_begin(r, "emit");
@@ -18,7 +18,8 @@ int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int re
     if (rc != VIGEN_OK) return pyn_end(r, rc);
     const char *base = strrchr(path, '/');
     vigen_emit_options opt = { .name = "vstep", .real = real, .input_label = base ? base + 1 : path,
-                               .template_dir = template_dir, .batch = batch != 0 };
+                               .template_dir = template_dir, .batch = batch != 0,
+                               .allow_inexact = allow_inexact != 0 };
     vigen_error err;
     vigen_error_init(&err);
     vigen_tableau t;

@@ -66,10 +66,14 @@ size_t vpy_problem_invariant_count(const void *pb);
 const char *vpy_problem_invariant_name(const void *pb, size_t k);
 double vpy_problem_invariant(const void *pb, size_t k, double t, const double *q, const double *p);
 int vpy_problem_reference(const void *pb, double t, double *q, double *p);
+int vpy_ensemble_batch(size_t W, int mechanical, size_t dim, vpy_force_fn force, vpy_grad_fn dHdq, vpy_grad_fn dHdp,
+                       void *ctx, const void *pb, const double *inv_mass, const vigen_solver_options *opt,
+                       size_t ntraj, double *t, double *q, double *p, double h, unsigned long nsteps, int *status,
+                       unsigned long *steps);
 """
 
 _EMIT_CDEF = """
-int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int real, int batch,
+int vigen_python_stepper_emit(vigen_python_result *r, const char *method, int real, int batch, int allow_inexact,
                               const char *template_dir);
 """
 
@@ -82,7 +86,7 @@ _emit_declared = []
 
 # The runtime's status codes (vigen/runtime.h) that mean bad input rather
 # than a failed step.
-_EINVAL, _ESTATE = 1, 12
+_EINVAL, _EUNSUPPORTED = 1, 7
 
 
 def _ffi(dtype):
@@ -161,13 +165,152 @@ int vpy_problem_reference(const void *pb, double t, double *q, double *p)
 }
 """
 
+_BATCH_GLUE = r"""
+/* Ensembles through the batched stepper vstep_step_batch, blocks of W
+ * trajectories in structure-of-arrays layout.  The batched force (or
+ * gradients) evaluates the scalar one trajectory by trajectory, the same
+ * expression per trajectory, so that each gets the bits vstep_step gives it
+ * alone. */
+typedef struct {
+    size_t dim;
+    vigen_force_fn force;
+    vigen_grad_fn dHdq, dHdp;
+    void *ctx;
+    double *x, *y, *z;  /* one trajectory's q, p and result */
+} vpy_batch_ctx;
+
+static void vpy_gather(double *x, const double *soa, size_t dim, size_t W, size_t j)
+{
+    for (size_t k = 0; k < dim; k++) x[k] = soa[k * W + j];
+}
+
+static void vpy_scatter(double *soa, const double *x, size_t dim, size_t W, size_t j)
+{
+    for (size_t k = 0; k < dim; k++) soa[k * W + j] = x[k];
+}
+
+static void vpy_force_batch(const double *t, const double *q, double *f, size_t W, void *ctx)
+{
+    vpy_batch_ctx *c = ctx;
+    for (size_t j = 0; j < W; j++) {
+        vpy_gather(c->x, q, c->dim, W, j);
+        c->force(t[j], c->x, c->z, c->ctx);
+        vpy_scatter(f, c->z, c->dim, W, j);
+    }
+}
+
+static void vpy_grad_batch(vigen_grad_fn g, const double *t, const double *q, const double *p, double *out,
+                           size_t W, vpy_batch_ctx *c)
+{
+    for (size_t j = 0; j < W; j++) {
+        vpy_gather(c->x, q, c->dim, W, j);
+        vpy_gather(c->y, p, c->dim, W, j);
+        g(t[j], c->x, c->y, c->z, c->ctx);
+        vpy_scatter(out, c->z, c->dim, W, j);
+    }
+}
+
+static void vpy_dhdq_batch(const double *t, const double *q, const double *p, double *out, size_t W, void *ctx)
+{
+    vpy_batch_ctx *c = ctx;
+    vpy_grad_batch(c->dHdq, t, q, p, out, W, c);
+}
+
+static void vpy_dhdp_batch(const double *t, const double *q, const double *p, double *out, size_t W, void *ctx)
+{
+    vpy_batch_ctx *c = ctx;
+    vpy_grad_batch(c->dHdp, t, q, p, out, W, c);
+}
+
+/* ntraj trajectories (row-major t[i], q[i dim ..], p[i dim ..]), each from a
+ * fresh start, nsteps steps of h, in blocks of W: a mechanical problem
+ * (fn; NULL: the module's C force) or a Hamiltonian (fq, fp; NULL: the
+ * module's; pb: a problem of the collection).  status[i] and steps[i]
+ * per trajectory; returns VIGEN_SUCCESS, the status of the first failed
+ * trajectory, VIGEN_EUNSUPPORTED when the batched stepper refuses the
+ * problem (an implicit tableau for a general H, Newton), VIGEN_ENOMEM. */
+int vpy_ensemble_batch(size_t W, int mechanical, size_t dim, vigen_force_fn fn, vigen_grad_fn fq, vigen_grad_fn fp,
+                       void *ctx, const void *pb, const double *inv_mass, const vigen_solver_options *opt,
+                       size_t ntraj, double *t, double *q, double *p, double h, unsigned long nsteps, int *status,
+                       unsigned long *steps)
+{
+    /* fn, fq, fp: not named force, dHdq, dHdp, which may be the module's C functions */
+    vpy_batch_ctx c = { dim, fn ? fn : @USER_FORCE@, fq ? fq : @USER_DHDQ@, fp ? fp : @USER_DHDP@, ctx, NULL, NULL,
+                        NULL };
+@PROBLEM_BATCH@
+    double *work = malloc((3 * dim + W * (1 + 2 * dim)) * sizeof *work);
+    int *st = malloc(W * sizeof *st);
+    unsigned long *done = malloc(W * sizeof *done);
+    vstep_batch *b = NULL;
+    if (mechanical) {
+        vigen_mechanical_batch ms = { dim, vpy_force_batch, &c, inv_mass };
+        b = vstep_batch_alloc_mechanical(&ms, W, opt);
+    } else {
+        vigen_hamiltonian_batch hs = { dim, vpy_dhdq_batch, vpy_dhdp_batch, &c };
+        b = vstep_batch_alloc(&hs, W, opt);
+    }
+    int rc = VIGEN_SUCCESS;
+    if (!work || !st || !done) rc = VIGEN_ENOMEM;
+    else if (!b) rc = VIGEN_EUNSUPPORTED;
+    for (size_t s = 0; rc == VIGEN_SUCCESS && s < ntraj; s += W) {
+        size_t m = ntraj - s < W ? ntraj - s : W;
+        c.x = work;
+        c.y = work + dim;
+        c.z = work + 2 * dim;
+        double *tb = work + 3 * dim, *qb = tb + W, *pbk = qb + W * dim;
+        for (size_t j = 0; j < W; j++) {
+            size_t i = s + (j < m ? j : m - 1);  /* a short block is padded with its last trajectory */
+            tb[j] = t[i];
+            vpy_scatter(qb, q + i * dim, dim, W, j);
+            vpy_scatter(pbk, p + i * dim, dim, W, j);
+            st[j] = VIGEN_SUCCESS;
+            done[j] = 0;
+        }
+        vstep_batch_reset(b);
+        for (unsigned long n = 0; n < nsteps; n++) {
+            vstep_step_batch(b, tb, qb, pbk, h, st);
+            size_t alive = 0;
+            for (size_t j = 0; j < W; j++)
+                if (st[j] == VIGEN_SUCCESS) {
+                    done[j]++;
+                    alive++;
+                }
+            if (alive == 0) break;
+        }
+        for (size_t j = 0; j < m; j++) {
+            t[s + j] = tb[j];
+            vpy_gather(q + (s + j) * dim, qb, dim, W, j);
+            vpy_gather(p + (s + j) * dim, pbk, dim, W, j);
+            status[s + j] = st[j];
+            steps[s + j] = done[j];
+        }
+    }
+    for (size_t i = 0; rc == VIGEN_SUCCESS && i < ntraj; i++)
+        if (status[i] != VIGEN_SUCCESS) rc = status[i];
+    if (b) vstep_batch_free(b);
+    free(work);
+    free(st);
+    free(done);
+    return rc;
+}
+"""
+
+_PROBLEM_BATCH = """    if (pb) {
+        /* the batched gradients take the explicit path: a separable H only */
+        const vigen_hamiltonian *H = vigen_problem_hamiltonian(pb);
+        if (!H->separable) return VIGEN_EUNSUPPORTED;
+        c.dHdq = H->dHdq;
+        c.dHdp = H->dHdp;
+        c.ctx = H->ctx;
+    }"""
+
 
 def _defines(source, name):
     """Whether C source defines a function called name (returning a value or void)."""
     return re.search(r"(^|[\s*])" + name + r"\s*\([^;{]*\)\s*\{", source, re.M) is not None
 
 
-def _glue(dtype, kind, source):
+def _glue(dtype, kind, source, batch=False):
     """The module's main C file: kind 'pointer' (the force through a pointer: a
     problem or Python callables), 'force' or 'hamiltonian' (C source with
     force, or dHdq and dHdp, called directly by the stepper)."""
@@ -188,11 +331,14 @@ def _glue(dtype, kind, source):
     if dtype == np.dtype(np.float64):
         problems = "#include <vigen/problems.h>"
         extra += _PROBLEM_GLUE
+        if batch:
+            extra += _BATCH_GLUE.replace("@PROBLEM_BATCH@", _PROBLEM_BATCH)
     if user:
         user = '#line 1 "force"\n' + user + "\n"
-    return (_GLUE.replace("@PROBLEMS_INCLUDE@", problems).replace("@REAL@", ctype).replace("@SFX@", sfx)
-            .replace("@USER@", user).replace("@DIRECT@", direct).replace("@USER_FORCE@", force)
-            .replace("@USER_DHDQ@", dhdq).replace("@USER_DHDP@", dhdp).replace("@EXTRA@", extra))
+    text = (_GLUE.replace("@EXTRA@", extra).replace("@PROBLEMS_INCLUDE@", problems).replace("@REAL@", ctype)
+            .replace("@SFX@", sfx).replace("@DIRECT@", direct).replace("@USER_FORCE@", force)
+            .replace("@USER_DHDQ@", dhdq).replace("@USER_DHDP@", dhdp))
+    return text.replace("@USER@", user)  # last: the user's text is not searched for slots
 
 
 def _method_file(method):
@@ -202,29 +348,32 @@ def _method_file(method):
         return path, f.read()
 
 
-def _emit(path, dtype):
+def _emit(path, dtype, allow_inexact, batch):
     """(vstep.c, vstep.h) of the method file path for the real type dtype."""
     if not _emit_declared:
         _native.declare(_EMIT_CDEF)
         _emit_declared.append(True)
     c, h, _, _ = _native.call("vigen_python_stepper_emit", _native.encode(path, "method", "emit"),
-                              _REALS[dtype][2], 0, _native.encode(_paths.TEMPLATE_DIR))
+                              _REALS[dtype][2], int(bool(batch)), int(bool(allow_inexact)),
+                              _native.encode(_paths.TEMPLATE_DIR))
     return c, h
 
 
-def _module(method, dtype, kind, source):
-    """The loaded stepper module (cffi library) for the method, real type and force."""
+def _module(method, dtype, kind, source, allow_inexact, batch):
+    """(cffi library, cache key, file) of the stepper module for the method,
+    real type and force, compiled on a miss."""
     path, data = _method_file(method)
-    glue = _glue(dtype, kind, source)
-    material = {"method": data.decode("utf-8", "surrogateescape"), "real": _REALS[dtype][0], "glue": glue}
+    glue = _glue(dtype, kind, source, batch)
+    material = {"method": data.decode("utf-8", "surrogateescape"), "real": _REALS[dtype][0], "glue": glue,
+                "allow_inexact": bool(allow_inexact), "batch": bool(batch)}
     key = _cache.key_of(material)
     if key not in _modules:
         def sources():
-            c, h = _emit(path, dtype)
+            c, h = _emit(path, dtype, allow_inexact, batch)
             return "vigen_module.c", {"vigen_module.c": glue, "vstep.c": c, "vstep.h": h}
         so = _cache.module_path(material, sources)
         ffi, _ = _ffi(dtype)
-        _modules[key] = (ffi.dlopen(so), key)
+        _modules[key] = (ffi.dlopen(so), key, so)
     return _modules[key]
 
 
@@ -296,6 +445,15 @@ class Stepper:
       "newton"), ``max_iter``, ``tol``, ``kahan``, ``extrapolate``,
       ``fd_step``, ``start_force``.
     - ``threads``: threads of an ensemble (0: every core).
+    - ``batch``: W > 0 runs ensembles through the batched stepper
+      (``vigen emit --batch``), blocks of W trajectories per call, in place
+      of threads; double precision, explicit tableaux (implicit ones for
+      mechanical problems with the fixed point only).
+    - ``allow_inexact``: round decimals of a tableau given with too few
+      digits as written (``vigen emit --allow-inexact``; a warning says so).
+
+    ``module_file`` is the compiled module's path in the cache; its folder
+    holds the C files it was built from (vigen_module.c, vstep.c, vstep.h).
 
     The first Stepper of a method, real type and force source compiles it
     (a second or so); later ones, in this or any process, load it from the
@@ -303,7 +461,8 @@ class Stepper:
     that cannot be emitted or C source that does not compile."""
 
     def __init__(self, method, problem=None, force=None, hamiltonian=None, dim=None, dtype=np.float64,
-                 inv_mass=None, separable=False, params=None, threads=0, **options):
+                 inv_mass=None, separable=False, params=None, threads=0, batch=0, allow_inexact=False,
+                 **options):
         self._w = None
         self._pb = None
         self._pending = None
@@ -321,13 +480,16 @@ class Stepper:
                                                                      ", ".join(sorted(options))))
         self.method = method
         self.threads = int(threads)
+        self.batch = self._count(batch, "batch")
+        if self.batch and dtype != np.dtype(np.float64):
+            raise InputError("vigen.Stepper: the batched stepper (batch=) is double precision only")
         if problem is not None:
             kind, source = "pointer", None
         elif isinstance(force if force is not None else hamiltonian, str):
             kind, source = ("force" if force is not None else "hamiltonian"), (force or hamiltonian)
         else:
             kind, source = "pointer", None
-        self._lib, key = _module(method, dtype, kind, source)
+        self._lib, key, self.module_file = _module(method, dtype, kind, source, allow_inexact, batch)
         self._ffi, self._native = _ffi(dtype)
         ffi, sfx = self._ffi, _REALS[dtype][1]
         self._call = {name: getattr(self._native, "vigen_python_" + name + sfx)
@@ -338,6 +500,9 @@ class Stepper:
         self._opt = self._solver_options(solver_opts)
         self._keep = []
         self._energy_fn = None
+        self._inv_mass = None
+        # what vpy_ensemble_batch needs: mechanical, force, dHdq, dHdp, ctx, separable
+        self._batch_args = (0, ffi.NULL, ffi.NULL, ffi.NULL, ffi.NULL, 1)
         if problem is not None:
             self._init_problem(problem, options)
         else:
@@ -354,6 +519,7 @@ class Stepper:
                 imp = self._ptr(im) if im is not None else ffi.NULL
                 fn = self._python_force(force) if kind == "pointer" else ffi.NULL
                 self._w = self._lib.vpy_alloc_mechanical(self.dim, fn, ctx, imp, self._opt)
+                self._batch_args = (1, fn, ffi.NULL, ffi.NULL, ctx, 1)
                 if kind == "force" and _defines(source, "V"):
                     self._energy_fn = self._mechanical_energy
             else:
@@ -366,13 +532,16 @@ class Stepper:
                 else:
                     fq = fp = ffi.NULL
                 self._w = self._lib.vpy_alloc_hamiltonian(self.dim, fq, fp, ctx, int(bool(separable)), self._opt)
+                self._batch_args = (0, ffi.NULL, fq, fp, ctx, int(bool(separable)))
                 if kind == "hamiltonian" and _defines(source, "H"):
                     self._energy_fn = self._hamiltonian_energy
             self._ctx = ctx
         if self._w == ffi.NULL:
             self._w = None
+            self._free = self._release()
             raise InputError("vigen.Stepper: the stepper refused the problem (dimension %d, options %r)"
                              % (self.dim, solver_opts))
+        self._free = self._release()
         self._python = kind == "pointer" and problem is None
         self._identity = [key, self.dim, str(dtype), sorted(solver_opts.items()), repr(problem), kind]
         self._t = None
@@ -475,15 +644,25 @@ class Stepper:
         return cb
 
     def __del__(self):
-        try:
-            if self._w is not None:
-                self._call["stepper_free"](self._type, self._w)
-                self._w = None
-            if self._pb is not None:
-                self._lib.vpy_problem_free(self._pb)
-                self._pb = None
-        except Exception:
-            pass
+        # Only functions looked up in __init__: a lookup on a cffi library
+        # takes the FFI's lock, and the collector may run this while that
+        # lock is held by the same thread (a deadlock).
+        free = self.__dict__.get("_free")
+        if free is not None:
+            free()
+
+    def _release(self):
+        """Frees the workspace and the problem; called once."""
+        w, pb, T = self._w, self._pb, self._type
+        stepper_free = self._call["stepper_free"]
+        problem_free = self._lib.vpy_problem_free if pb is not None else None  # double modules only
+
+        def free():
+            if w is not None:
+                stepper_free(T, w)
+            if pb is not None:
+                problem_free(pb)
+        return free
 
     # -- the state
     def _state_bytes(self):
@@ -637,17 +816,33 @@ class Stepper:
         status = np.zeros(n, dtype=np.intc)
         steps = np.zeros(n, dtype=np.uint64 if self._ffi.sizeof("unsigned long") == 8 else np.uint32)
         self._pending = None
-        threads = 1 if self._python else self.threads
-        rc = self._native.vigen_python_integrate_ensemble(
-            self._type, self._w, self.dim, threads, n, self._ptr(tt), self._ptr(q), self._ptr(p), float(h),
-            nsteps, self._ffi.cast("int *", status.ctypes.data), self._ffi.cast("unsigned long *", steps.ctypes.data))
+        st_ptr = self._ffi.cast("int *", status.ctypes.data)
+        steps_ptr = self._ffi.cast("unsigned long *", steps.ctypes.data)
+        if self.batch:
+            mech, fn, fq, fp, ctx, separable = self._batch_args
+            if not separable:
+                raise InputError("vigen.Stepper: the batched stepper needs a separable H (separable=True) "
+                                 "or a force")
+            pb = self._pb if self._pb is not None else self._ffi.NULL
+            im = self._ptr(self._inv_mass) if self._inv_mass is not None else self._ffi.NULL
+            rc = self._lib.vpy_ensemble_batch(self.batch, mech, self.dim, fn, fq, fp, ctx, pb, im, self._opt, n,
+                                              self._ptr(tt), self._ptr(q), self._ptr(p), float(h), nsteps, st_ptr,
+                                              steps_ptr)
+        else:
+            threads = 1 if self._python else self.threads
+            rc = self._native.vigen_python_integrate_ensemble(self._type, self._w, self.dim, threads, n,
+                                                              self._ptr(tt), self._ptr(q), self._ptr(p), float(h),
+                                                              nsteps, st_ptr, steps_ptr)
         pending, self._pending = self._pending, None
         if pending is not None:
             raise StepError("vigen.Stepper: the Python force raised %s: %s" % (type(pending).__name__, pending),
                             "force raised") from pending
         if rc != 0:
-            bad = int(np.flatnonzero(status)[0]) if np.any(status) else -1
             why = self._ffi.string(self._native.vigen_python_strerror(rc)).decode()
+            if rc == _EUNSUPPORTED:
+                raise InputError("vigen.Stepper: the batched stepper refuses this problem or these options "
+                                 "(%s): an implicit tableau runs batched for a force with the fixed point only" % why)
+            bad = int(np.flatnonzero(status)[0]) if np.any(status) else -1
             cls = InputError if rc == _EINVAL else StepError
             raise cls("vigen.Stepper: trajectory %d of the ensemble failed: %s" % (bad, why), why)
         return tt, q, p

@@ -276,6 +276,31 @@ def test_ensemble_equals_single_runs():
         assert np.array_equal(qi[-1], q[i]) and np.array_equal(pi[-1], p[i]) and ti[-1] == t[i]
 
 
+@pytest.mark.parametrize("make", [
+    lambda: vigen.Stepper("yoshida_4", force=KEPLER_C, dim=2, batch=4),
+    lambda: vigen.Stepper("yoshida_4", force=kepler_py, dim=2, batch=3),
+    lambda: vigen.Stepper("yoshida_4", problem="kepler", e=0.6, batch=4),
+    lambda: vigen.Stepper("gauss_2", force=KEPLER_C, dim=2, batch=4),
+], ids=["c-force", "python-force", "problem", "implicit"])
+def test_batched_ensemble_equals_single_runs(make):
+    rng = np.random.default_rng(2)
+    q0 = Q0 + 0.05 * rng.standard_normal((7, 2))  # 7 = 4 + 3: a short, padded last block
+    p0 = P0 + 0.05 * rng.standard_normal((7, 2))
+    s = make()
+    t, q, p = s.integrate(q0, p0, 0.01, 300)
+    for i in range(7):
+        ti, qi, pi = s.integrate(q0[i], p0[i], 0.01, 300, every=0)
+        assert np.array_equal(qi[-1], q[i]) and np.array_equal(pi[-1], p[i]) and ti[-1] == t[i]
+
+
+def test_batched_stepper_refuses_what_it_cannot_run():
+    s = vigen.Stepper("gauss_2", force=KEPLER_C, dim=2, batch=4, solver="newton")
+    with pytest.raises(vigen.InputError):
+        s.integrate(np.tile(Q0, (3, 1)), np.tile(P0, (3, 1)), 0.01, 10)
+    with pytest.raises(vigen.InputError):
+        vigen.Stepper("yoshida_4", force=KEPLER_C, dim=2, batch=4, dtype=np.longdouble)
+
+
 # ---- the cache ----------------------------------------------------------------------
 def test_the_second_stepper_compiles_nothing(monkeypatch):
     vigen.Stepper("stormer_verlet_velocity", force=OSCILLATOR_C, dim=1)
