@@ -147,7 +147,7 @@ def kepler_rows(periods=1000):
             err, best, med, evals = vigen_point(m, per_period, periods, 7)
             vig.append((m, per_period, err, best, med, evals))
     sci = []
-    for tol in (1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11):
+    for tol in (1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12):
         err, best, med, nfev = scipy_point(tol, periods, 3)
         sci.append((tol, err, best, med, nfev))
     return vig, sci

@@ -543,7 +543,12 @@ class Stepper:
                              % (self.dim, solver_opts))
         self._free = self._release()
         self._python = kind == "pointer" and problem is None
-        self._identity = [key, self.dim, str(dtype), sorted(solver_opts.items()), repr(problem), kind]
+        # what a saved state must agree with: the module, the problem and its
+        # parameters, the dimension, the real type and the options
+        problem_params = self._problem_params if problem is not None else [
+            [float(x) for x in self._params.ravel()],
+            None if self._inv_mass is None else [float(x) for x in self._inv_mass]]
+        self._identity = [key, self.dim, str(dtype), sorted(solver_opts.items()), repr(problem), problem_params, kind]
         self._t = None
 
     # -- construction helpers
@@ -563,7 +568,11 @@ class Stepper:
         if self._dtype != np.dtype(np.float64):
             raise InputError("vigen.Stepper: the problems of the collection are double precision; "
                              "give the force as C source for dtype=%s" % self._dtype)
-        text = ",".join("%s=%s" % (k, repr(float(v))) for k, v in params.items())
+        try:
+            text = ",".join("%s=%s" % (k, repr(float(v))) for k, v in sorted(params.items()))
+        except (TypeError, ValueError):
+            raise InputError("vigen.Stepper: the parameters of a problem are numbers (%r)" % (params,)) from None
+        self._problem_params = text
         pb = ffi.new("void **")
         why = ffi.new("char[]", 300)
         if self._lib.vpy_problem_create(pb, str(problem).encode(), text.encode(), why, 300) != 0:

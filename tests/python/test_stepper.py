@@ -259,9 +259,15 @@ def test_restart_bit_for_bit_after_pickle():
     second.set_state(pickle.loads(saved))
     t, q, p = second.integrate(h=h, nsteps=400, every=0)
     assert np.array_equal(q[-1], qw[-1]) and np.array_equal(p[-1], pw[-1]) and t[-1] == whole.t
-    other = vigen.Stepper("yoshida_4", force=KEPLER_C, dim=2)
+    for other in (vigen.Stepper("yoshida_4", force=KEPLER_C, dim=2),
+                  vigen.Stepper("gauss_2", force=KEPLER_C, dim=2, params=[1.0]),
+                  vigen.Stepper("gauss_2", force=KEPLER_C, dim=2, solver="newton")):
+        with pytest.raises(vigen.InputError):
+            other.set_state(pickle.loads(saved))
+    a = vigen.Stepper("yoshida_4", problem="kepler", e=0.6)
+    a.integrate(Q0, P0, h, 10)
     with pytest.raises(vigen.InputError):
-        other.set_state(pickle.loads(saved))
+        vigen.Stepper("yoshida_4", problem="kepler", e=0.9).set_state(a.state())
 
 
 def test_ensemble_equals_single_runs():
