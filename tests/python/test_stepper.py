@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import vigen
-from vigen import _cache, _paths, stepper as stepper_module
+from vigen import _cache, _paths, _stepper_module
 
 KEPLER_C = textwrap.dedent("""
     void force(real t, const real *q, real *f, void *ctx)
@@ -310,7 +310,7 @@ def test_batched_stepper_refuses_what_it_cannot_run():
 # ---- the cache ----------------------------------------------------------------------
 def test_the_second_stepper_compiles_nothing(monkeypatch):
     vigen.Stepper("stormer_verlet_velocity", force=OSCILLATOR_C, dim=1)
-    stepper_module._modules.clear()
+    _stepper_module.LOADED.clear()
 
     def no_compiler(*args, **kwargs):
         raise AssertionError("compiled again")
