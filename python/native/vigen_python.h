@@ -62,7 +62,7 @@ int vigen_python_list(vigen_python_result *r);
 
 /* operand as `vigen` resolves it (a file, or a method name of the library,
  * vigen/library.h): text = the path.  command names the command in the
- * message ("show", "check", ...). */
+ * message ("show", "check", ...; "" for none: "vigen: ..."). */
 int vigen_python_resolve(vigen_python_result *r, const char *command, const char *operand);
 
 /* `vigen check FILE --json [--against FILE2] [--max-order P] [--prec BITS]`:

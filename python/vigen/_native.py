@@ -3,9 +3,11 @@ ABI mode: nothing is compiled against Python, so the library built once
 serves every Python 3 interpreter.
 
 ``ffi`` and ``lib`` are the cffi objects; the functions are declared from
-the library's own header (vigen_python.h, shipped beside it). ``call`` runs
-one function of the C interface and turns its result into Python values or
-exceptions; ``declare`` adds declarations of more functions of the library.
+the library's own header, vigen_python.h (shipped beside it; its '#' lines
+are dropped). ``call`` runs one function of the C interface and turns its
+result into Python values or exceptions; ``declare`` adds declarations of
+more functions of the library (those of its other headers: the module that
+uses them declares them).
 """
 import os
 import re
@@ -15,7 +17,7 @@ import warnings
 import cffi
 
 from . import _paths
-from .errors import Error, InputError, ResourceError, VigenWarning
+from .errors import Error, InputError, ResourceError, VigenWarning  # noqa: F401 (InputError for callers)
 
 # The templates (and, relative to them, the method library) of this build or
 # install, unless the user points VIGEN_TEMPLATE_DIR elsewhere: the library
@@ -44,9 +46,10 @@ _EXCEPTIONS = {2: InputError, 3: ResourceError}
 
 def declare(cdef_text):
     """Declares more functions of libvigen_python.so (C declarations as cffi
-    reads them) and returns ``lib``, through which they are then called."""
+    reads them; declaring a function again with the same type is harmless)
+    and returns ``lib``, through which they are then called."""
     with _declare_lock:
-        ffi.cdef(cdef_text)
+        ffi.cdef(cdef_text, override=True)
     return lib
 
 

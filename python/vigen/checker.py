@@ -1,16 +1,31 @@
 """The checker: what a method is, certified in ball arithmetic
 (``vigen check``), and several methods side by side (``vigen compare``)."""
+import contextlib
 import json
+import os
+import tempfile
 
 from . import _native
+from .tableau import Tableau
 
 
-def _operand(method, command):
-    """A method for the C interface: a name, a path, or a Tableau (its file)."""
-    path = getattr(method, "path", None)
-    if path is not None and hasattr(method, "to_file"):
-        method = path
-    return _native.encode(method, "method", command)
+@contextlib.contextmanager
+def _operands(methods, command):
+    """The methods as the C interface takes them: names and paths as they
+    are; a Tableau read from a file as that file; a generated Tableau as its
+    tableau file, written to a temporary folder for the call."""
+    with tempfile.TemporaryDirectory(prefix="vigen-") as tmp:
+        out = []
+        for k, m in enumerate(methods):
+            if isinstance(m, Tableau) and m.path is not None:
+                m = m.path
+            elif isinstance(m, Tableau):
+                folder = os.path.join(tmp, str(k))
+                os.mkdir(folder)
+                m.to_file(os.path.join(folder, os.path.basename(m.name) + ".lua"))
+                m = os.path.join(folder, os.path.basename(m.name) + ".lua")
+            out.append(_native.encode(m, "method", command))
+        yield out
 
 
 def check(method, *, against=None, max_order=None, prec=None):
@@ -18,7 +33,9 @@ def check(method, *, against=None, max_order=None, prec=None):
 
     Args:
         method: a method name of the library (``"gauss_2"``), the path of a
-            tableau or spec file, or a Tableau read from a file.
+            tableau or spec file, or a Tableau (read from a file: that file;
+            generated: its tableau file, written to a temporary folder, whose
+            path the report's ``"file"`` then names).
         against: the path of a second tableau file whose entries every entry
             is compared with (``--against``).
         max_order: orders 1..max_order are checked (``--max-order``; default 8).
@@ -37,8 +54,9 @@ def check(method, *, against=None, max_order=None, prec=None):
         ResourceError: a cap of the sandbox or of the precision was reached.
     """
     against_arg = _native.ffi.NULL if against is None else _native.encode(against, "against", "check")
-    out, _, _, _ = _native.call("vigen_python_check", _operand(method, "check"), against_arg,
-                                _native.whole(max_order, "max_order"), _native.whole(prec, "prec"))
+    with _operands([method], "check") as (operand,):
+        out, _, _, _ = _native.call("vigen_python_check", operand, against_arg,
+                                    _native.whole(max_order, "max_order"), _native.whole(prec, "prec"))
     return json.loads(out)
 
 
@@ -48,7 +66,8 @@ def compare(*methods, format="json", max_order=None):
     linear stability interval, cost and the efficiency measure.
 
     Args:
-        *methods: method names or paths (at most 64).
+        *methods: method names, paths or Tableaux, as :func:`check` takes
+            them (at most 64; a single list or tuple of them also does).
         format: ``"json"`` (the default: the parsed object is returned),
             ``"text"`` or ``"latex"`` (the table is returned as a str).
         max_order: orders 1..max_order are checked (``--max-order``).
@@ -58,7 +77,10 @@ def compare(*methods, format="json", max_order=None):
     """
     if len(methods) == 1 and isinstance(methods[0], (list, tuple)):
         methods = tuple(methods[0])
-    files = b"\n".join(_operand(m, "compare") for m in methods)
-    out, _, _, _ = _native.call("vigen_python_compare", files, _native.encode(format, "format", "compare"),
-                                _native.whole(max_order, "max_order"))
+    with _operands(methods, "compare") as operands:
+        for op in operands:
+            if b"\n" in op:     # the C interface takes the files one a line
+                raise _native.InputError(f"vigen compare: {op!r} holds a newline", "usage error", 2)
+        out, _, _, _ = _native.call("vigen_python_compare", b"\n".join(operands),
+                                    _native.encode(format, "format", "compare"), _native.whole(max_order, "max_order"))
     return json.loads(out) if format == "json" else out

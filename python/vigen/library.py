@@ -29,5 +29,5 @@ def resolve(name_or_path):
     ``"published/yoshida_4"``) is looked up in the current directory,
     ``VIGEN_PATH`` and the installed library. Raises InputError (with
     "did you mean") when nothing matches."""
-    out, _, _, _ = _native.call("vigen_python_resolve", b"show", _native.encode(name_or_path))
+    out, _, _, _ = _native.call("vigen_python_resolve", b"", _native.encode(name_or_path, "method"))
     return out

@@ -1,9 +1,10 @@
-"""The examples of docs/python.md run as written: every ```python block of
-the page, in order, in one namespace (a block may use what an earlier one
-defined), from a scratch folder that sees the source tree's tableaux/ as
-./tableaux (so that the examples' paths are those of the top of the source
-tree and nothing they write lands in it).  A block whose first failure is
-the import of an optional package that is not installed (matplotlib, scipy,
+"""The examples of docs/python.md (and README.md's) run as written: every
+```python block of the page, in order, in one namespace (a block may use
+what an earlier one defined), from a scratch folder that sees the source
+tree's tableaux/ as ./tableaux (so that the examples' paths are those of
+the top of the source tree and nothing they write lands in it), with
+matplotlib drawing off screen (MPLBACKEND=Agg).  A block that fails by
+importing an optional package that is not installed (matplotlib, scipy,
 mpmath) skips the rest of the page rather than failing."""
 import contextlib
 import io
@@ -25,14 +26,17 @@ def blocks(path):
     return found
 
 
-def test_the_page_has_examples(source_dir):
+def test_the_pages_have_examples(source_dir):
     assert len(blocks(os.path.join(source_dir, "docs", "python.md"))) >= 5
+    assert len(blocks(os.path.join(source_dir, "README.md"))) >= 1
 
 
-def test_docs_python_md_runs(source_dir, tmp_path, monkeypatch):
-    doc = os.path.join(source_dir, "docs", "python.md")
+@pytest.mark.parametrize("page", ["docs/python.md", "README.md"])
+def test_examples_run(source_dir, tmp_path, monkeypatch, page):
+    doc = os.path.join(source_dir, page)
     os.symlink(os.path.join(source_dir, "tableaux"), tmp_path / "tableaux")
     monkeypatch.chdir(tmp_path)
+    monkeypatch.setenv("MPLBACKEND", "Agg")
     namespace = {"__name__": "__docs__"}
     for line, code in blocks(doc):
         out = io.StringIO()
@@ -41,5 +45,5 @@ def test_docs_python_md_runs(source_dir, tmp_path, monkeypatch):
                 exec(compile(code, f"{doc}:{line}", "exec"), namespace)
         except ModuleNotFoundError as e:
             if e.name in OPTIONAL:
-                pytest.skip(f"docs/python.md:{line} needs {e.name}, which is not installed")
+                pytest.skip(f"{page}:{line} needs {e.name}, which is not installed")
             raise
