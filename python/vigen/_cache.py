@@ -92,8 +92,11 @@ def runtime_identity():
 
 
 def link_flags():
-    """The libraries a module links after its sources."""
-    return [_paths.PROBLEMS_LIBRARY, _paths.RUNTIME_LIBRARY, "-lgsl", "-lgslcblas", "-lm"]
+    """The libraries a module links after its sources: the problem
+    collection, the runtime and what they need (GSL, libm, OpenMP's flag,
+    the sanitizers in a sanitized build: _paths.LINK_FLAGS)."""
+    extra = getattr(_paths, "LINK_FLAGS", None) or ["-lgsl", "-lgslcblas", "-lm"]
+    return [_paths.PROBLEMS_LIBRARY, _paths.RUNTIME_LIBRARY] + list(extra)
 
 
 def compile_command(cc, source, output):
@@ -120,7 +123,7 @@ def module_path(material, make_sources):
     compiler's first error lines; a missing compiler vigen.ResourceError."""
     cc = compiler()
     full = {"module": material, "cc": cc, "compiler": compiler_identity(cc), "runtime": runtime_identity(),
-            "command": compile_command(["CC"], "MAIN", "OUT")}
+            "command": compile_command(["CC"], "MAIN", "OUT")}  # the flags and libraries, LINK_FLAGS included
     key = key_of(full)
     root = cache_dir()
     final = os.path.join(root, key)

@@ -11,12 +11,16 @@ workspaces through the runtime's drivers in libvigen_python
 (python/native/stepper.h), declared here with the module's functions in one
 cffi FFI per real type.
 """
+import hashlib
+import os
 import re
+import tempfile
 
 import cffi
 import numpy as np
 
 from . import _cache, _native, _paths
+from .tableau import Tableau
 
 # ---- the C declarations, per real type ---------------------------------------
 # Drivers of libvigen_python (python/native/stepper.h) and the functions of a
@@ -340,8 +344,28 @@ def _glue(dtype, kind, source, batch=False):
     return text.replace("@USER@", user)  # last: the user's text is not searched for slots
 
 
+def _tableau_file(tableau):
+    """A file holding a vigen.Tableau's text: written once into the cache
+    (tableaux/HASH/NAME.lua, by rename, so that a reader never sees half of
+    it), where the emitter reads it as it reads any tableau file."""
+    data = tableau.text.encode("utf-8", "surrogateescape")
+    name = re.sub(r"[^A-Za-z0-9_.-]", "_", str(tableau.name or "tableau"))[:64] or "tableau"
+    folder = os.path.join(_cache.cache_dir(), "tableaux", hashlib.sha256(data).hexdigest()[:32])
+    path = os.path.join(folder, name + ".lua")
+    if not os.path.isfile(path):
+        os.makedirs(folder, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(dir=folder, prefix=".tmp-")
+        with os.fdopen(fd, "wb") as f:
+            f.write(data)
+        os.replace(tmp, path)
+    return path
+
+
 def _method_file(method):
-    """(path, bytes) of a method given by name or path, resolved as `vigen emit` resolves it."""
+    """(path, bytes) of a method given by name or path, resolved as `vigen
+    emit` resolves it, or given as a vigen.Tableau."""
+    if isinstance(method, Tableau):
+        method = _tableau_file(method)
     path = _native.call("vigen_python_resolve", b"emit", _native.encode(method, "method", "emit"))[0]
     with open(path, "rb") as f:
         return path, f.read()

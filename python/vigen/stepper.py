@@ -62,7 +62,8 @@ class Stepper:
     force=F, dim=N)`` or ``Stepper(method, hamiltonian=H, dim=N)``:
 
     - ``method``: a method of the library (``"yoshida_4"``, as ``vigen list``
-      names it) or the path of a tableau or spec file.
+      names it), the path of a tableau or spec file, or a
+      :class:`vigen.Tableau` (``vigen.generate(...)``).
     - ``problem``: a problem of the collection (``"kepler"``, ``"pendulum"``,
       ... as ``vigen try --problem`` takes them) with its parameters as
       keywords (``e=0.6``); double precision only.
