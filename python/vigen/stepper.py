@@ -513,8 +513,8 @@ class Stepper:
         if q.ndim != 1:
             raise InputError("vigen.Stepper: integrate_at takes one trajectory (q0 of shape (%d,))" % self.dim)
         tout = self._array(t_out, "t_out", None).reshape(-1)
-        if not np.all(np.isfinite(tout)):
-            raise InputError("vigen.Stepper: t_out must be finite")
+        if tout.size == 0 or not np.all(np.isfinite(tout)):
+            raise InputError("vigen.Stepper: t_out must hold at least one time, every one finite")
         d = np.diff(np.concatenate(([t], tout)))
         if np.any(d * np.sign(h) < 0):
             raise InputError("vigen.Stepper: t_out must be monotone in the direction of h and not before t0")
