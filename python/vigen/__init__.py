@@ -37,3 +37,4 @@ __all__ = ["Error", "InputError", "ResourceError", "VigenWarning", "Tableau", "c
            "methods", "resolve", "set_caps", "__version__"]
 
 # Steppers on NumPy arrays (stepper.py) and plots (plot.py) are added below.
+from .stepper import Stepper, StepperState, StepError  # noqa: E402 (steppers on NumPy arrays)
