@@ -62,6 +62,8 @@ void peer_boost_force(double t, const double *q, double *f, void *ctx) { peer_fo
 
 #define PEER_G2D_DIRECT_FORCE peer_force
 #include "peer_g2d.c"
+#define PEER_G3D_DIRECT_FORCE peer_force
+#include "peer_g3d.c"
 #define PEER_SVD_DIRECT_FORCE peer_force
 #include "peer_svd.c"
 #define PEER_MCLD_DIRECT_FORCE peer_force
@@ -87,6 +89,18 @@ static double peer_inv_mass[PEER_DIM];
 #define HG2_DQ dHdq
 #define HG2_DP peer_dp
 #include "hand_gauss2.h"
+
+/* the GNI_IRK2-style anchors (bench/hand_gni_gauss.h): Nystrom form,
+ * static dimension, force inlined */
+#define GNI_NAME gni2
+#define GNI_S 2
+#define GNI_DIM PEER_DIM
+#define GNI_FORCE peer_force
+#define GNI_VEL(k, x) PEER_VELOCITY(k, x)
+#include "hand_gni_gauss.h"
+#define GNI_NAME gni3
+#define GNI_S 3
+#include "hand_gni_gauss.h"
 
 /* ------------------------------------------------------------ the problem */
 static vigen_problem *pb;
@@ -171,6 +185,24 @@ static const vigen_stats *hg2_stats_v(const void *ws)
     hg2_counts.iterations = w->iters;
     return &hg2_counts;
 }
+
+/* the GNI-style anchors through the row interface: forces and sweeps */
+#define GNI_ROW(x)                                                                                               \
+    static vigen_stats x##_counts;                                                                            \
+    static int x##_step_v(void *w, double *t, double *q, double *p, double hh)                                \
+    {                                                                                                         \
+        return x##_step(w, t, q, p, hh, pb);                                                                  \
+    }                                                                                                         \
+    static void x##_reset_v(void *w) { x##_reset(w); }                                                        \
+    static const vigen_stats *x##_stats_v(const void *ws)                                                     \
+    {                                                                                                         \
+        const x##_ws *w = ws;                                                                                 \
+        x##_counts.dHdq_evals = w->forces;                                                                    \
+        x##_counts.iterations = w->sweeps;                                                                    \
+        return &x##_counts;                                                                                   \
+    }
+GNI_ROW(gni2)
+GNI_ROW(gni3)
 
 /* ------------------------------------------------------------- one row */
 typedef int (*step_fn)(void *w, double *t, double *q, double *p, double h);
@@ -347,6 +379,8 @@ static void gauss2_block(void)
     vigen_mechanical mech = { PEER_DIM, peer_force, NULL, pb, PEER_UNIT_MASS ? NULL : peer_inv_mass };
     vigen_solver_options dflt = options(1, 0, 1), sf = options(1, 1, 1), noex = options(0, 0, 1);
     row rows[] = {
+        { "hand-written Gauss-2, GNI_IRK2 style (bench/hand_gni_gauss.h: Nystrom form, static dimension, force "
+          "inlined)", gni2_alloc(), gni2_step_v, gni2_stats_v, gni2_reset_v },
         { "hand-written Gauss-2 (bench/hand_gauss2.h, general form, gradients inlined)", hg2_alloc(PEER_DIM),
           hg2_step_v, hg2_stats_v, hg2_reset_v },
         { "emitted Gauss-2, mechanical, --dim, direct force", peer_g2d_alloc_mechanical(&mech, &dflt),
@@ -364,13 +398,35 @@ static void gauss2_block(void)
     printf("Gauss-2 (x hand: over the hand-written stepper)\n\n");
     table_head("hand");
     gsl_row(run_rows(rows, N, 0, 1, res));
-    const result *d = &res[1], *s = &res[2], *g = &res[4];
+    const result *d = &res[2], *s = &res[3], *g = &res[5];
     printf("\nSweeps per step against the general stepper's extrapolated start (%.2f): mechanical, default start "
            "%.2f (%.1f%% fewer); with start_force %.2f (%.1f%% fewer).\n\n",
            g->sweeps, d->sweeps, 100 * (1 - d->sweeps / g->sweeps), s->sweeps, 100 * (1 - s->sweeps / g->sweeps));
-    hg2_free(rows[0].w);
-    for (int i = 1; i < 3; i++) peer_g2d_free(rows[i].w);
-    for (int i = 3; i < N; i++) peer_g2_free(rows[i].w);
+    free(rows[0].w);
+    hg2_free(rows[1].w);
+    for (int i = 2; i < 4; i++) peer_g2d_free(rows[i].w);
+    for (int i = 4; i < N; i++) peer_g2_free(rows[i].w);
+}
+
+static void gauss3_block(void)
+{
+    vigen_mechanical mech = { PEER_DIM, peer_force, NULL, pb, PEER_UNIT_MASS ? NULL : peer_inv_mass };
+    vigen_solver_options dflt = options(1, 0, 1), sf = options(1, 1, 1);
+    row rows[] = {
+        { "hand-written Gauss-3, GNI_IRK2 style (bench/hand_gni_gauss.h)", gni3_alloc(), gni3_step_v, gni3_stats_v,
+          gni3_reset_v },
+        { "emitted Gauss-3, mechanical, --dim, direct force", peer_g3d_alloc_mechanical(&mech, &dflt),
+          EMITTED(peer_g3d) },
+        { "emitted Gauss-3, mechanical, --dim, direct force, start_force = 1",
+          peer_g3d_alloc_mechanical(&mech, &sf), EMITTED(peer_g3d) },
+    };
+    enum { N = sizeof rows / sizeof rows[0] };
+    printf("\nGauss-3 (x hand: over the hand-written stepper)\n\n");
+    table_head("hand");
+    run_rows(rows, N, 0, 1, NULL);
+    printf("\n");
+    free(rows[0].w);
+    for (int i = 1; i < N; i++) peer_g3d_free(rows[i].w);
 }
 
 static void verlet_block(void)
@@ -500,6 +556,7 @@ int main(int argc, char **argv)
     gsl_set_error_handler_off();
     printf("#### %s, %ld steps\n\n", PEER_TITLE, steps);
     gauss2_block();
+    gauss3_block();
     verlet_block();
     composition_block(argc > 2 ? argv[2] : NULL);
     vigen_problem_free(pb);
