@@ -34,7 +34,8 @@ def set_caps(*, max_memory=None, max_instructions=None, max_prec=None):
 
 
 __all__ = ["Error", "InputError", "ResourceError", "VigenWarning", "Tableau", "check", "compare", "generate",
-           "methods", "resolve", "set_caps", "__version__"]
+           "methods", "resolve", "set_caps", "Stepper", "StepperState", "StepError", "__version__"]
 
-# Steppers on NumPy arrays (stepper.py) and plots (plot.py) are added below.
-from .stepper import Stepper, StepperState, StepError  # noqa: E402 (steppers on NumPy arrays)
+# Steppers on NumPy arrays (stepper.py); plots are the submodule vigen.plot
+# (matplotlib is imported only when a figure is drawn).
+from .stepper import Stepper, StepperState, StepError  # noqa: E402
