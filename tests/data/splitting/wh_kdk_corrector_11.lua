@@ -1,0 +1,27 @@
+-- The Wisdom-Holman kick-drift-kick (interaction h/2, Kepler h, interaction h/2) kernel processed by the
+-- symplectic corrector of order 11 of the runtime (vigen_nbody_corrector_apply,
+-- docs/splitting.md "Symplectic correctors"): a_i = i sqrt(7/40) exactly, b_i
+-- the runtime's 17-digit values (vigen_nbody_corrector_coefficients).  The
+-- corrector as written is the runtime's C^-1 (true state -> kernel's state),
+-- applied first in the step C^-1 K C:
+--   for i = m..1:  K(a_i h) I(b_i h) K(-2 a_i h) I(-b_i h) K(a_i h).
+-- Test data: the checker decides the generalized order of the processed
+-- step independently of the runtime's derivation (tests/cli/cli_corrector_orders.sh).
+return {
+  name = "wh_kdk_corrector_11",
+  generalized_order = { 12, 2 },
+  flows = { "kepler", "interaction" },
+  perturbation = "interaction",
+  splitting = {
+    { "interaction", "1/2" },
+    { "kepler", "1" },
+    { "interaction", "1/2" },
+  },
+  corrector = {
+    { "kepler", "5*sqrt(7/40)" }, { "interaction", "0.00050665080142013076" }, { "kepler", "-2*5*sqrt(7/40)" }, { "interaction", "-0.00050665080142013076" }, { "kepler", "5*sqrt(7/40)" },
+    { "kepler", "4*sqrt(7/40)" }, { "interaction", "-0.0059325720498267969" }, { "kepler", "-2*4*sqrt(7/40)" }, { "interaction", "0.0059325720498267969" }, { "kepler", "4*sqrt(7/40)" },
+    { "kepler", "3*sqrt(7/40)" }, { "interaction", "0.031937934539971714" }, { "kepler", "-2*3*sqrt(7/40)" }, { "interaction", "-0.031937934539971714" }, { "kepler", "3*sqrt(7/40)" },
+    { "kepler", "2*sqrt(7/40)" }, { "interaction", "-0.10464537238581183" }, { "kepler", "-2*2*sqrt(7/40)" }, { "interaction", "0.10464537238581183" }, { "kepler", "2*sqrt(7/40)" },
+    { "kepler", "sqrt(7/40)" }, { "interaction", "0.23427635945511452" }, { "kepler", "-2*sqrt(7/40)" }, { "interaction", "-0.23427635945511452" }, { "kepler", "sqrt(7/40)" },
+  },
+}
