@@ -1,19 +1,21 @@
 /* nbody_whfast.c — work against precision on the outer solar system (Sun
  * + 5, the data of the runtime's outer-solar-system problem, moved to the
  * centre-of-mass frame) over 10^6 days: REBOUND's WHFast (Jacobi, its
- * drift-kick-drift kernel, with and without symplectic correctors) and the
- * runtime's N-body flows (vigen/nbody.h) in the same drift-kick-drift
- * Wisdom-Holman loop (the first and last half drifts of neighbouring steps
- * merged, as WHFast does without safe mode), with the runtime's correctors.
- * Built and run by rebound_run.sh against a REBOUND built by its own
- * Makefile; the loop below stands in for an emitted splitting stepper.
+ * drift-kick-drift kernel, with and without symplectic correctors) and
+ * vigen's emitted Kepler splittings (the split variant of
+ * tableaux/published/wisdom_holman, saba_2..4, saba_10_6_4 and
+ * wisdom_holman_corrected, stepping the runtime's Jacobi flows through a
+ * vigen_split_problem), the Wisdom-Holman kernel also with the runtime's
+ * correctors applied as WHFast applies its own (C^-1 once at the start, C
+ * on a copy of the state at each output).  Built and run by rebound_run.sh
+ * against a REBOUND built by its own Makefile and the steppers emitted by
+ * the build's vigen.
  *
- * Per row: the method, the step, the maximum relative energy error over
- * 100 outputs (a run of its own, the corrector applied at each output),
- * and the wall time of the bare run (no outputs; best and median of
- * `repeats` runs).  With the arguments "one METHOD H CORRECTOR STEPS" it
- * makes one bare run only (rebound_run.sh counts its instructions with
- * callgrind). */
+ * Per row: the method, the corrector order, the step, the maximum relative
+ * energy error over 100 outputs (a run of its own), and the wall time of
+ * the bare run (no outputs; best and median of `repeats` runs).  With the
+ * arguments "one METHOD H CORRECTOR STEPS" it makes one bare run only
+ * (rebound_run.sh counts its instructions with callgrind). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -22,6 +24,12 @@
 #include <rebound.h>
 #include <vigen/nbody.h>
 #include <vigen/problems.h>
+#include "wisdom_holman.h"
+#include "wisdom_holman_corrected.h"
+#include "saba_2.h"
+#include "saba_3.h"
+#include "saba_4.h"
+#include "saba_10_6_4.h"
 
 enum { N = 6, D = 3 * N, OUTPUTS = 100 };
 
@@ -40,6 +48,8 @@ static double now(void)
 }
 
 static double x0[D], v0[D];
+
+/* ---- REBOUND's WHFast ---------------------------------------------------- */
 
 static struct reb_simulation *rebound_new(double h, int corrector)
 {
@@ -87,69 +97,119 @@ static double rebound_time(double h, int corrector, long nsteps)
     return t;
 }
 
-/* The drift-kick-drift loop of n steps, drifts merged: K(h/2) [I(h) K(h)]^(n-1)
- * I(h) K(h/2). */
-static int vigen_steps(vigen_nbody *sys, double h, long n, double *q, double *p)
-{
-    int st = vigen_nbody_jacobi_kepler(0, h / 2, q, p, sys);
-    for (long k = 0; k < n - 1 && st == VIGEN_SUCCESS; k++) {
-        st = vigen_nbody_jacobi_interaction(0, h, q, p, sys);
-        if (st == VIGEN_SUCCESS) st = vigen_nbody_jacobi_kepler(0, h, q, p, sys);
-    }
-    if (st == VIGEN_SUCCESS) st = vigen_nbody_jacobi_interaction(0, h, q, p, sys);
-    if (st == VIGEN_SUCCESS) st = vigen_nbody_jacobi_kepler(0, h / 2, q, p, sys);
-    return st;
-}
+/* ---- vigen's emitted steppers --------------------------------------------- */
 
-static vigen_nbody *vigen_start(double h, int corrector, double *q, double *p)
-{
+/* One emitted stepper behind uniform signatures; kernel is the kernel the
+ * runtime's correctors are applied for (the emitted wisdom_holman is
+ * kick-drift-kick). */
+typedef struct {
+    const char *name;
+    void *(*alloc)(const vigen_split_problem *sp);
+    int (*step)(void *w, double *t, double *q, double *p, double h);
+    void (*free)(void *w);
+} method;
+
+#define EMITTED(NAME)                                                                                         \
+    static void *NAME##_alloc_(const vigen_split_problem *sp) { return NAME##_alloc_split(sp, NULL); }      \
+    static int NAME##_step_(void *w, double *t, double *q, double *p, double h)                              \
+    {                                                                                                         \
+        return NAME##_step(w, t, q, p, h);                                                                    \
+    }                                                                                                         \
+    static void NAME##_free_(void *w) { NAME##_free(w); }
+EMITTED(wisdom_holman)
+EMITTED(wisdom_holman_corrected)
+EMITTED(saba_2)
+EMITTED(saba_3)
+EMITTED(saba_4)
+EMITTED(saba_10_6_4)
+#define METHOD(NAME) { #NAME, NAME##_alloc_, NAME##_step_, NAME##_free_ }
+static const method methods[] = { METHOD(wisdom_holman), METHOD(saba_2), METHOD(saba_3), METHOD(saba_4),
+                                  METHOD(saba_10_6_4), METHOD(wisdom_holman_corrected) };
+
+typedef struct {
     vigen_nbody *sys;
-    if (vigen_nbody_alloc(&sys, N, G, mass) != VIGEN_SUCCESS) exit(1);
+    vigen_split_problem sp;
+    void *w;
+    double t;
+} run;
+
+static int run_start(run *r, const method *m, double h, int corrector, double *q, double *p)
+{
+    if (vigen_nbody_alloc(&r->sys, N, G, mass) != VIGEN_SUCCESS) exit(1);
+    if (vigen_nbody_split(r->sys, VIGEN_NBODY_JACOBI, &r->sp) != VIGEN_SUCCESS) exit(1);
+    r->w = m->alloc(&r->sp);
+    if (!r->w) exit(1);
+    r->t = 0;
     double pm[D];
     for (int k = 0; k < D; k++) pm[k] = mass[k / 3] * v0[k];
-    vigen_nbody_to_jacobi(sys, x0, pm, q, p);
-    if (corrector) vigen_nbody_corrector_apply(sys, VIGEN_NBODY_KERNEL_DKD, corrector, h, q, p, -1);
-    return sys;
+    vigen_nbody_to_jacobi(r->sys, x0, pm, q, p);
+    if (corrector)
+        return vigen_nbody_corrector_apply(r->sys, VIGEN_NBODY_KERNEL_KDK, corrector, h, q, p, -1);
+    return VIGEN_SUCCESS;
 }
 
-static double vigen_energy_out(vigen_nbody *sys, double h, int corrector, const double *q, const double *p)
+static void run_free(run *r, const method *m)
+{
+    m->free(r->w);
+    vigen_nbody_free(r->sys);
+}
+
+static int run_steps(run *r, const method *m, double h, long n, double *q, double *p)
+{
+    for (long k = 0; k < n; k++) {
+        int st = m->step(r->w, &r->t, q, p, h);
+        if (st != VIGEN_SUCCESS) return st;
+    }
+    return VIGEN_SUCCESS;
+}
+
+/* The energy of the true state: the corrector applied to a copy. */
+static double run_energy(run *r, double h, int corrector, const double *q, const double *p)
 {
     double qo[D], po[D], x[D], pm[D];
     memcpy(qo, q, sizeof qo);
     memcpy(po, p, sizeof po);
-    if (corrector) vigen_nbody_corrector_apply(sys, VIGEN_NBODY_KERNEL_DKD, corrector, h, qo, po, 1);
-    vigen_nbody_from_jacobi(sys, qo, po, x, pm);
-    return vigen_nbody_energy(sys, x, pm);
+    if (corrector && vigen_nbody_corrector_apply(r->sys, VIGEN_NBODY_KERNEL_KDK, corrector, h, qo, po, 1))
+        return NAN;
+    vigen_nbody_from_jacobi(r->sys, qo, po, x, pm);
+    return vigen_nbody_energy(r->sys, x, pm);
 }
 
-static double vigen_error(double h, int corrector, long nsteps)
+static double vigen_error(const method *m, double h, int corrector, long nsteps)
 {
     double q[D], p[D], pm[D], worst = 0;
     for (int k = 0; k < D; k++) pm[k] = mass[k / 3] * v0[k];
-    vigen_nbody *sys = vigen_start(h, corrector, q, p);
-    double E0 = vigen_nbody_energy(sys, x0, pm);
-    for (int k = 0; k < OUTPUTS; k++) {
-        if (vigen_steps(sys, h, nsteps / OUTPUTS, q, p) != VIGEN_SUCCESS) return INFINITY;
-        double e = fabs(vigen_energy_out(sys, h, corrector, q, p) / E0 - 1);
-        if (e > worst) worst = e;
+    run r;
+    if (run_start(&r, m, h, corrector, q, p) != VIGEN_SUCCESS) worst = INFINITY;
+    double E0 = vigen_nbody_energy(r.sys, x0, pm);
+    for (int k = 0; k < OUTPUTS && worst < INFINITY; k++) {
+        if (run_steps(&r, m, h, nsteps / OUTPUTS, q, p) != VIGEN_SUCCESS) {
+            worst = INFINITY;
+            break;
+        }
+        double e = fabs(run_energy(&r, h, corrector, q, p) / E0 - 1);
+        if (!(e <= worst)) worst = isnan(e) ? INFINITY : e;
     }
-    vigen_nbody_free(sys);
+    run_free(&r, m);
     return worst;
 }
 
 static volatile double sink;
 
-static double vigen_time(double h, int corrector, long nsteps)
+static double vigen_time(const method *m, double h, int corrector, long nsteps)
 {
     double q[D], p[D];
+    run r;
     double t0 = now();
-    vigen_nbody *sys = vigen_start(h, corrector, q, p);
-    vigen_steps(sys, h, nsteps, q, p);
-    sink = vigen_energy_out(sys, h, corrector, q, p);
+    run_start(&r, m, h, corrector, q, p);
+    run_steps(&r, m, h, nsteps, q, p);
+    sink = run_energy(&r, h, corrector, q, p);
     double t = now() - t0;
-    vigen_nbody_free(sys);
+    run_free(&r, m);
     return t;
 }
+
+/* ---- the table ------------------------------------------------------------ */
 
 static int cmp(const void *a, const void *b)
 {
@@ -157,22 +217,30 @@ static int cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-static void row(const char *name, int is_rebound, double h, int corrector, int repeats)
+/* nsteps steps of T_END / nsteps (a multiple of OUTPUTS); m NULL: WHFast */
+static void row(const method *m, long nsteps, int corrector, int repeats)
 {
-    long nsteps = (long)(T_END / h + 0.5);
-    nsteps -= nsteps % OUTPUTS;
-    double err = is_rebound ? rebound_error(h, corrector, nsteps) : vigen_error(h, corrector, nsteps);
+    double h = T_END / (double)nsteps;
+    double err = m ? vigen_error(m, h, corrector, nsteps) : rebound_error(h, corrector, nsteps);
     double t[32];
     for (int k = 0; k < repeats; k++)
-        t[k] = is_rebound ? rebound_time(h, corrector, nsteps) : vigen_time(h, corrector, nsteps);
+        t[k] = m ? vigen_time(m, h, corrector, nsteps) : rebound_time(h, corrector, nsteps);
     qsort(t, (size_t)repeats, sizeof t[0], cmp);
-    printf("%-10s %4d %8.3f %7ld %10.2e %9.3f %9.3f %7.0f\n", name, corrector, h, nsteps, err, 1e3 * t[0],
-           1e3 * t[repeats / 2], 1e9 * t[0] / nsteps);
+    printf("%-24s %4d %8.3f %7ld %10.2e %9.3f %9.3f %7.0f\n", m ? m->name : "whfast", corrector, h, nsteps, err,
+           1e3 * t[0], 1e3 * t[repeats / 2], 1e9 * t[0] / nsteps);
+    fflush(stdout);
+}
+
+static const method *method_find(const char *name)
+{
+    for (size_t k = 0; k < sizeof methods / sizeof methods[0]; k++)
+        if (strcmp(methods[k].name, name) == 0) return &methods[k];
+    return NULL;
 }
 
 int main(int argc, char **argv)
 {
-    /* "one whfast|vigen H CORRECTOR STEPS": one bare run, for counting
+    /* "one whfast|METHOD H CORRECTOR STEPS": one bare run, for counting
      * instructions under callgrind */
     int one = argc == 6 && strcmp(argv[1], "one") == 0;
     int repeats = argc > 1 && !one ? atoi(argv[1]) : 5;
@@ -208,16 +276,23 @@ int main(int argc, char **argv)
         double h = atof(argv[3]);
         int corrector = atoi(argv[4]);
         long nsteps = atol(argv[5]);
-        sink = strcmp(argv[2], "whfast") == 0 ? rebound_time(h, corrector, nsteps) : vigen_time(h, corrector, nsteps);
+        const method *m = method_find(argv[2]);
+        if (!m && strcmp(argv[2], "whfast") != 0) return 2;
+        sink = m ? vigen_time(m, h, corrector, nsteps) : rebound_time(h, corrector, nsteps);
         return 0;
     }
-    static const double steps[] = { 400, 200, 100, 50, 25, 12.5 };
+    static const long wh_steps[] = { 2500, 3000, 3500, 4000, 4500, 5000, 10000, 20000, 25000, 30000, 35000, 40000, 80000 };
+    static const long long_steps[] = { 500, 800, 1000, 1200, 1400, 1600, 1800, 2000, 2500, 4000, 5000, 10000, 20000 };
+    enum { NW = sizeof wh_steps / sizeof wh_steps[0], NL = sizeof long_steps / sizeof long_steps[0] };
     static const int correctors[] = { 0, 3, 11, 17 };
-    printf("# method  corr     h/d   steps  max|dE/E|  best/ms  median/ms  ns/step\n");
+    printf("# method                corr      h/d   steps  max|dE/E|   best/ms median/ms ns/step\n");
     for (size_t c = 0; c < sizeof correctors / sizeof correctors[0]; c++)
-        for (size_t s = 0; s < sizeof steps / sizeof steps[0]; s++) {
-            row("whfast", 1, steps[s], correctors[c], repeats);
-            row("vigen", 0, steps[s], correctors[c], repeats);
-        }
+        for (size_t s = 0; s < NW; s++) row(NULL, wh_steps[s], correctors[c], repeats);
+    /* the Wisdom-Holman kernel with the runtime's correctors (order 17 is
+     * order 11's to the digits shown, as for WHFast) */
+    for (int c = 0; c <= 11; c += c ? 8 : 3)
+        for (size_t s = 0; s < NW; s++) row(&methods[0], wh_steps[s], c, repeats);
+    for (size_t k = 1; k < sizeof methods / sizeof methods[0]; k++)
+        for (size_t s = 0; s < NL; s++) row(&methods[k], long_steps[s], 0, repeats);
     return 0;
 }
