@@ -14,7 +14,7 @@
 # (method, corrector order, step in days, steps, maximum relative energy
 # error over 100 outputs, best and median wall time of NBODY_REPEATS runs
 # (default 7), ns per step), then the instructions per step under callgrind
-# when valgrind is installed.  About ten minutes on 2 cores.  Not a test.
+# when valgrind is installed.  About a minute on 2 cores.  Not a test.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 REB=${1:-$SRC/bench/peers/rebound}
