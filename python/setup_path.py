@@ -46,15 +46,21 @@ def main():
     ap.add_argument("--site", help="write vigen.pth here instead of the interpreter's site-packages")
     args = ap.parse_args()
     lines = [os.path.abspath(args.package_parent)]
-    if not imports("numpy", "cffi") and os.path.isdir(DEBIAN_DIST_PACKAGES) \
-            and os.path.realpath(sys.executable) != os.path.realpath("/usr/bin/python3"):
-        lines.append(DEBIAN_DIST_PACKAGES)
     target = args.site or writable_site_dir()
     if target is None:
         print(f"setup_path: no site-packages of {sys.executable} is writable; "
               f"use PYTHONPATH={lines[0]}", file=sys.stderr)
         return 1
     pth = os.path.join(target, "vigen.pth")
+    # whether the interpreter imports numpy and cffi by itself: without a
+    # vigen.pth of an earlier run, which may name Debian's folder already
+    # (and a build tree since removed); a --site folder is read as the
+    # interpreter's site-packages would be
+    if os.path.exists(pth):
+        os.remove(pth)
+    if not imports("numpy", "cffi", path=[target] if args.site else None) and os.path.isdir(DEBIAN_DIST_PACKAGES) \
+            and os.path.realpath(sys.executable) != os.path.realpath("/usr/bin/python3"):
+        lines.append(DEBIAN_DIST_PACKAGES)
     tmp = pth + ".tmp"
     with open(tmp, "w", encoding="utf-8") as f:
         f.write("".join(line + "\n" for line in lines))
