@@ -38,7 +38,7 @@ with open("%s/design_methods_%s.dat" % (out, problem), "w") as f:
 PY
   if command -v gnuplot >/dev/null; then
     gnuplot <<GP
-set terminal pngcairo size 720,480
+set terminal pngcairo size 720,480 noenhanced
 set output "$OUT/design_methods_$problem.png"
 set logscale xy
 set xlabel "gradient evaluations"

@@ -118,6 +118,28 @@ for b in bad: print("FAIL:", b)
 sys.exit(1 if bad else 0)
 PY
 
+# the criterion fields refused when ill-posed: exit 2, one line naming the field
+refuse() {
+  printf '%s\n' "$2" > "$T/bad.lua"
+  "$VIGEN" design "$T/bad.lua" -o "$T" > "$T/bad.out" 2> "$T/bad.err"
+  rc=$?
+  { [ $rc = 2 ] && grep -q "$1" "$T/bad.err" && [ "$(wc -l < "$T/bad.err")" = 1 ]; } ||
+    bad "refusal '$1': exit $rc, $(cat "$T/bad.err")"
+}
+refuse "nearest: 2 values for the 7 unknowns" \
+  'return { name = "b", design = "splitting", stages = 6, order = 4, symmetric = true, nearest = { "0.1", "0.2" } }'
+refuse "nearest: entry 2, .0.2x., is not a decimal" \
+  'return { name = "b", design = "splitting", stages = 2, order = 2, nearest = { "0.1", "0.2x", "0", "0", "0" } }'
+refuse "first: only a splitting has a first substep" \
+  'return { name = "b", design = "composition", base = "stormer_verlet_position", stages = 5, order = 4, symmetric = true, stationary = "error_norm", first = "kick" }'
+refuse "stationary: must be \"error_norm\"" \
+  'return { name = "b", design = "splitting", stages = 2, order = 2, stationary = "smallest" }'
+refuse "leave no unknown free" \
+  'return { name = "b", design = "composition", base = "stormer_verlet_velocity", stages = 3, order = 4, symmetric = true, stationary = "error_norm" }'
+refuse "give one of them" \
+  'return { name = "b", design = "splitting", stages = 2, order = 2, stationary = "error_norm", solutions = "all" }'
+[ -z "$(ls "$T"/b_*.lua 2>/dev/null)" ] || bad "a refused design wrote files"
+
 # show (every format), emit and try without --allow-inexact
 methods="yoshida_4 yoshida_6 suzuki_4 forest_ruth_4 candy_rozmus_4 ruth_3 mclachlan_atela_2 mclachlan_atela_3
          blanes_moan_s6_4 blanes_moan_s10_6 mclachlan_rkn_4 optimal_s5_4 optimal_s6_4"
