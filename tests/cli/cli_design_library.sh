@@ -10,8 +10,10 @@
 # digits the design run finds (the exact member nearest the printed
 # coefficients), and the printed decimals agree with them except the last
 # digits docs/published.md lists as wrong; optimal_s6_4 holds the digits its
-# design run proves; Yoshida's printed w1, w2, w3
-# against the library's yoshida_6 likewise; every re-derived or new method of
+# design run proves; Yoshida's printed w1, w2, w3 against the library's
+# yoshida_6 likewise, and McLachlan's RKN method's 20 transcribed digits
+# against its closed forms; the criterion fields are refused when
+# ill-posed; every re-derived or new method of
 # the library is shown in every format, emitted and run without
 # --allow-inexact.
 set -u
@@ -113,6 +115,14 @@ w = {k: mpf(re.search(r'local %s = "([-0-9.]+)"' % k, text).group(1)) for k in (
 found = {k for k, p in (("w1", "-1.17767998417887"), ("w2", "0.235573213359357"), ("w3", "0.784513610477560"))
          if not rounds_to(w[k], p)}
 if found != {"w2", "w3"}: bad.append("yoshida_6: printed digits wrong: %s, docs say w2, w3" % sorted(found))
+
+# McLachlan (1995) as transcribed with 20 digits against the library's closed forms
+a1 = (1095 * sqrt(722025967665) - 229483763) / 1729961856
+a2 = (315354233 - 1081 * sqrt(722025967665)) / 2100667968
+text = open(P + "/mclachlan_rkn_4.lua").read()
+if "722025967665" not in text: bad.append("mclachlan_rkn_4: not the closed form")
+for name, printed, v in (("a1", "0.40518861839525227722", a1), ("a2", "-0.28714404081652408900", a2)):
+    if not rounds_to(v, printed): bad.append("mclachlan_rkn_4: printed %s = %s is not the rounding of %s" % (name, printed, v))
 
 for b in bad: print("FAIL:", b)
 sys.exit(1 if bad else 0)
