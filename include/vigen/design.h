@@ -37,6 +37,11 @@ typedef struct {
     int goal;                    /* VIGEN_DESIGN_ALL or VIGEN_DESIGN_MINIMIZE */
     char *minimize;              /* goal MINIMIZE: "error_constant" (general H), "error_constant_separable",
                                     "error_constant_nystrom": the checker's constant minimised */
+    char *stationary;            /* "error_norm": every stationary point of the principal error's
+                                    Lyndon norm on the family (design_criterion.c); else NULL */
+    char **nearest;              /* the member of the family nearest these decimals (one per unknown) */
+    slong nnearest;              /* their count (0: not asked) */
+    int first_kick;              /* splittings: first = "kick", the first drift is 0 */
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     unsigned long seed;          /* of the starts (default 1) */
 } vigen_design_spec;

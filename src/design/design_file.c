@@ -10,6 +10,7 @@
 #include "method/tableau_file.h"
 #include "support/strbuf.h"
 #include "support/nul.h"
+#include "design/design_criterion.h"
 
 #define DEFAULT_STARTS 2000L
 /* minimize: each start is a descent with a checker run per trial point */
@@ -72,13 +73,17 @@ void vigen_design_spec_clear(vigen_design_spec *d)
     free(d->family);
     free(d->base);
     free(d->minimize);
+    free(d->stationary);
+    for (slong i = 0; i < d->nnearest; i++) free(d->nearest[i]);
+    free(d->nearest);
     memset(d, 0, sizeof *d);
 }
 
 static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
 {
     static const char *const known[] = {"name", "design", "base", "stages", "order", "symmetric", "solutions",
-                                        "minimize", "starts", "seed", "description", NULL};
+                                        "minimize", "starts", "seed", "description", "stationary", "nearest",
+                                        "first", NULL};
     int rc = vigen_table_check_fields(L, known, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->name, L, "name", 1, path, err);
     if (rc == VIGEN_OK) {
@@ -114,10 +119,13 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
     char *solutions = NULL;
     if (rc == VIGEN_OK) rc = read_string(&solutions, L, "solutions", 0, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->minimize, L, "minimize", 0, path, err);
+    if (rc == VIGEN_OK) rc = design_file_read_criterion(d, L, splitting, path, err);
     if (rc == VIGEN_OK) {
-        if (solutions && d->minimize)
-            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: solutions and minimize: give one of them, not both", path);
-        else if (solutions == NULL && d->minimize == NULL)
+        int asked = (solutions != NULL) + (d->minimize != NULL) + (d->stationary != NULL) + (d->nnearest > 0);
+        if (asked > 1)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: solutions, minimize, stationary and nearest: give one of "
+                                 "them", path);
+        else if (asked == 0)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: what is wanted? give solutions = \"all\" or minimize = "
                                  "\"error_constant\"", path);
         else if (solutions && strcmp(solutions, "all") != 0)

@@ -32,6 +32,7 @@ typedef struct {
     design_poly *cond, *dcond;
     char **what;
     int *h_degree;
+    slong nmultipliers;          /* the last unknowns are Lagrange multipliers (design_criterion.c) */
 } design_system;
 
 void design_system_clear(design_system *sys);
@@ -116,5 +117,22 @@ int design_krawczyk_prove(arb_ptr box, const design_system *sys, const slong *ro
  * K(box) lies inside it, enclosure in out. */
 int design_krawczyk_test(arb_ptr out, const design_system *sys, const slong *rows, arb_srcptr mid, const mag_t rad,
                          slong prec);
+
+/* Optimality criteria as equations (design_criterion.c): out gets the
+ * Lagrange system of the objective of d (stationary or nearest) on the
+ * conditions rows[0..m-1] of sys (m < k), in the k unknowns and m
+ * multipliers, square; design_criterion_search finds its real roots (many
+ * starts, or for nearest Newton from the given point); design_criterion_replace
+ * puts that system in place of sys, every row of it in rows (*m of them). */
+int design_criterion_system(design_system *out, const design_system *sys, const slong *rows, slong m,
+                            const vigen_design_spec *d, int q, vigen_error *err);
+int design_criterion_replace(design_system *sys, slong **rows, slong *m, const vigen_design_spec *d, int q,
+                             vigen_error *err);
+/* 1 when a row of rows[0..m-1] is the pin x_j = 0: the root has x_j = 0
+ * exactly (a splitting whose first substep is a kick). */
+int design_pinned_zero(const design_system *sys, const slong *rows, slong m, slong j);
+char *design_criterion_how(const vigen_design_spec *d, slong nconditions);
+slong design_criterion_search(double **roots, const design_system *aug, const slong *rows, const vigen_design_spec *d,
+                              slong k, double box);
 
 #endif

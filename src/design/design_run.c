@@ -151,7 +151,9 @@ static void settle(vigen_design_solution *sol, const design_system *sys, const s
         mag_init(r);
         for (slong j = 0; j < k; j++) {
             mag_max(r, r, arb_radref(box + j));
-            sol->digits[j] = vigen_decimal_format(box + j, opt->digits);
+            if (j >= k - sys->nmultipliers) continue;     /* a Lagrange multiplier: not written */
+            sol->digits[j] = design_pinned_zero(sys, rows, m, j) ? vigen_strdup("0")
+                                                                 : vigen_decimal_format(box + j, opt->digits);
             if (sol->digits[j] == NULL) {
                 sol->proved = 0;
                 sol->why = vigen_strdup("not proved to the digits asked (the box is too wide)");
@@ -322,9 +324,16 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         res->condition_degree[i] = sys.h_degree[i];
     }
     slong *rows = malloc((size_t)(k + 1) * sizeof(slong));
+    if (d->first_kick) design_system_add_pin(&sys, design_family_value_unknown(d, 0));
     slong m = design_square_rows(rows, &sys, d->seed);
     res->nsquare = m;
-    if (m < k && d->goal == VIGEN_DESIGN_ALL) {
+    int criterion = d->stationary != NULL || d->nnearest > 0;
+    if (criterion && (rc = design_criterion_replace(&sys, &rows, &m, d, q, err)) == VIGEN_OK) {
+        k = sys.k;
+        res->nunknowns = k;
+    }
+    if (rc != VIGEN_OK) {
+    } else if (m < k && d->goal == VIGEN_DESIGN_ALL) {
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: solutions: the %ld conditions leave %ld of the %ld unknowns "
                              "free (a family, not finitely many solutions); ask minimize = \"error_constant\", a "
                              "higher order or fewer stages", d->path, (long)sys.n, (long)(k - m), (long)k);
@@ -334,7 +343,8 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         res->bezout = bezout_bound(&sys, rows, m);
         double *roots = NULL;
         res->starts = d->starts;
-        res->nfound = design_newton_search(&roots, &sys, rows, d->starts, d->seed, START_BOX);
+        res->nfound = criterion ? design_criterion_search(&roots, &sys, rows, d, design_family_unknowns(d), START_BOX)
+                                : design_newton_search(&roots, &sys, rows, d->starts, d->seed, START_BOX);
         res->complete = res->bezout > 0 && res->nfound == res->bezout;
         res->sol = calloc((size_t)(res->nfound + 1), sizeof *res->sol);
         res->nsol = res->nfound;
@@ -347,7 +357,7 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         free(roots);
         qsort(res->sol, (size_t)res->nsol, sizeof *res->sol, cmp_first);
         for (slong i = 0; i < res->nsol; i++) settle(&res->sol[i], &sys, rows, m, opt);
-        char *how = vigen_strdup_printf(
+        char *how = criterion ? design_criterion_how(d, res->nconditions) : vigen_strdup_printf(
             "the %ld order conditions (polynomials in the steps, from the BCH series of the method) solved by "
             "Newton from %ld random starts on a square subsystem of %ld, this root refined in arb and proved by the "
             "Krawczyk operator, the rest decided on its box and the file certified by the checker", (long)sys.n,

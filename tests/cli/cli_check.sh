@@ -266,8 +266,8 @@ run 1 "$work/eq4_2.lua"
 if grep -q "B(>=\|alone as an RK method: [5-9]" "$work/stdout"; then fail "2-digit equispaced4: $(cat "$work/stdout")"; fi
 grep_out "the data are too short to decide"
 
-# published tables given as rounded decimals (Blanes & Moan 2002, 13-16
-# digits, order 4 and 6; Yoshida 1990 recomputed to 50 digits, order 6): the
+# published tables given as rounded decimals (Blanes & Moan 2002 and Yoshida
+# 1990 with 40 to 50 certified digits, order 4 and 6): the
 # claims hold within the precision of the data with radii far below 2^-10 of
 # the terms, reported as such, exit 0
 for f in blanes_moan_s6_4:4 blanes_moan_s10_6:6 yoshida_6:6; do

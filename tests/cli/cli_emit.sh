@@ -52,9 +52,9 @@ check '! grep -q "correctly rounded" "$T/q.c" && grep -q "from the decimals as w
 check 'grep -q "g3_34.lua: --allow-inexact: rounded 24 entries to float128 (113 bits) from their decimals as written (c\[1\], c\[2\], c\[3\], A\[1\]\[1\], A\[1\]\[2\] and 19 more; and 25 coefficients computed from them).*only as good as these decimals" "$T/err.txt"' "--allow-inexact: the summary counts and names entries"
 check '[ "$(grep -o "b\[1\]" "$T/err.txt" | wc -l)" -le 1 ] && ! grep -q "rounding the value as written" "$T/err.txt"' "--allow-inexact: no entry twice, no per-entry warnings"
 check 'grep -q "vigen emit g3_34.lua --name q --real float128 --allow-inexact" "$T/q.c"' "--allow-inexact recorded in the header"
-"$VIGEN" emit "$SRC/tableaux/published/blanes_moan_s6_4.lua" --name bm -o "$T" -q 2>"$T/err.txt"
+"$VIGEN" emit "$SRC/tests/data/published_printed/blanes_moan_s6_4.lua" --name bm -o "$T" -q 2>"$T/err.txt"
 check '[ $? -eq 2 ] && grep -q "^vigen emit: .*blanes_moan_s6_4.lua: c\[1\] = 0.0792036964311957 is not known well enough to round it correctly to 53 bits (double): give the entry exactly .* or with 40 or more significant digits.*pass --allow-inexact" "$T/err.txt"' "16-digit tableau as double: refused with the same advice"
-"$VIGEN" emit "$SRC/tableaux/published/blanes_moan_s6_4.lua" --name bm -o "$T" -q --allow-inexact 2>"$T/err.txt"
+"$VIGEN" emit "$SRC/tests/data/published_printed/blanes_moan_s6_4.lua" --name bm -o "$T" -q --allow-inexact 2>"$T/err.txt"
 check '[ $? -eq 0 ] && [ "$(grep -c "allow-inexact" "$T/err.txt")" -eq 1 ] && [ "$(grep -c "warning" "$T/err.txt")" -eq 1 ]' "16-digit tableau, --allow-inexact: one warning"
 
 # A spec is generated on the fly (40 digits for double, 60 for float128):

@@ -24,10 +24,9 @@ check() { if ! eval "$1"; then echo "FAIL: $2"; fail=1; fi; }
 "$VIGEN" try blanes_moan_s6_4 blanes_moan_s10_6 yoshida_4 --problem kepler --time 20 --json > "$T/k.json" 2> "$T/k.err"
 rc=$?
 check '[ $rc -eq 0 ]' "try blanes_moan_s6_4 blanes_moan_s10_6 yoshida_4: exit $rc ($(cat "$T/k.err"))"
-check 'grep -q "blanes_moan_s6_4: a method of the library published with decimals too short" "$T/k.err"' \
-  "no warning that blanes_moan_s6_4 is taken with its published digits"
-check 'grep -q "blanes_moan_s10_6: a method of the library published with decimals too short" "$T/k.err"' \
-  "no warning that blanes_moan_s10_6 is taken with its published digits"
+# the library's Blanes-Moan methods hold 40 certified digits: no warning
+check '! grep -q "blanes_moan_s6_4: a method of the library" "$T/k.err"' "a warning for blanes_moan_s6_4 (40 digits)"
+check '! grep -q "blanes_moan_s10_6: a method of the library" "$T/k.err"' "a warning for blanes_moan_s10_6 (40 digits)"
 check '! grep -q "yoshida_4: a method of the library" "$T/k.err"' "a warning for yoshida_4, whose coefficients are exact"
 python3 - "$T/k.json" "$T/list.json" <<'PY' || fail=1
 import json, sys
@@ -50,8 +49,8 @@ for b in bad: print("FAIL:", b)
 sys.exit(1 if bad else 0)
 PY
 
-# the same decimals in the user's own file: refused, unless --allow-inexact
-cp "$SRC/tableaux/published/blanes_moan_s6_4.lua" "$T/mine.lua"
+# the printed 16-digit decimals in the user's own file: refused, unless --allow-inexact
+cp "$SRC/tests/data/published_printed/blanes_moan_s6_4.lua" "$T/mine.lua"
 "$VIGEN" try "$T/mine.lua" --problem kepler --time 5 > "$T/m.out" 2> "$T/m.err"
 rc=$?
 check '[ $rc -eq 2 ] && grep -q -- "--allow-inexact" "$T/m.err"' "a user's 16-digit file not refused (exit $rc)"

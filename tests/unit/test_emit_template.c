@@ -375,8 +375,9 @@ static void test_variant_choice(void)
               "rc %d: %s", u.rc, u.message);
     emitted_clear(&u);
     /* an error about the tableau names the file (16 digits as double) */
-    emitted i = emit_gauss2("tableaux/published/blanes_moan_s6_4.lua", NULL, NULL);
-    CHECK_MSG(i.rc == VIGEN_E_INEXACT && strncmp(i.message, "tableaux/published/blanes_moan_s6_4.lua: c[1]", 45) == 0 &&
+    emitted i = emit_gauss2("tests/data/published_printed/blanes_moan_s6_4.lua", NULL, NULL);
+    CHECK_MSG(i.rc == VIGEN_E_INEXACT &&
+                  strncmp(i.message, "tests/data/published_printed/blanes_moan_s6_4.lua: c[1]", 55) == 0 &&
                   !i.loaded,
               "rc %d: %s", i.rc, i.message);
     emitted_clear(&i);
