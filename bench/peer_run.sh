@@ -44,7 +44,7 @@ CXXFLAGS="-std=c++17 -O2 -Wall -Wextra -Wpedantic"
 INC=(-I"$SRC/runtime/include" -I"$SRC/runtime/problems" -I"$SRC/bench")
 
 # the runtime and the problem library, compiled once
-for f in "$SRC"/runtime/{core,drive,diagnostics,lagrangian,poincare}/*.c "$SRC"/runtime/problems/*.c; do
+for f in "$SRC"/runtime/{core,drive,diagnostics,lagrangian,poincare,nbody}/*.c "$SRC"/runtime/problems/*.c; do
     gcc $CFLAGS "${INC[@]}" -c "$f" -o "$OUT/obj/$(basename "${f%.c}").o"
 done
 # the steppers used through their callbacks (any dimension)

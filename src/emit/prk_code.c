@@ -352,8 +352,8 @@ static void explicit_ops(vigen_slot *L, const emit_explicit *X, const char *N, c
             break;
         default: {
             /* the new q (+) or p (-; + for mech) in place, compensated or
-             * not, the old value kept in qs (ps); nf: is it finite (the
-             * template's NAME_nf_add) */
+             * not, the old value kept in qs (ps); nf, nfc: is it finite
+             * (the template's NAME_nf_add; nfc sums the compensations) */
             int isq = op->op == XOP_UPDATE_Q;
             const char *x = isq ? "q" : "p";
             char sign = isq ? '+' : psign;
@@ -363,7 +363,7 @@ static void explicit_ops(vigen_slot *L, const emit_explicit *X, const char *N, c
             vigen_slot_line(L, "        const %s x = %s[k];", R, x);
             vigen_slot_line(L, "        %ss[k] = x;", x);
             vigen_slot_line(L, "        %s[k] = vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]);", x, SFX, arg, x, x);
-            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
+            vigen_slot_line(L, "        nfc += c%s[k];", x);
             vigen_slot_line(L, "    }");
             vigen_slot_line(L, "} else {");
             vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");

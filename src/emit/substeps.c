@@ -154,15 +154,20 @@ static void force(vigen_slot *L, const sub_target *T, const sub_coefs *U, slong 
 
 /* The final value of component k of x ("q" or "p"): its increment d over
  * the step added to the start value, compensated or not, the start value
- * kept in xs, finiteness folded in. */
+ * kept in xs, finiteness folded in (the scalar stepper: by the sum of the
+ * new compensations when compensated, see the template's NAME_nf_add). */
 static void commit(vigen_slot *L, const sub_target *T, const char *in, const char *x, const char *d)
 {
     vigen_slot_line(L, "%sconst %s x%s = %s[k];", in, T->R, x, x);
     vigen_slot_line(L, "%s%ss[k] = x%s;", in, x, x);
     vigen_slot_line(L, "%s%s[k] = kahan ? vigen_twosum_next%s(x%s, %s, c%s0[k], &c%s[k]) : x%s + %s;", in, x, T->SFX, x,
                     d, x, x, x, d);
-    if (T->batch) vigen_slot_line(L, "%snfl[j] = %s_nf_add(nfl[j], %s[k]);", in, T->N, x);
-    else vigen_slot_line(L, "%snf = %s_nf_add(nf, %s[k]);", in, T->N, x);
+    if (T->batch) {
+        vigen_slot_line(L, "%snfl[j] = %s_nf_add(nfl[j], %s[k]);", in, T->N, x);
+    } else {
+        vigen_slot_line(L, "%sif (kahan) nfc += c%s[k];", in, x);
+        vigen_slot_line(L, "%selse nf = %s_nf_add(nf, %s[k]);", in, T->N, x);
+    }
 }
 
 /* The step.  Each component's increments over the step, dq and dp, are

@@ -177,7 +177,12 @@ static inline int gauss2_moved(const gauss2_workspace *w, double t, const double
  * written, as x - x: 0 for a finite x, NaN for an infinite or NaN one (one
  * subtraction and one more operation per component, no second pass).  For
  * double the bits are OR-ed (a one-cycle chain: a floating-point sum would
- * make the update loops wait on the adder); 0 means finite. */
+ * make the update loops wait on the adder); 0 means finite.
+ * A compensated update tells it for one addition: the new compensation of
+ * s = x + d (vigen_twosum_next) is NaN when s is not finite (s - (s - x) is
+ * inf - inf) and otherwise finite and below half an ulp of s, so that the
+ * plain sum of a pass's compensations (nfc) cannot overflow and is finite
+ * exactly when every new component is; it is folded in once, at the end. */
 typedef uint64_t gauss2_nf;
 static inline gauss2_nf gauss2_nf_add(gauss2_nf a, double x) { return a | gauss2_bits(x - x); }
 
@@ -519,11 +524,14 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
+        double nfc = 0;   /* the sum of the new compensations (see gauss2_nf_add) */
         for (size_t k = 0; k < n; k++) {
             qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
+            nfc += cqn[k];
             pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
-            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
+            nfc += cpn[k];
         }
+        nf = gauss2_nf_add(nf, nfc);
         t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {

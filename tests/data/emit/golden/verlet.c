@@ -180,7 +180,12 @@ static inline int verlet_moved(const verlet_workspace *w, double t, const double
  * written, as x - x: 0 for a finite x, NaN for an infinite or NaN one (one
  * subtraction and one more operation per component, no second pass).  For
  * double the bits are OR-ed (a one-cycle chain: a floating-point sum would
- * make the update loops wait on the adder); 0 means finite. */
+ * make the update loops wait on the adder); 0 means finite.
+ * A compensated update tells it for one addition: the new compensation of
+ * s = x + d (vigen_twosum_next) is NaN when s is not finite (s - (s - x) is
+ * inf - inf) and otherwise finite and below half an ulp of s, so that the
+ * plain sum of a pass's compensations (nfc) cannot overflow and is finite
+ * exactly when every new component is; it is folded in once, at the end. */
 typedef uint64_t verlet_nf;
 static inline verlet_nf verlet_nf_add(verlet_nf a, double x) { return a | verlet_bits(x - x); }
 
@@ -518,11 +523,14 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
+        double nfc = 0;   /* the sum of the new compensations (see verlet_nf_add) */
         for (size_t k = 0; k < n; k++) {
             qn[k] = vigen_twosum_next(q[k], (0x1p-1 * h) * (F1[k] + F2[k]), cq[k], &cqn[k]);
+            nfc += cqn[k];
             pn[k] = vigen_twosum_next(p[k], -((0x1p-1 * h) * (G1[k] + G2[k])), cp[k], &cpn[k]);
-            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
+            nfc += cpn[k];
         }
+        nf = verlet_nf_add(nf, nfc);
         t1 = vigen_twosum_update(t0, h, &ct);
     } else {
         for (size_t k = 0; k < n; k++) {
@@ -746,6 +754,7 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     const double t0 = *t;
     double t1, ct = w->ct;
     verlet_nf nf = 0;   /* see verlet_nf_add */
+    double nfc = 0;     /* the sum of the new compensations (kahan), likewise */
     /* q and p are updated in place; their values at the start are kept in
      * qs, ps as they are overwritten (read there afterwards, and put back if
      * the new state is not finite); the compensation goes to cq, cp (w->cqn,
@@ -779,7 +788,7 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
                 const double x = q[k];
                 qs[k] = x;
                 q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-                nf = verlet_nf_add(nf, q[k]);
+                nfc += cq[k];
             }
         } else {
             for (size_t k = 0; k < n; k++) {
@@ -796,7 +805,7 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
                 const double x = p[k];
                 ps[k] = x;
                 p[k] = vigen_twosum_next(x, (0x1p-1 * h) * (X0[k] + X3[k]), cp0[k], &cp[k]);
-                nf = verlet_nf_add(nf, p[k]);
+                nfc += cp[k];
             }
         } else {
             for (size_t k = 0; k < n; k++) {
@@ -821,7 +830,7 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
                 const double x = q[k];
                 qs[k] = x;
                 q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-                nf = verlet_nf_add(nf, q[k]);
+                nfc += cq[k];
             }
         } else {
             for (size_t k = 0; k < n; k++) {
@@ -838,7 +847,7 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
                 const double x = p[k];
                 ps[k] = x;
                 p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
-                nf = verlet_nf_add(nf, p[k]);
+                nfc += cp[k];
             }
         } else {
             for (size_t k = 0; k < n; k++) {
@@ -849,7 +858,7 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
             }
         }
     }
-    if (verlet_nf_add(nf, t1) != 0) {
+    if (verlet_nf_add(verlet_nf_add(nf, nfc), t1) != 0) {
         memcpy(q, qs, n * sizeof(double));
         memcpy(p, ps, n * sizeof(double));
         w->stats.failed_steps++;
