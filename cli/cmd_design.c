@@ -14,12 +14,18 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
         printf("design %s: %d-stage %scomposition of %s (order %d), order %d\n", d->name, d->stages,
                d->symmetric ? "symmetric " : "", base, res->base_order, d->order);
         free(base);
+    } else if (d->processed) {
+        printf("design %s: processed: symmetric kernel with %d kicks (A drifts, B kicks) of effective order %d for "
+               "%s H, and its corrector\n", d->name, d->stages, d->order, d->nystrom ? "Nystrom" : "separable");
     } else {
-        printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for separable H\n", d->name,
-               d->symmetric ? "symmetric " : "", d->stages, d->order);
+        printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for %s H\n", d->name,
+               d->symmetric ? "symmetric " : "", d->stages, d->order, d->nystrom ? "Nystrom" : "separable");
     }
-    printf("conditions  %ld in %ld unknowns (coefficients of the Lyndon words of the BCH series):", (long)res->nconditions,
-           (long)res->nunknowns);
+    const char *what = d->processed ? "coefficients of the BCH series modulo [A+B, .]%s"
+                                    : "coefficients of the Lyndon words of the BCH series%s";
+    printf("conditions  %ld in %ld unknowns (", (long)res->nconditions, (long)res->nunknowns);
+    printf(what, d->nystrom ? " and [B,[B,[B,A]]] = 0" : "");
+    printf("):");
     for (slong i = 0; i < res->nconditions; i++) printf("%s [%s]", i ? "," : "", res->conditions[i]);
     printf("\n");
     if (res->minimized) {

@@ -31,12 +31,18 @@ enum { VIGEN_DESIGN_ALL = 0, VIGEN_DESIGN_MINIMIZE = 1 };
 typedef struct {
     char *path;                  /* the design file */
     char *name;                  /* the stem of the method files written */
-    char *family;                /* "composition" */
+    char *family;                /* "composition", "splitting", "rkn" or "processed" */
     char *base;                  /* the base method, a library name or a file, as written */
     int stages, order, symmetric;
+    int nystrom;                 /* the conditions for Nystrom H (T = p^2/2): "rkn", or processed with kernel "rkn" */
+    int processed;               /* "processed": a kernel of effective order `order` and its corrector */
     int goal;                    /* VIGEN_DESIGN_ALL or VIGEN_DESIGN_MINIMIZE */
     char *minimize;              /* goal MINIMIZE: "error_constant" (general H), "error_constant_separable",
                                     "error_constant_nystrom": the checker's constant minimised */
+    long nfix;                   /* `fix = { b1 = "-3/73", ... }`: unknowns held at exact rationals */
+    char **fix_name;             /* each one's name: a1, b2 (splittings: drifts, kicks), gamma3 (compositions) */
+    char **fix_value;            /* its value, a rational "p/q" */
+    long *fix_unknown;           /* its index among the unknowns of the family */
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     unsigned long seed;          /* of the starts (default 1) */
 } vigen_design_spec;

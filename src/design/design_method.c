@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "design/design_method.h"
+#include "design/design_internal.h"
 #include "vigen/check.h"
 #include "vigen/method.h"
 #include "support/file.h"
@@ -20,13 +21,18 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
                                slong count, char *const *values, const char *how, const int claims[3])
 {
     int splitting = d->base == NULL;
-    char *what = splitting ? vigen_strdup_printf("a %ssplitting with %d kicks", d->symmetric ? "symmetric " : "",
+    char *what = d->processed ? vigen_strdup_printf("a symmetric splitting with %d kicks of effective order %d%s "
+                                                    "processed by the corrector C (drift, kick, drift, kick, drift): "
+                                                    "one step is C, the kernel, C^-1", d->stages, d->order,
+                                                    d->nystrom ? " for Nystrom H" : "")
+               : splitting ? vigen_strdup_printf("a %ssplitting with %d kicks", d->symmetric ? "symmetric " : "",
                                                  d->stages)
                            : vigen_strdup_printf("a %d-stage %scomposition of %s", d->stages,
                                                  d->symmetric ? "symmetric " : "", base);
+    const char *family = !splitting ? "" : d->nystrom ? " for Nystrom H (T = p^2/2)" : " for separable H";
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
-    vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, splitting ? " for separable H" : "");
+    vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, family);
     vigen_strbuf_printf(&sb, "-- Found by vigen design from %s (solution %ld of %ld): %s\n", d->path, (long)index,
                         (long)count, how);
     vigen_strbuf_append(&sb, "-- Every digit is certified: the exact step lies within half a unit of the last digit.\n");
@@ -38,12 +44,20 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
     vigen_strbuf_printf(&sb, "  source = \"vigen design %s, solution %ld of %ld\",\n", d->path, (long)index,
                         (long)count);
     vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist by "
-                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, splitting ? " for separable H" : "");
+                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, family);
     if (splitting) {
         vigen_strbuf_append(&sb, "  splitting = {\n");
         for (int i = 0; i < 2 * d->stages + 1; i++)
             vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? "kick" : "drift", values[i]);
-        vigen_strbuf_append(&sb, "  },\n}\n");
+        vigen_strbuf_append(&sb, "  },\n");
+        if (d->processed) {
+            vigen_strbuf_append(&sb, "  corrector = {\n");
+            for (int i = 0; i < DESIGN_CORRECTOR_UNKNOWNS; i++)
+                vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? "kick" : "drift",
+                                    values[2 * d->stages + 1 + i]);
+            vigen_strbuf_append(&sb, "  },\n");
+        }
+        vigen_strbuf_append(&sb, "}\n");
     } else {
         vigen_strbuf_printf(&sb, "  composition = {\n    base = \"%s\",\n    gamma = {\n", base);
         for (int i = 0; i < d->stages; i++) vigen_strbuf_printf(&sb, "      \"%s\",\n", values[i]);
