@@ -485,7 +485,7 @@ int design_processed_conditions(design_system *sys, int kicks, unsigned mods, vi
     fmpq_mpoly_t mu;
     fmpq_mpoly_init(mu, ctx);
     fmpq_mpoly_scalar_mul_fmpq(mu, ek + bits_find(&w, mu_word, 3), scale, ctx);
-    /* the corrector drift y1, kick y2, drift y3, kick y4, drift y5 */
+    /* the corrector drift y1, kick y2, drift y3, kick y4, ... */
     factor *g = calloc(DESIGN_CORRECTOR_UNKNOWNS, sizeof *g);
     for (slong i = 0; i < DESIGN_CORRECTOR_UNKNOWNS; i++) {
         int letter = (int)(i % 2);
@@ -496,19 +496,40 @@ int design_processed_conditions(design_system *sys, int kicks, unsigned mods, vi
     static const int none[2] = {0, 0};
     elem ec = bch_log(&w, g, DESIGN_CORRECTOR_UNKNOWNS, none, 3, ctx);
     free(g);
-    /* log C = mu h^2 [A,B] + O(h^4): the word A B has coefficient 1 in
-     * [A,B] = AB - BA, every other Lyndon word of degree <= 3 coefficient 0 */
-    fmpq_mpoly_t m;
+    /* log C = t h (A + B) + mu h^2 [A,B] + (t/2) h^3 X3 + O(h^4), X3 the
+     * kernel's h^3 term (docs/design.md): the word A B has coefficient 1 in
+     * [A,B] = AB - BA.  t = DESIGN_CORRECTOR_T, not 0, so that no partial
+     * sum of the step C K C^-1 vanishes (the checker then decides its
+     * symplecticity on decimals) */
+    fmpq_mpoly_t m, one;
     fmpq_mpoly_init(m, ctx);
+    fmpq_mpoly_init(one, ctx);
+    fmpq_t t;
+    fmpq_init(t);
+    fmpq_set_si(t, DESIGN_CORRECTOR_T_NUM, DESIGN_CORRECTOR_T_DEN);
     for (slong i = 1; i < w.n; i++) {
         if (!is_lyndon(w.letters[i], w.len[i])) continue;
         fmpq_mpoly_set(m, ec + i, ctx);
-        if (w.len[i] == 2) fmpq_mpoly_sub(m, m, mu, ctx);
+        if (w.len[i] == 1) {
+            fmpq_mpoly_set_fmpq(one, t, ctx);
+            fmpq_mpoly_sub(m, m, one, ctx);
+        } else if (w.len[i] == 2) {
+            fmpq_mpoly_sub(m, m, mu, ctx);
+        } else {
+            fmpq_t half;
+            fmpq_init(half);
+            fmpq_div_2exp(half, t, 1);
+            fmpq_mpoly_scalar_mul_fmpq(one, ek + i, half, ctx);
+            fmpq_mpoly_sub(m, m, one, ctx);
+            fmpq_clear(half);
+        }
         char *word = word_text(&w, i);
         take(sys, m, vigen_strdup_printf("corrector %s", word), w.weight[i], ctx);
         free(word);
     }
     fmpq_mpoly_clear(m, ctx);
+    fmpq_mpoly_clear(one, ctx);
+    fmpq_clear(t);
     fmpq_mpoly_clear(mu, ctx);
     fmpq_clear(scale);
     elem_free(ek, &w, ctx);

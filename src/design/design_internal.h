@@ -85,12 +85,12 @@ typedef struct {
  * image of ad_(A+B), which a processor removes (effective order 4). */
 enum { DESIGN_MOD_NYSTROM = 1, DESIGN_MOD_PROCESSED = 2 };
 
-/* The highest degree of the conditions modulo a subspace (2^16 words). */
-#define DESIGN_QUOTIENT_MAX_DEGREE 16
+/* The highest degree of the conditions modulo a subspace (the orders design solves). */
+#define DESIGN_QUOTIENT_MAX_DEGREE 10
 
 /* The conditions of degrees 1..p (odd degrees only when symmetric) modulo
- * mods; VIGEN_E_USAGE beyond degree 16.  design_quotient_count: how many
- * (-1 beyond degree 16). */
+ * mods; VIGEN_E_USAGE beyond DESIGN_QUOTIENT_MAX_DEGREE.  design_quotient_count: how
+ * many (-1 beyond it). */
 int design_quotient_conditions(design_combos *out, int p, int symmetric, unsigned mods);
 slong design_quotient_count(int p, int symmetric, unsigned mods);
 void design_combos_clear(design_combos *c);
@@ -101,16 +101,22 @@ void design_combos_clear(design_combos *c);
 void design_quotient_processor(ulong *word, fmpq_t scale);
 
 /* The corrector written for a processed method: drift y1, kick y2, drift
- * y3, kick y4, drift y5. */
-#define DESIGN_CORRECTOR_UNKNOWNS 5
+ * y3, kick y4, drift y5, kick y6 (five conditions: y6 is held at a chosen
+ * binary fraction, design_processed.c). */
+#define DESIGN_CORRECTOR_UNKNOWNS 6
+#define DESIGN_CORRECTOR_CONDITIONS 5
+/* Its first-order part, t (A + B): t = 1/2 (any t serves; 0 would make
+ * partial sums of the step vanish). */
+#define DESIGN_CORRECTOR_T_NUM 1
+#define DESIGN_CORRECTOR_T_DEN 2
 
 /* A symmetric kernel of effective order 4 with its corrector
  * (design_conditions.c): in the kernel's unknowns x (the splitting's, first)
  * and the corrector's y (DESIGN_CORRECTOR_UNKNOWNS, after), the kernel's
  * conditions (as design_splitting_conditions with mods |
  * DESIGN_MOD_PROCESSED, order 4, the same rows in the same order) and then
- * the corrector's: log C = mu(x) h^2 [A,B] + O(h^4), so that C K C^-1 has
- * order 4 (docs/design.md). */
+ * the corrector's: log C = t h (A+B) + mu(x) h^2 [A,B] + (t/2) h^3 X3(x) +
+ * O(h^4), so that C K C^-1 has order 4 (docs/design.md). */
 int design_processed_conditions(design_system *sys, int kicks, unsigned mods, vigen_error *err);
 
 /* The family of d (design_family.c): 1 for the kick/drift families

@@ -3,9 +3,12 @@
  * A proved kernel K (design_quotient.c: its h^3 term is mu [A+B,[A,B]])
  * becomes a method of order 4 when conjugated, C K C^-1, by a corrector C
  * with log C = mu h^2 [A,B] + O(h^4) (docs/design.md).  The corrector written
- * is drift y1, kick y2, drift y3, kick y4, drift y5; its five conditions
- * (the Lyndon words A, B, AB, AAB, ABB of log C) depend on the kernel through
- * mu, a polynomial in the kernel's steps.  The kernel's square subsystem and
+ * is drift y1, kick y2, drift y3, kick y4, drift y5, kick y6; its five
+ * conditions (the Lyndon words A, B, AB, AAB, ABB of log C) depend on the
+ * kernel through mu, a polynomial in the kernel's steps.  Five substeps do
+ * not suffice (drift, kick, drift, kick, drift has no real solution: the
+ * conditions at h^3 fail), six leave one free: y6 is held at a binary
+ * fraction, exactly, tried from a short list until a corrector is found.  The kernel's square subsystem and
  * the corrector's conditions together are one square system in (x, y),
  * exact rational polynomials: Newton from the kernel's root with random y,
  * the smallest corrector found, and one Krawczyk proof of the whole, so
@@ -38,17 +41,31 @@ int design_corrector_find(char ***digits, char **radius, char **why, const vigen
     if (rc != VIGEN_OK) return -1;
     design_system_fix(&sys, d);                  /* as the kernel's rows were: the same row numbers */
     slong k = sys.k;
-    if (sys.n != kernel_rows + DESIGN_CORRECTOR_UNKNOWNS) {
+    if (sys.n != kernel_rows + DESIGN_CORRECTOR_CONDITIONS) {
         *why = vigen_strdup("no corrector: its conditions are degenerate");
         design_system_clear(&sys);
         return 0;
     }
     slong *rows2 = malloc((size_t)k * sizeof(slong));
     for (slong i = 0; i < kx; i++) rows2[i] = rows[i];
-    for (slong i = 0; i < DESIGN_CORRECTOR_UNKNOWNS; i++) rows2[kx + i] = kernel_rows + i;
+    for (slong i = 0; i < DESIGN_CORRECTOR_CONDITIONS; i++) rows2[kx + i] = kernel_rows + i;
+    rows2[k - 1] = design_system_add_pin(&sys, k - 1);
+    static const double last_kick[] = {0.5, -0.5, 0.25, -0.25, 1, -1, 0.125, -0.125};
     double *roots = NULL;
-    slong n = design_newton_search_anchored(&roots, &sys, rows2, CORRECTOR_STARTS, d->seed, CORRECTOR_BOX, x, kx);
-    slong best = -1;
+    slong n = 0, best = -1;
+    for (size_t t = 0; t < sizeof last_kick / sizeof *last_kick && n == 0; t++) {
+        free(roots);
+        roots = NULL;
+        design_system_set_pin(&sys, rows2[k - 1], last_kick[t]);
+        n = design_newton_search_anchored(&roots, &sys, rows2, CORRECTOR_STARTS, d->seed, CORRECTOR_BOX, x, kx);
+        for (slong r = 0; r < n; r++) {
+            double dist = 0;
+            for (slong j = 0; j < kx; j++) dist = fmax(dist, fabs(roots[r * k + j] - x[j]) / (1 + fabs(x[j])));
+            if (dist < SAME_KERNEL) best = -2;
+        }
+        if (best == -1) n = 0;
+    }
+    best = -1;
     double best_size = 0;
     for (slong r = 0; r < n; r++) {
         double dist = 0, size = 0;
@@ -58,8 +75,8 @@ int design_corrector_find(char ***digits, char **radius, char **why, const vigen
     }
     int found = 0;
     if (best < 0) {
-        *why = vigen_strdup_printf("no corrector found: Newton from %d starts found none for this kernel",
-                                   CORRECTOR_STARTS);
+        *why = vigen_strdup_printf("no corrector found: Newton from %d starts for each last kick tried found "
+                                   "none for this kernel", CORRECTOR_STARTS);
     } else {
         arb_ptr box = _arb_vec_init(k);
         slong prec = (slong)((double)ndigits * 3.33) + 96;

@@ -104,6 +104,42 @@ static void test_counts(void)
     design_system_clear(&sys);
 }
 
+/* The conditions for Nystrom H (T = p^2/2, V(q)): the free Lie algebra on
+ * A, B modulo the ideal of [B,[B,[B,A]]] has dimensions 2, 1, 2, 2, 4, 5,
+ * 10, 14 in degrees 1..8, the numbers of RKN order conditions per order
+ * (McLachlan, SIAM J. Sci. Comput. 16 (1995) 151; Blanes & Moan, J. Comput.
+ * Appl. Math. 142 (2002) 313; Blanes & Casas, A Concise Introduction to
+ * Geometric Numerical Integration, sec. 3.4), against Witt's 2, 1, 2, 3, 6,
+ * 9, 18, 30 for separable H: symmetric order 4 asks 4 conditions of both,
+ * order 6 asks 8 against 10.  A kernel of effective order 4 asks dim Lie_3 -
+ * dim Lie_2 = 1 condition at h^3 instead of 2 (Blanes, Casas & Ros, SIAM J.
+ * Sci. Comput. 21 (1999) 711): 3 in all. */
+static void test_nystrom_counts(void)
+{
+    static const slong dim[] = {2, 1, 2, 2, 4, 5, 10, 14};
+    slong below = 0;
+    for (int p = 1; p <= 8; p++) {
+        slong n = design_quotient_count(p, 0, DESIGN_MOD_NYSTROM);
+        CHECK_MSG(n - below == dim[p - 1], "degree %d: %ld conditions, want %ld", p, (long)(n - below),
+                  (long)dim[p - 1]);
+        below = n;
+    }
+    CHECK(design_quotient_count(4, 1, DESIGN_MOD_NYSTROM) == 4 && design_splitting_count(1, 4) == 4);
+    CHECK(design_quotient_count(6, 1, DESIGN_MOD_NYSTROM) == 8 && design_splitting_count(1, 6) == 10);
+    CHECK(design_quotient_count(8, 1, DESIGN_MOD_NYSTROM) == 2 + 2 + 4 + 10);
+    CHECK(design_quotient_count(4, 1, DESIGN_MOD_PROCESSED) == 3);
+    CHECK(design_quotient_count(4, 1, DESIGN_MOD_PROCESSED | DESIGN_MOD_NYSTROM) == 3);
+    /* the plain quotient (mods 0) is the Lyndon count */
+    CHECK(design_quotient_count(6, 0, 0) == design_splitting_count(0, 6));
+    /* the polynomials agree with the count: 7 kicks, order 6 */
+    vigen_error err;
+    vigen_error_init(&err);
+    design_system sys;
+    CHECK(design_splitting_conditions(&sys, 7, 1, 6, DESIGN_MOD_NYSTROM, &err) == VIGEN_OK);
+    CHECK(sys.n == 8 && sys.k == 8);
+    design_system_clear(&sys);
+}
+
 static void run(vigen_design_result *res, const char *file, long digits)
 {
     vigen_error err;
@@ -283,6 +319,7 @@ int main(void)
     vigen_method_set_name_resolver(vigen_library_resolve);
     test_triple_jump_conditions();
     test_counts();
+    test_nystrom_counts();
     test_krawczyk_refuses();
     test_triple_jump();
     test_yoshida6();
