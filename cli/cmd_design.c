@@ -21,11 +21,10 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
         printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for %s H\n", d->name,
                d->symmetric ? "symmetric " : "", d->stages, d->order, d->nystrom ? "Nystrom" : "separable");
     }
-    const char *what = d->processed ? "coefficients of the BCH series modulo [A+B, .]%s"
-                                    : "coefficients of the Lyndon words of the BCH series%s";
-    printf("conditions  %ld in %ld unknowns (", (long)res->nconditions, (long)res->nunknowns);
-    printf(what, d->nystrom ? " and [B,[B,[B,A]]] = 0" : "");
-    printf("):");
+    printf("conditions  %ld in %ld unknowns (coefficients of the %sBCH series%s%s%s):", (long)res->nconditions,
+           (long)res->nunknowns, d->processed || d->nystrom ? "" : "Lyndon words of the ",
+           d->processed || d->nystrom ? " modulo " : "", d->processed ? "[A+B, .]" : "",
+           d->nystrom ? (d->processed ? " and the relations of Nystrom H" : "the relations of Nystrom H") : "");
     for (slong i = 0; i < res->nconditions; i++) printf("%s [%s]", i ? "," : "", res->conditions[i]);
     printf("\n");
     if (res->minimized) {

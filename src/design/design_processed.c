@@ -5,10 +5,10 @@
  * with log C = mu h^2 [A,B] + O(h^4) (docs/design.md).  The corrector written
  * is drift y1, kick y2, drift y3, kick y4, drift y5, kick y6; its five
  * conditions (the Lyndon words A, B, AB, AAB, ABB of log C) depend on the
- * kernel through mu, a polynomial in the kernel's steps.  Five substeps do
- * not suffice (drift, kick, drift, kick, drift has no real solution: the
- * conditions at h^3 fail), six leave one free: y6 is held at a binary
- * fraction, exactly, tried from a short list until a corrector is found.  The kernel's square subsystem and
+ * kernel through mu, a polynomial in the kernel's steps.  Five substeps
+ * (drift, kick, drift, kick, drift) gave no real solution in a search, six
+ * leave one free: y6 is held at a binary fraction, exactly, tried from a
+ * short list until a corrector is found.  The kernel's square subsystem and
  * the corrector's conditions together are one square system in (x, y),
  * exact rational polynomials: Newton from the kernel's root with random y,
  * the smallest corrector found, and one Krawczyk proof of the whole, so
