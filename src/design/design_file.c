@@ -154,7 +154,8 @@ static int read_fix(vigen_design_spec *d, lua_State *L, const char *path, vigen_
         fmpq_t v;
         fmpq_init(v);
         const char *val = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
-        int ok = val && *val && strspn(val, "-0123456789/") == strlen(val) && fmpq_set_str(v, val, 10) == 0;
+        int ok = val && *val && strspn(val, "-0123456789/") == strlen(val) && fmpq_set_str(v, val, 10) == 0 &&
+                 !fmpz_is_zero(fmpq_denref(v));
         fmpq_clear(v);
         if (j < 0)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: fix: %s%s%s is not an unknown of this family (%s)", path,

@@ -69,10 +69,11 @@ int design_system_fix(design_system *sys, const vigen_design_spec *d)
     for (long i = d->nfix - 1; i >= 0; i--) {
         fmpq_t v;
         fmpq_init(v);
-        if (fmpq_set_str(v, d->fix_value[i], 10) != 0) {
+        if (fmpq_set_str(v, d->fix_value[i], 10) != 0 || fmpz_is_zero(fmpq_denref(v))) {
             fmpq_clear(v);
             return VIGEN_E_SPEC;
         }
+        fmpq_canonicalise(v);
         slong row = design_system_add_pin(sys, d->fix_unknown[i]);
         design_poly *p = &sys->cond[row];
         fmpq_neg(p->coef + 1, v);                  /* x_j - v, exactly */

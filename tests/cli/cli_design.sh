@@ -130,6 +130,7 @@ refuse rkn_typo "unknown field 'kernal'; did you mean 'kernel'" \
   'name = "x", design = "processed", kernal = "rkn", stages = 3, order = 4, symmetric = true, solutions = "all"'
 refuse rkn_fix_name "fix: 'c1' is not an unknown of this family" "$R, stages = 5, order = 4, fix = { c1 = \"1/2\" }"
 refuse rkn_fix_value "fix: b1: must be an exact rational" "$R, stages = 5, order = 4, fix = { b1 = \"0.5\" }"
+refuse rkn_fix_zero "fix: b1: must be an exact rational" "$R, stages = 5, order = 4, fix = { b1 = \"1/0\" }"
 refuse processed_order6 "order: the effective order of a processed kernel must be 4" \
   'name = "x", design = "processed", kernel = "rkn", stages = 3, order = 6, symmetric = true, solutions = "all"'
 refuse processed_nonsym "symmetric: a processed kernel must be symmetric" \

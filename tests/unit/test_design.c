@@ -108,8 +108,10 @@ static void test_counts(void)
 }
 
 /* The conditions for Nystrom H (T = p^2/2, V(q)): the free Lie algebra on
- * A, B modulo the ideal of [B,[B,[B,A]]] has dimensions 2, 1, 2, 2, 4, 5,
- * 10, 14 in degrees 1..8, the numbers of RKN order conditions per order
+ * A, B modulo the relations of T and V ([B,[B,[B,A]]] = 0 first, a new one
+ * at degree 8, where the ideal of [B,[B,[B,A]]] alone would leave 15) has
+ * dimensions 2, 1, 2, 2, 4, 5, 10, 14 in degrees 1..8, the numbers of RKN
+ * order conditions per order
  * (McLachlan, SIAM J. Sci. Comput. 16 (1995) 151; Blanes & Moan, J. Comput.
  * Appl. Math. 142 (2002) 313; Blanes & Casas, A Concise Introduction to
  * Geometric Numerical Integration, sec. 3.4), against Witt's 2, 1, 2, 3, 6,
