@@ -7,7 +7,10 @@
  *     stages = 7, order = 6, symmetric = true, solutions = "all" }
  * The composition S(gamma_s h) ... S(gamma_1 h) of a symmetric base method S
  * has the order conditions of docs/design.md (polynomials in the gammas with
- * rational coefficients, from the Baker-Campbell-Hausdorff series).  A
+ * rational coefficients, from the Baker-Campbell-Hausdorff series); kick/drift
+ * splittings have theirs for separable H ("splitting"), for Nystrom H ("rkn":
+ * modulo the relations of T = p^2/2), and as kernels of effective order 4
+ * with a corrector ("processed"); `fix` holds unknowns at rationals.  A
  * square subsystem of independent conditions is solved by many-start Newton
  * in double; each root is refined in arb and proved with the Krawczyk
  * operator (an exact root exists, unique, in a small box); the conditions
