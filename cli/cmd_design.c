@@ -14,12 +14,17 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
         printf("design %s: %d-stage %scomposition of %s (order %d), order %d\n", d->name, d->stages,
                d->symmetric ? "symmetric " : "", base, res->base_order, d->order);
         free(base);
+    } else if (d->processed) {
+        printf("design %s: processed: symmetric kernel with %d kicks (A drifts, B kicks) of effective order %d for "
+               "%s H, and its corrector\n", d->name, d->stages, d->order, d->nystrom ? "Nystrom" : "separable");
     } else {
-        printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for separable H\n", d->name,
-               d->symmetric ? "symmetric " : "", d->stages, d->order);
+        printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for %s H\n", d->name,
+               d->symmetric ? "symmetric " : "", d->stages, d->order, d->nystrom ? "Nystrom" : "separable");
     }
-    printf("conditions  %ld in %ld unknowns (coefficients of the Lyndon words of the BCH series):", (long)res->nconditions,
-           (long)res->nunknowns);
+    printf("conditions  %ld in %ld unknowns (coefficients of the %sBCH series%s%s%s):", (long)res->nconditions,
+           (long)res->nunknowns, d->processed || d->nystrom ? "" : "Lyndon words of the ",
+           d->processed || d->nystrom ? " modulo " : "", d->processed ? "[A+B, .]" : "",
+           d->nystrom ? (d->processed ? " and the relations of Nystrom H" : "the relations of Nystrom H") : "");
     for (slong i = 0; i < res->nconditions; i++) printf("%s [%s]", i ? "," : "", res->conditions[i]);
     printf("\n");
     if (res->minimized) {

@@ -7,7 +7,10 @@
  *     stages = 7, order = 6, symmetric = true, solutions = "all" }
  * The composition S(gamma_s h) ... S(gamma_1 h) of a symmetric base method S
  * has the order conditions of docs/design.md (polynomials in the gammas with
- * rational coefficients, from the Baker-Campbell-Hausdorff series).  A
+ * rational coefficients, from the Baker-Campbell-Hausdorff series); kick/drift
+ * splittings have theirs for separable H ("splitting"), for Nystrom H ("rkn":
+ * modulo the relations of T = p^2/2), and as kernels of effective order 4
+ * with a corrector ("processed"); `fix` holds unknowns at rationals.  A
  * square subsystem of independent conditions is solved by many-start Newton
  * in double; each root is refined in arb and proved with the Krawczyk
  * operator (an exact root exists, unique, in a small box); the conditions
@@ -31,9 +34,11 @@ enum { VIGEN_DESIGN_ALL = 0, VIGEN_DESIGN_MINIMIZE = 1 };
 typedef struct {
     char *path;                  /* the design file */
     char *name;                  /* the stem of the method files written */
-    char *family;                /* "composition" */
+    char *family;                /* "composition", "splitting", "rkn" or "processed" */
     char *base;                  /* the base method, a library name or a file, as written */
     int stages, order, symmetric;
+    int nystrom;                 /* the conditions for Nystrom H (T = p^2/2): "rkn", or processed with kernel "rkn" */
+    int processed;               /* "processed": a kernel of effective order `order` and its corrector */
     int goal;                    /* VIGEN_DESIGN_ALL or VIGEN_DESIGN_MINIMIZE */
     char *minimize;              /* goal MINIMIZE: "error_constant" (general H), "error_constant_separable",
                                     "error_constant_nystrom": the checker's constant minimised */
@@ -42,6 +47,10 @@ typedef struct {
     char **nearest;              /* the member of the family nearest these decimals (one per unknown) */
     slong nnearest;              /* their count (0: not asked) */
     int first_kick;              /* splittings: first = "kick", the first drift is 0 */
+    long nfix;                   /* `fix = { b1 = "-3/73", ... }`: unknowns held at exact rationals */
+    char **fix_name;             /* each one's name: a1, b2 (splittings: drifts, kicks), gamma3 (compositions) */
+    char **fix_value;            /* its value, a rational "p/q" */
+    long *fix_unknown;           /* its index among the unknowns of the family */
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     unsigned long seed;          /* of the starts (default 1) */
 } vigen_design_spec;

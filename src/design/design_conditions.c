@@ -270,69 +270,125 @@ static char *word_text(const words *w, slong i)
 typedef struct {
     slong var[MAX_LETTERS];
     int pow[MAX_LETTERS];
+    int neg;                     /* the factor's steps negated (an inverse's substep) */
 } factor;
 
-/* The conditions of the product of the factors (applied in order) against
- * the target sum of the letters target[a] = 1: the Lyndon coefficients of the
- * logarithm minus the target's, those identically zero dropped. */
+/* The logarithm of the product of the factors (applied in order), in the
+ * words w of weight <= p: *e, one polynomial in k unknowns per word, with the
+ * target subtracted (the letters a with target[a] = 1, each minus 1). */
+static elem bch_log(const words *w, const factor *f, slong nf, const int *target, int p, const fmpq_mpoly_ctx_t ctx)
+{
+    elem prod = elem_new(w, ctx), x = elem_new(w, ctx), e = elem_new(w, ctx), t = elem_new(w, ctx);
+    fmpq_mpoly_one(prod + 0, ctx);
+    for (slong i = 0; i < nf; i++) {
+        for (slong j = 0; j < w->n; j++) fmpq_mpoly_zero(x + j, ctx);
+        for (int a = 0; a < w->nletters; a++) {
+            int one[1] = {a};
+            slong at = word_find(w, one, 1);
+            if (at < 0 || f[i].var[a] < 0) continue;
+            fmpq_mpoly_gen(x + at, f[i].var[a], ctx);
+            fmpq_mpoly_pow_ui(x + at, x + at, (ulong)f[i].pow[a], ctx);
+            if (f[i].neg) fmpq_mpoly_neg(x + at, x + at, ctx);
+        }
+        elem_series(e, x, 0, p, w, ctx);
+        elem_mul(t, prod, e, w, ctx);
+        elem s = prod;
+        prod = t;
+        t = s;
+    }
+    fmpq_mpoly_zero(prod + 0, ctx);   /* log(1 + Z) with Z = prod - 1 */
+    elem_series(e, prod, 1, p, w, ctx);
+    fmpq_mpoly_t one;
+    fmpq_mpoly_init(one, ctx);
+    fmpq_mpoly_one(one, ctx);
+    for (int a = 0; a < w->nletters; a++) {
+        int l[1] = {a};
+        slong at = word_find(w, l, 1);
+        if (at >= 0 && target[a]) fmpq_mpoly_sub(e + at, e + at, one, ctx);
+    }
+    fmpq_mpoly_clear(one, ctx);
+    elem_free(prod, w, ctx);
+    elem_free(x, w, ctx);
+    elem_free(t, w, ctx);
+    return e;
+}
+
+/* The word of w that the bit word b of degree d is (design_combo), or -1. */
+static slong bits_find(const words *w, ulong b, int d)
+{
+    int l[DESIGN_WORD_MAX];
+    for (int j = 0; j < d; j++) l[j] = (int)((b >> (d - 1 - j)) & 1);
+    return word_find(w, l, d);
+}
+
+/* Appends the condition m = 0 (what, of h-degree deg) to sys, unless m is
+ * identically zero. */
+static void take(design_system *sys, const fmpq_mpoly_t m, char *what, int deg, const fmpq_mpoly_ctx_t ctx)
+{
+    if (fmpq_mpoly_is_zero(m, ctx)) {
+        free(what);
+        return;
+    }
+    slong n = sys->n++, k = sys->k;
+    sys->cond = realloc(sys->cond, (size_t)sys->n * sizeof(design_poly));
+    sys->dcond = realloc(sys->dcond, (size_t)(sys->n * k) * sizeof(design_poly));
+    sys->what = realloc(sys->what, (size_t)sys->n * sizeof(char *));
+    sys->h_degree = realloc(sys->h_degree, (size_t)sys->n * sizeof(int));
+    poly_from_mpoly(&sys->cond[n], m, k, ctx);
+    fmpq_mpoly_t dm;
+    fmpq_mpoly_init(dm, ctx);
+    for (slong j = 0; j < k; j++) {
+        fmpq_mpoly_derivative(dm, m, j, ctx);
+        poly_from_mpoly(&sys->dcond[n * k + j], dm, k, ctx);
+    }
+    fmpq_mpoly_clear(dm, ctx);
+    sys->what[n] = what;
+    sys->h_degree[n] = deg;
+}
+
+/* The combination of combo c of the coefficients in e into m. */
+static void combo_eval(fmpq_mpoly_t m, const design_combo *c, const elem e, const words *w, const fmpq_mpoly_ctx_t ctx)
+{
+    fmpq_mpoly_t t;
+    fmpq_mpoly_init(t, ctx);
+    fmpq_mpoly_zero(m, ctx);
+    for (slong i = 0; i < c->nterms; i++) {
+        slong at = bits_find(w, c->word[i], c->degree);
+        if (at < 0) continue;
+        fmpq_mpoly_scalar_mul_fmpq(t, e + at, c->coef + i, ctx);
+        fmpq_mpoly_add(m, m, t, ctx);
+    }
+    fmpq_mpoly_clear(t, ctx);
+}
+
+/* The conditions of the product of the factors against the target sum of
+ * the letters target[a] = 1, in k unknowns, appended to sys: the Lyndon
+ * coefficients of the logarithm (combos NULL), or the combinations of
+ * combos; those identically zero dropped. */
 static int build(design_system *sys, const int *letter_weight, int nletters, int named, const factor *f, slong nf,
-                 const int *target, slong k, int p)
+                 const int *target, slong k, int p, const design_combos *combos)
 {
     words w;
     words_init(&w, letter_weight, nletters, p, 1);
     w.named = named;
     fmpq_mpoly_ctx_t ctx;
     fmpq_mpoly_ctx_init(ctx, k, ORD_LEX);
-    elem prod = elem_new(&w, ctx), x = elem_new(&w, ctx), e = elem_new(&w, ctx), t = elem_new(&w, ctx);
-    fmpq_mpoly_one(prod + 0, ctx);
-    for (slong i = 0; i < nf; i++) {
-        for (slong j = 0; j < w.n; j++) fmpq_mpoly_zero(x + j, ctx);
-        for (int a = 0; a < w.nletters; a++) {
-            int one[1] = {a};
-            slong at = word_find(&w, one, 1);
-            if (at < 0 || f[i].var[a] < 0) continue;
-            fmpq_mpoly_gen(x + at, f[i].var[a], ctx);
-            fmpq_mpoly_pow_ui(x + at, x + at, (ulong)f[i].pow[a], ctx);
-        }
-        elem_series(e, x, 0, p, &w, ctx);
-        elem_mul(t, prod, e, &w, ctx);
-        elem s = prod;
-        prod = t;
-        t = s;
-    }
-    fmpq_mpoly_zero(prod + 0, ctx);   /* log(1 + Z) with Z = prod - 1 */
-    elem_series(e, prod, 1, p, &w, ctx);
-    fmpq_mpoly_t one, dm;
-    fmpq_mpoly_init(one, ctx);
-    fmpq_mpoly_init(dm, ctx);
-    fmpq_mpoly_one(one, ctx);
-    for (int a = 0; a < w.nletters; a++) {
-        int l[1] = {a};
-        slong at = word_find(&w, l, 1);
-        if (at >= 0 && target[a]) fmpq_mpoly_sub(e + at, e + at, one, ctx);
-    }
+    elem e = bch_log(&w, f, nf, target, p, ctx);
     sys->k = k;
-    sys->cond = calloc((size_t)w.n, sizeof(design_poly));
-    sys->dcond = calloc((size_t)(w.n * k), sizeof(design_poly));
-    sys->what = calloc((size_t)w.n, sizeof(char *));
-    sys->h_degree = calloc((size_t)w.n, sizeof(int));
-    for (slong i = 1; i < w.n; i++) {
-        if (!is_lyndon(w.letters[i], w.len[i]) || fmpq_mpoly_is_zero(e + i, ctx)) continue;
-        slong n = sys->n++;
-        poly_from_mpoly(&sys->cond[n], e + i, k, ctx);
-        for (slong j = 0; j < k; j++) {
-            fmpq_mpoly_derivative(dm, e + i, j, ctx);
-            poly_from_mpoly(&sys->dcond[n * k + j], dm, k, ctx);
+    if (combos == NULL) {
+        for (slong i = 1; i < w.n; i++)
+            if (is_lyndon(w.letters[i], w.len[i])) take(sys, e + i, word_text(&w, i), w.weight[i], ctx);
+    } else {
+        fmpq_mpoly_t m;
+        fmpq_mpoly_init(m, ctx);
+        for (slong i = 0; i < combos->n; i++) {
+            combo_eval(m, &combos->c[i], e, &w, ctx);
+            take(sys, m, word_text(&w, bits_find(&w, combos->c[i].word[0], combos->c[i].degree)),
+                 combos->c[i].degree, ctx);
         }
-        sys->what[n] = word_text(&w, i);
-        sys->h_degree[n] = w.weight[i];
+        fmpq_mpoly_clear(m, ctx);
     }
-    fmpq_mpoly_clear(one, ctx);
-    fmpq_mpoly_clear(dm, ctx);
-    elem_free(prod, &w, ctx);
-    elem_free(x, &w, ctx);
     elem_free(e, &w, ctx);
-    elem_free(t, &w, ctx);
     fmpq_mpoly_ctx_clear(ctx);
     words_clear(&w);
     return VIGEN_OK;
@@ -352,7 +408,7 @@ int design_composition_conditions(design_system *sys, int stages, int symmetric,
             f[i].var[a] = design_stage_unknown(i, stages, symmetric);
             f[i].pow[a] = weight[a];
         }
-    int rc = build(sys, weight, nletters, 0, f, stages, target, symmetric ? (stages + 1) / 2 : stages, p);
+    int rc = build(sys, weight, nletters, 0, f, stages, target, symmetric ? (stages + 1) / 2 : stages, p, NULL);
     free(f);
     return rc;
 }
@@ -370,12 +426,9 @@ slong design_substep_unknown(slong i, int kicks, int symmetric)
     return i % 2 == 0 ? i / 2 : drifts + i / 2;
 }
 
-int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, vigen_error *err)
+/* The factors of the splitting drift, kick, ..., drift with kicks kicks. */
+static factor *splitting_factors(int kicks, int symmetric)
 {
-    memset(sys, 0, sizeof *sys);
-    if (p > VIGEN_DESIGN_MAX_ORDER || p < 1)
-        return vigen_error_set(err, VIGEN_E_USAGE, "order %d is outside what design handles", p);
-    static const int weight[2] = {1, 1}, target[2] = {1, 1};
     slong n = 2 * kicks + 1;
     factor *f = calloc((size_t)n, sizeof *f);
     for (slong i = 0; i < n; i++) {
@@ -384,7 +437,104 @@ int design_splitting_conditions(design_system *sys, int kicks, int symmetric, in
         f[i].var[1 - letter] = -1;
         f[i].pow[letter] = 1;
     }
-    int rc = build(sys, weight, 2, 1, f, n, target, design_splitting_unknowns(kicks, symmetric), p);
+    return f;
+}
+
+static const int split_weight[2] = {1, 1}, split_target[2] = {1, 1};
+
+/* The conditions of the splitting in nvars unknowns (its own first). */
+static int splitting_build(design_system *sys, int kicks, int symmetric, int p, unsigned mods, slong nvars,
+                           vigen_error *err)
+{
+    memset(sys, 0, sizeof *sys);
+    if (p > VIGEN_DESIGN_MAX_ORDER || p < 1)
+        return vigen_error_set(err, VIGEN_E_USAGE, "order %d is outside what design handles", p);
+    design_combos combos;
+    if (mods && design_quotient_conditions(&combos, p, symmetric, mods) != VIGEN_OK)
+        return vigen_error_set(err, VIGEN_E_USAGE, "order %d is outside what design handles", p);
+    factor *f = splitting_factors(kicks, symmetric);
+    int rc = build(sys, split_weight, 2, 1, f, 2 * kicks + 1, split_target, nvars, p, mods ? &combos : NULL);
     free(f);
+    if (mods) design_combos_clear(&combos);
     return rc;
+}
+
+int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, unsigned mods, vigen_error *err)
+{
+    return splitting_build(sys, kicks, symmetric, p, mods, design_splitting_unknowns(kicks, symmetric), err);
+}
+
+int design_processed_conditions(design_system *sys, int kicks, unsigned mods, vigen_error *err)
+{
+    slong kx = design_splitting_unknowns(kicks, 1), k = kx + DESIGN_CORRECTOR_UNKNOWNS;
+    int rc = splitting_build(sys, kicks, 1, 4, mods | DESIGN_MOD_PROCESSED, k, err);
+    if (rc != VIGEN_OK) return rc;
+    words w;
+    words_init(&w, split_weight, 2, 3, 1);
+    w.named = 1;
+    fmpq_mpoly_ctx_t ctx;
+    fmpq_mpoly_ctx_init(ctx, k, ORD_LEX);
+    /* mu: the kernel's h^3 term is mu [A+B,[A,B]] (its conditions hold) */
+    factor *f = splitting_factors(kicks, 1);
+    elem ek = bch_log(&w, f, 2 * kicks + 1, split_target, 3, ctx);
+    free(f);
+    ulong mu_word;
+    fmpq_t scale;
+    fmpq_init(scale);
+    design_quotient_processor(&mu_word, scale);
+    fmpq_mpoly_t mu;
+    fmpq_mpoly_init(mu, ctx);
+    fmpq_mpoly_scalar_mul_fmpq(mu, ek + bits_find(&w, mu_word, 3), scale, ctx);
+    /* the corrector drift y1, kick y2, drift y3, kick y4, ... */
+    factor *g = calloc(DESIGN_CORRECTOR_UNKNOWNS, sizeof *g);
+    for (slong i = 0; i < DESIGN_CORRECTOR_UNKNOWNS; i++) {
+        int letter = (int)(i % 2);
+        g[i].var[letter] = kx + i;
+        g[i].var[1 - letter] = -1;
+        g[i].pow[letter] = 1;
+    }
+    static const int none[2] = {0, 0};
+    elem ec = bch_log(&w, g, DESIGN_CORRECTOR_UNKNOWNS, none, 3, ctx);
+    free(g);
+    /* log C = t h (A + B) + mu h^2 [A,B] + (t/2) h^3 X3 + O(h^4), X3 the
+     * kernel's h^3 term (docs/design.md): the word A B has coefficient 1 in
+     * [A,B] = AB - BA.  t = DESIGN_CORRECTOR_T, not 0, so that no partial
+     * sum of the step C K C^-1 vanishes (the checker then decides its
+     * symplecticity on decimals) */
+    fmpq_mpoly_t m, one;
+    fmpq_mpoly_init(m, ctx);
+    fmpq_mpoly_init(one, ctx);
+    fmpq_t t;
+    fmpq_init(t);
+    fmpq_set_si(t, DESIGN_CORRECTOR_T_NUM, DESIGN_CORRECTOR_T_DEN);
+    for (slong i = 1; i < w.n; i++) {
+        if (!is_lyndon(w.letters[i], w.len[i])) continue;
+        fmpq_mpoly_set(m, ec + i, ctx);
+        if (w.len[i] == 1) {
+            fmpq_mpoly_set_fmpq(one, t, ctx);
+            fmpq_mpoly_sub(m, m, one, ctx);
+        } else if (w.len[i] == 2) {
+            fmpq_mpoly_sub(m, m, mu, ctx);
+        } else {
+            fmpq_t half;
+            fmpq_init(half);
+            fmpq_div_2exp(half, t, 1);
+            fmpq_mpoly_scalar_mul_fmpq(one, ek + i, half, ctx);
+            fmpq_mpoly_sub(m, m, one, ctx);
+            fmpq_clear(half);
+        }
+        char *word = word_text(&w, i);
+        take(sys, m, vigen_strdup_printf("corrector %s", word), w.weight[i], ctx);
+        free(word);
+    }
+    fmpq_mpoly_clear(m, ctx);
+    fmpq_mpoly_clear(one, ctx);
+    fmpq_clear(t);
+    fmpq_mpoly_clear(mu, ctx);
+    fmpq_clear(scale);
+    elem_free(ek, &w, ctx);
+    elem_free(ec, &w, ctx);
+    fmpq_mpoly_ctx_clear(ctx);
+    words_clear(&w);
+    return VIGEN_OK;
 }

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <lua.h>
+#include <flint/fmpq.h>
 #include "vigen/design.h"
 #include "vigen/limits.h"
 #include "lua/sandbox.h"
@@ -76,14 +77,124 @@ void vigen_design_spec_clear(vigen_design_spec *d)
     free(d->stationary);
     for (slong i = 0; i < d->nnearest; i++) free(d->nearest[i]);
     free(d->nearest);
+    for (long i = 0; i < d->nfix; i++) {
+        free(d->fix_name[i]);
+        free(d->fix_value[i]);
+    }
+    free(d->fix_name);
+    free(d->fix_value);
+    free(d->fix_unknown);
     memset(d, 0, sizeof *d);
+}
+
+/* rkn: Nystrom conditions; processed: the kernel's family ("splitting" or
+ * "rkn"), symmetric, effective order 4 (the conditions of higher effective
+ * orders are not linear in the Lie coefficients: docs/design.md). */
+static int read_kernel(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
+{
+    d->nystrom = strcmp(d->family, "rkn") == 0;
+    d->processed = strcmp(d->family, "processed") == 0;
+    char *kernel = NULL;
+    int rc = read_string(&kernel, L, "kernel", d->processed, path, err);
+    if (rc == VIGEN_OK && kernel && !d->processed)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: kernel: only a processed design has a kernel", path);
+    else if (rc == VIGEN_OK && kernel && strcmp(kernel, "splitting") != 0 && strcmp(kernel, "rkn") != 0)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: kernel: must be \"splitting\" (separable H) or \"rkn\" "
+                             "(Nystrom H); a processed composition of a symmetric base gains nothing at effective "
+                             "order 4", path);
+    if (rc == VIGEN_OK && kernel) d->nystrom = strcmp(kernel, "rkn") == 0;
+    free(kernel);
+    return rc;
+}
+
+/* processed: what design handles (after every field is read) */
+static int check_processed(const vigen_design_spec *d, const char *path, vigen_error *err)
+{
+    if (!d->processed) return VIGEN_OK;
+    if (!d->symmetric)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: symmetric: a processed kernel must be symmetric (symmetric = "
+                               "true)", path);
+    if (d->order != 4)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: the effective order of a processed kernel must be 4 "
+                               "(design handles effective order 4)", path);
+    if (d->goal != VIGEN_DESIGN_ALL)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: a processed design asks solutions = \"all\" "
+                               "(the error constant of a processed method needs its corrector)", path);
+    return VIGEN_OK;
+}
+
+/* The unknown named (a<i>, b<i> of a splitting: the i-th distinct drift or
+ * kick; gamma<i> of a composition), or -1. */
+static long fix_unknown(const vigen_design_spec *d, const char *name)
+{
+    int splitting = strcmp(d->family, "composition") != 0;
+    const char *digits = splitting ? name + 1 : name + 5;
+    if (splitting ? (name[0] != 'a' && name[0] != 'b') : strncmp(name, "gamma", 5) != 0) return -1;
+    if (*digits < '1' || *digits > '9' || strspn(digits, "0123456789") != strlen(digits) || strlen(digits) > 3)
+        return -1;
+    long i = atol(digits) - 1;
+    long kicks = d->stages, drifts = d->symmetric ? (kicks + 2) / 2 : kicks + 1;
+    long nk = d->symmetric ? (kicks + 1) / 2 : kicks, ng = d->symmetric ? (kicks + 1) / 2 : kicks;
+    if (!splitting) return i < ng ? i : -1;
+    if (name[0] == 'a') return i < drifts ? i : -1;
+    return i < nk ? drifts + i : -1;
+}
+
+/* fix = { NAME = "p/q", ... }: unknowns held at exact rationals (keys in
+ * sorted order, so that the conditions are the same from run to run). */
+static int read_fix(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
+{
+    push_raw(L, "fix");
+    int rc = VIGEN_OK;
+    if (lua_isnil(L, -1)) {
+        lua_pop(L, 1);
+        return VIGEN_OK;
+    }
+    if (!lua_istable(L, -1)) rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: fix: must be a table { b1 = \"-3/73\", "
+                                                  "... }", path);
+    for (lua_pushnil(L); rc == VIGEN_OK && lua_next(L, -2); lua_pop(L, 1)) {
+        const char *key = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
+        long j = key ? fix_unknown(d, key) : -1;
+        fmpq_t v;
+        fmpq_init(v);
+        const char *val = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
+        int ok = val && *val && strspn(val, "-0123456789/") == strlen(val) && fmpq_set_str(v, val, 10) == 0 &&
+                 !fmpz_is_zero(fmpq_denref(v));
+        fmpq_clear(v);
+        if (j < 0)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: fix: %s%s%s is not an unknown of this family (%s)", path,
+                                 key ? "'" : "", key ? key : "a key that is not a name", key ? "'" : "",
+                                 strcmp(d->family, "composition") != 0 ? "a1, a2, ... the drifts, b1, b2, ... the "
+                                 "kicks, the first half when symmetric" : "gamma1, gamma2, ...");
+        else if (!ok)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: fix: %s: must be an exact rational as a string, such as "
+                                 "\"-3/73\"", path, key);
+        else {
+            d->fix_name = realloc(d->fix_name, (size_t)(d->nfix + 1) * sizeof(char *));
+            d->fix_value = realloc(d->fix_value, (size_t)(d->nfix + 1) * sizeof(char *));
+            d->fix_unknown = realloc(d->fix_unknown, (size_t)(d->nfix + 1) * sizeof(long));
+            long at = d->nfix++;
+            while (at > 0 && d->fix_unknown[at - 1] > j) {
+                d->fix_name[at] = d->fix_name[at - 1];
+                d->fix_value[at] = d->fix_value[at - 1];
+                d->fix_unknown[at] = d->fix_unknown[at - 1];
+                at--;
+            }
+            d->fix_name[at] = vigen_strdup(key);
+            d->fix_value[at] = vigen_strdup(val);
+            d->fix_unknown[at] = j;
+        }
+    }
+    if (rc != VIGEN_OK) lua_pop(L, 1);   /* the key lua_next left */
+    lua_pop(L, 1);
+    return rc;
 }
 
 static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
 {
     static const char *const known[] = {"name", "design", "base", "stages", "order", "symmetric", "solutions",
                                         "minimize", "starts", "seed", "description", "stationary", "nearest",
-                                        "first", NULL};
+                                        "first", "kernel", "fix", NULL};
     int rc = vigen_table_check_fields(L, known, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->name, L, "name", 1, path, err);
     if (rc == VIGEN_OK) {
@@ -93,10 +204,12 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
                                        "files written, NAME_k.lua)", path);
     }
     if (rc == VIGEN_OK) rc = read_string(&d->family, L, "design", 1, path, err);
-    if (rc == VIGEN_OK && strcmp(d->family, "composition") != 0 && strcmp(d->family, "splitting") != 0)
+    if (rc == VIGEN_OK && strcmp(d->family, "composition") != 0 && strcmp(d->family, "splitting") != 0 &&
+        strcmp(d->family, "rkn") != 0 && strcmp(d->family, "processed") != 0)
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: design: unknown family '%s' (families: composition, "
-                               "splitting)", path, d->family);
-    int splitting = rc == VIGEN_OK && strcmp(d->family, "splitting") == 0;
+                               "splitting, rkn, processed)", path, d->family);
+    int splitting = rc == VIGEN_OK && strcmp(d->family, "composition") != 0;
+    if (rc == VIGEN_OK) rc = read_kernel(d, L, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->base, L, "base", !splitting, path, err);
     if (rc == VIGEN_OK && splitting && d->base)
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: base: a splitting has no base (its kicks and drifts are the "
@@ -138,6 +251,8 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
         if (d->starts == 0) d->starts = d->goal == VIGEN_DESIGN_MINIMIZE ? DEFAULT_MINIMIZE_STARTS : DEFAULT_STARTS;
     }
     free(solutions);
+    if (rc == VIGEN_OK) rc = read_fix(d, L, path, err);
+    if (rc == VIGEN_OK) rc = check_processed(d, path, err);
     return rc;
 }
 

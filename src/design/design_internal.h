@@ -57,17 +57,77 @@ slong design_composition_count(int symmetric, int q, int p);
  * product of exp(a_i h A) and exp(b_i h B), against h (A + B); symmetric:
  * the substeps read the same backwards.  Unknowns: the distinct drifts, then
  * the distinct kicks; substep i (0-based, drift on even i) is unknown
- * design_substep_unknown(i). */
-int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, vigen_error *err);
+ * design_substep_unknown(i).  mods (design_quotient.c): the conditions
+ * modulo the Nystrom ideal or the processed image (0: plain). */
+int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, unsigned mods, vigen_error *err);
 slong design_splitting_count(int symmetric, int p);
 slong design_splitting_unknowns(int kicks, int symmetric);
 slong design_substep_unknown(slong i, int kicks, int symmetric);
 
-/* The family of d (design_family.c): 1 for "splitting"; its unknowns; the
+/* Conditions modulo a subspace (design_quotient.c): a condition is the
+ * combination sum_t coef[t] c_(word[t]) of the coefficients of Lyndon words
+ * of the logarithm, all of one degree; word[0] (coefficient 1) names it.
+ * Words in A (0) and B (1) as integers, letter j from the left bit
+ * degree-1-j. */
+typedef struct {
+    int degree;
+    slong nterms, alloc;
+    ulong *word;
+    fmpq *coef;
+} design_combo;
+
+typedef struct {
+    slong n;
+    design_combo *c;
+} design_combos;
+
+/* What the logarithm of a splitting may keep: DESIGN_MOD_NYSTROM, the ideal
+ * of the relations of T = p^2/2 and V(q) (brackets of functions of q vanish,
+ * [B,[B,[B,A]]] the first); DESIGN_MOD_PROCESSED, the image of ad_(A+B),
+ * which a processor removes (effective order 4). */
+enum { DESIGN_MOD_NYSTROM = 1, DESIGN_MOD_PROCESSED = 2 };
+
+/* The highest degree of the conditions modulo a subspace (the orders design solves). */
+#define DESIGN_QUOTIENT_MAX_DEGREE 10
+
+/* The conditions of degrees 1..p (odd degrees only when symmetric) modulo
+ * mods; VIGEN_E_USAGE beyond DESIGN_QUOTIENT_MAX_DEGREE.  design_quotient_count: how
+ * many (-1 beyond it). */
+int design_quotient_conditions(design_combos *out, int p, int symmetric, unsigned mods);
+slong design_quotient_count(int p, int symmetric, unsigned mods);
+void design_combos_clear(design_combos *c);
+
+/* The processor of a kernel of effective order 4: its h^3 term is
+ * mu [A+B,[A,B]], and mu = scale times the coefficient of the Lyndon word
+ * `word` (degree 3) in the kernel's logarithm. */
+void design_quotient_processor(ulong *word, fmpq_t scale);
+
+/* The corrector written for a processed method: drift y1, kick y2, drift
+ * y3, kick y4, drift y5, kick y6 (five conditions: y6 is held at a chosen
+ * binary fraction, design_processed.c). */
+#define DESIGN_CORRECTOR_UNKNOWNS 6
+#define DESIGN_CORRECTOR_CONDITIONS 5
+/* Its first-order part, t (A + B): t = 1/2 (any t serves; 0 would make
+ * partial sums of the step vanish). */
+#define DESIGN_CORRECTOR_T_NUM 1
+#define DESIGN_CORRECTOR_T_DEN 2
+
+/* A symmetric kernel of effective order 4 with its corrector
+ * (design_conditions.c): in the kernel's unknowns x (the splitting's, first)
+ * and the corrector's y (DESIGN_CORRECTOR_UNKNOWNS, after), the kernel's
+ * conditions (as design_splitting_conditions with mods |
+ * DESIGN_MOD_PROCESSED, order 4, the same rows in the same order) and then
+ * the corrector's: log C = t h (A+B) + mu(x) h^2 [A,B] + (t/2) h^3 X3(x) +
+ * O(h^4), so that C K C^-1 has order 4 (docs/design.md). */
+int design_processed_conditions(design_system *sys, int kicks, unsigned mods, vigen_error *err);
+
+/* The family of d (design_family.c): 1 for the kick/drift families
+ * ("splitting", "rkn", "processed"); the mods of its conditions; its unknowns; the
  * steps of the method written (stages of a composition, substeps of a
  * splitting) and the unknown each one is; its conditions for order
  * d->order (q: the base's order, compositions), counted or built. */
 int design_family_is_splitting(const vigen_design_spec *d);
+unsigned design_family_mods(const vigen_design_spec *d);
 slong design_family_unknowns(const vigen_design_spec *d);
 slong design_family_nvalues(const vigen_design_spec *d);
 slong design_family_value_unknown(const vigen_design_spec *d, slong i);
@@ -87,6 +147,19 @@ void design_eval_d(double *f, double *jac, const design_system *sys, const slong
 slong design_newton_search(double **sols, const design_system *sys, const slong *rows, slong starts,
                            unsigned long seed, double box);
 
+/* The same with the first nanchor unknowns of every start at anchor[j]
+ * (the others random): the roots near a known part (a kernel's corrector). */
+slong design_newton_search_anchored(double **sols, const design_system *sys, const slong *rows, slong starts,
+                                    unsigned long seed, double box, const double *anchor, slong nanchor);
+
+/* The corrector of the proved kernel root x (kernel square rows rows[0 ..
+ * kx-1] of design_family_conditions) in the system of
+ * design_processed_conditions (design_processed.c): on success (1) digits
+ * gets kx + DESIGN_CORRECTOR_UNKNOWNS certified decimals (the kernel's and
+ * the corrector's, one proof), *radius the box's; 0 with *why. */
+int design_corrector_find(char ***digits, char **radius, char **why, const vigen_design_spec *d,
+                          const slong *rows, const double *x, long ndigits, vigen_error *err);
+
 /* Newton on x (k unknowns) for the subsystem rows (k of them) in double;
  * returns 1 when it converged to a root. */
 int design_newton_polish(double *x, const design_system *sys, const slong *rows, int iterations);
@@ -101,6 +174,11 @@ slong design_square_rows(slong *rows, const design_system *sys, unsigned long se
  * exactly the double given. */
 slong design_system_add_pin(design_system *sys, slong j);
 void design_system_set_pin(design_system *sys, slong row, double t);
+
+/* The unknowns d fixes (`fix`), each the condition x_j - v = 0 with v its
+ * exact rational, put before every other condition (so that the square
+ * subsystem takes them); VIGEN_E_SPEC when a value does not read. */
+int design_system_fix(design_system *sys, const vigen_design_spec *d);
 
 /* The free unknowns of the conditions rows[0..m-1] (m < k): the unknowns
  * left when m columns independent at a generic point are taken as the

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "design/design_method.h"
+#include "design/design_internal.h"
 #include "vigen/check.h"
 #include "vigen/method.h"
 #include "support/file.h"
@@ -20,13 +21,18 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
                                slong count, char *const *values, const char *how, const int claims[3])
 {
     int splitting = d->base == NULL;
-    char *what = splitting ? vigen_strdup_printf("a %ssplitting with %d kicks", d->symmetric ? "symmetric " : "",
+    char *what = d->processed ? vigen_strdup_printf("a symmetric splitting with %d kicks of effective order %d%s "
+                                                    "processed by the corrector C (drift, kick, drift, kick, drift, kick): "
+                                                    "one step is C, the kernel, C^-1", d->stages, d->order,
+                                                    d->nystrom ? " for Nystrom H" : "")
+               : splitting ? vigen_strdup_printf("a %ssplitting with %d kicks", d->symmetric ? "symmetric " : "",
                                                  d->stages)
                            : vigen_strdup_printf("a %d-stage %scomposition of %s", d->stages,
                                                  d->symmetric ? "symmetric " : "", base);
+    const char *family = !splitting ? "" : d->nystrom ? " for Nystrom H (T = p^2/2)" : " for separable H";
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
-    vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, splitting ? " for separable H" : "");
+    vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, family);
     vigen_strbuf_printf(&sb, "-- Found by vigen design from %s (solution %ld of %ld): %s\n", d->path, (long)index,
                         (long)count, how);
     vigen_strbuf_append(&sb, "-- Every digit is certified: the exact step lies within half a unit of the last digit.\n");
@@ -34,16 +40,27 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
     static const char *const claim_names[3] = {"order", "order_separable", "order_nystrom"};
     for (int c = 0; c < 3; c++)
         if (claims[c] >= 0) vigen_strbuf_printf(&sb, "  %s = %d,\n", claim_names[c], claims[c]);
-    vigen_strbuf_append(&sb, "  symplectic = true,\n");
+    /* a processed step C K C^-1 is symplectic by construction (exact flows),
+     * but the checker leaves its symplecticity undecided on these decimals:
+     * no claim is made that it does not certify */
+    if (!d->processed) vigen_strbuf_append(&sb, "  symplectic = true,\n");
     vigen_strbuf_printf(&sb, "  source = \"vigen design %s, solution %ld of %ld\",\n", d->path, (long)index,
                         (long)count);
     vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist by "
-                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, splitting ? " for separable H" : "");
+                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, family);
     if (splitting) {
         vigen_strbuf_append(&sb, "  splitting = {\n");
         for (int i = 0; i < 2 * d->stages + 1; i++)
             vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? "kick" : "drift", values[i]);
-        vigen_strbuf_append(&sb, "  },\n}\n");
+        vigen_strbuf_append(&sb, "  },\n");
+        if (d->processed) {
+            vigen_strbuf_append(&sb, "  corrector = {\n");
+            for (int i = 0; i < DESIGN_CORRECTOR_UNKNOWNS; i++)
+                vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? "kick" : "drift",
+                                    values[2 * d->stages + 1 + i]);
+            vigen_strbuf_append(&sb, "  },\n");
+        }
+        vigen_strbuf_append(&sb, "}\n");
     } else {
         vigen_strbuf_printf(&sb, "  composition = {\n    base = \"%s\",\n    gamma = {\n", base);
         for (int i = 0; i < d->stages; i++) vigen_strbuf_printf(&sb, "      \"%s\",\n", values[i]);
@@ -145,7 +162,8 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     sol->force = (long)rep.cost.force;
     /* the claims the text states hold, every one (the family orders only
      * when the text states them) */
-    sol->certified = rep.exit_code == 0 && rep.claim_symplectic_status == VIGEN_CHECK_YES &&
+    sol->certified = rep.exit_code == 0 &&
+                     (rep.claim_symplectic < 0 || rep.claim_symplectic_status == VIGEN_CHECK_YES) &&
                      (rep.claim_order < 0 || rep.claim_order_status == VIGEN_CHECK_YES);
     for (int f = 0; f < 2; f++)
         if (rep.claim_order_family[f] >= 0 && rep.claim_order_family_status[f] != VIGEN_CHECK_YES) sol->certified = 0;

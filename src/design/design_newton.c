@@ -93,6 +93,12 @@ int design_newton_polish(double *x, const design_system *sys, const slong *rows,
 slong design_newton_search(double **sols, const design_system *sys, const slong *rows, slong starts,
                            unsigned long seed, double box)
 {
+    return design_newton_search_anchored(sols, sys, rows, starts, seed, box, NULL, 0);
+}
+
+slong design_newton_search_anchored(double **sols, const design_system *sys, const slong *rows, slong starts,
+                                    unsigned long seed, double box, const double *anchor, slong nanchor)
+{
     slong k = sys->k, n = 0, alloc = 8;
     *sols = malloc((size_t)(alloc * k) * sizeof(double));
     gsl_error_handler_t *old = gsl_set_error_handler_off();
@@ -105,7 +111,8 @@ slong design_newton_search(double **sols, const design_system *sys, const slong 
     double *x = malloc((size_t)k * sizeof(double));
     for (slong st = 0; st < starts; st++) {
         if (st % 64 == 0) vigen_progress_set("Newton start %ld of %ld: %ld roots", (long)st, (long)starts, (long)n);
-        for (slong j = 0; j < k; j++) gsl_vector_set(x0, (size_t)j, (2 * gsl_rng_uniform(rng) - 1) * box);
+        for (slong j = 0; j < k; j++)
+            gsl_vector_set(x0, (size_t)j, j < nanchor ? anchor[j] : (2 * gsl_rng_uniform(rng) - 1) * box);
         gsl_multiroot_fdfsolver_set(s, &fdf, x0);
         int status = GSL_CONTINUE;
         for (int it = 0; it < GSL_ITERATIONS && status == GSL_CONTINUE; it++) {

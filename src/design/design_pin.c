@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "design/design_internal.h"
+#include "support/strbuf.h"
 
 slong design_system_add_pin(design_system *sys, slong j)
 {
@@ -60,4 +61,39 @@ void design_system_set_pin(design_system *sys, slong row, double t)
     arf_clear(a);
     fmpz_clear(m);
     fmpz_clear(e);
+}
+
+int design_system_fix(design_system *sys, const vigen_design_spec *d)
+{
+    slong k = sys->k;
+    for (long i = d->nfix - 1; i >= 0; i--) {
+        fmpq_t v;
+        fmpq_init(v);
+        if (fmpq_set_str(v, d->fix_value[i], 10) != 0 || fmpz_is_zero(fmpq_denref(v))) {
+            fmpq_clear(v);
+            return VIGEN_E_SPEC;
+        }
+        fmpq_canonicalise(v);
+        slong row = design_system_add_pin(sys, d->fix_unknown[i]);
+        design_poly *p = &sys->cond[row];
+        fmpq_neg(p->coef + 1, v);                  /* x_j - v, exactly */
+        p->coef_d[1] = -fmpq_get_d(v);
+        fmpq_clear(v);
+        sys->what[row] = vigen_strdup_printf("%s = %s", d->fix_name[i], d->fix_value[i]);
+        /* the pin first: the square subsystem takes the conditions in order */
+        design_poly c = sys->cond[row];
+        char *w = sys->what[row];
+        memmove(sys->cond + 1, sys->cond, (size_t)row * sizeof *sys->cond);
+        memmove(sys->what + 1, sys->what, (size_t)row * sizeof *sys->what);
+        memmove(sys->h_degree + 1, sys->h_degree, (size_t)row * sizeof *sys->h_degree);
+        sys->cond[0] = c;
+        sys->what[0] = w;
+        sys->h_degree[0] = 0;
+        design_poly *dc = malloc((size_t)k * sizeof *dc);
+        memcpy(dc, sys->dcond + row * k, (size_t)k * sizeof *dc);
+        memmove(sys->dcond + k, sys->dcond, (size_t)(row * k) * sizeof *dc);
+        memcpy(sys->dcond, dc, (size_t)k * sizeof *dc);
+        free(dc);
+    }
+    return VIGEN_OK;
 }

@@ -188,6 +188,28 @@ static void settle(vigen_design_solution *sol, const design_system *sys, const s
     _arb_vec_clear(box, k);
 }
 
+/* A processed design: the corrector of each proved kernel, proved with it
+ * (the digits become the kernel's and the corrector's); a kernel without a
+ * proved corrector is not written. */
+static void add_corrector(vigen_design_solution *sol, const vigen_design_spec *d, const slong *rows,
+                          const vigen_design_options *opt, vigen_error *err)
+{
+    if (!sol->proved || sol->excluded) return;
+    char **digits = NULL, *radius = NULL, *why = NULL;
+    if (design_corrector_find(&digits, &radius, &why, d, rows, sol->x, opt->digits, err) == 1) {
+        for (slong j = 0; j < sol->nunknowns; j++) free(sol->digits[j]);
+        free(sol->digits);
+        free(sol->radius);
+        sol->digits = digits;
+        sol->radius = radius;
+        sol->nunknowns += DESIGN_CORRECTOR_UNKNOWNS;
+    } else {
+        sol->proved = 0;
+        sol->why = why ? why : vigen_strdup(err->message ? err->message : "no corrector");
+        free(radius);
+    }
+}
+
 /* The method file of each proved solution that no condition excludes. */
 static int certify_all(vigen_design_result *res, const vigen_design_spec *d, const vigen_design_options *opt,
                        const char *base, const char *how, vigen_error *err)
@@ -203,13 +225,20 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
         s->file = vigen_strdup_printf("%s/%s.lua", opt->outdir, name);
         slong nv = design_family_nvalues(d);
         char **gamma = malloc((size_t)nv * sizeof(char *));
-        for (slong st = 0; st < nv; st++) gamma[st] = s->digits[design_family_value_unknown(d, st)];
+        for (slong st = 0; st < nv; st++) {
+            slong j = design_family_value_unknown(d, st);
+            gamma[st] = s->digits[j];
+            /* a fixed unknown is written as the rational it is */
+            for (long f = 0; f < d->nfix; f++)
+                if (d->fix_unknown[f] == j) gamma[st] = d->fix_value[f];
+        }
         /* first the claims of the order asked for (general H for a
          * composition, separable H for a splitting) and symplectic, then also
          * the orders the checker certified for the other families, checked
          * again */
         int splitting = design_family_is_splitting(d);
-        int claims[3] = {splitting ? -1 : d->order, splitting ? d->order : -1, -1};
+        int claims[3] = {splitting ? -1 : d->order, splitting && !d->nystrom ? d->order : -1,
+                         d->nystrom ? d->order : -1};
         s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims);
         int rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
         if (rc == VIGEN_OK && s->certified && (s->order >= 0 || s->order_separable >= 0 || s->order_nystrom >= 0)) {
@@ -297,11 +326,21 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
     res->base_order = q;
     if (d->order > VIGEN_DESIGN_MAX_ORDER) {
         slong n = d->order <= COUNT_MAX_ORDER ? design_family_count(d, q) : -1;
+        int at_least = 0;
+        if (n < 0 && design_family_mods(d)) {
+            /* the conditions modulo a subspace are counted up to a lower
+             * order: those are among the conditions of the order asked */
+            vigen_design_spec lower = *d;
+            lower.order = DESIGN_QUOTIENT_MAX_DEGREE;
+            n = design_family_count(&lower, q);
+            at_least = 1;
+        }
         free(base);
         if (n > k)
-            return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: %d is impossible with %d stages: it asks for %ld "
+            return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: %d is impossible with %d stages: it asks for %s%ld "
                                    "conditions of %ld unknowns (and design handles orders up to %d)", d->path,
-                                   d->order, d->stages, (long)n, (long)k, VIGEN_DESIGN_MAX_ORDER);
+                                   d->order, d->stages, at_least ? "at least " : "", (long)n, (long)k,
+                                   VIGEN_DESIGN_MAX_ORDER);
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: %d is beyond the orders design handles (up to %d)",
                                d->path, d->order, VIGEN_DESIGN_MAX_ORDER);
     }
@@ -312,6 +351,8 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
     }
     design_system sys;
     rc = design_family_conditions(&sys, d, q, err);
+    if (rc == VIGEN_OK && design_system_fix(&sys, d) != VIGEN_OK)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: fix: a value does not read as a rational", d->path);
     if (rc != VIGEN_OK) {
         free(base);
         return rc;
@@ -357,6 +398,7 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         free(roots);
         qsort(res->sol, (size_t)res->nsol, sizeof *res->sol, cmp_first);
         for (slong i = 0; i < res->nsol; i++) settle(&res->sol[i], &sys, rows, m, opt);
+        for (slong i = 0; d->processed && i < res->nsol; i++) add_corrector(&res->sol[i], d, rows, opt, err);
         char *how = criterion ? design_criterion_how(d, res->nconditions) : vigen_strdup_printf(
             "the %ld order conditions (polynomials in the steps, from the BCH series of the method) solved by "
             "Newton from %ld random starts on a square subsystem of %ld, this root refined in arb and proved by the "

@@ -8,8 +8,13 @@
 # 1/(2 - 2^(1/3)), checked --against entry by entry); the symmetric splitting
 # with three kicks of order 4 is Forest and Ruth's (Physica D 43 (1990) 105,
 # the library's forest_ruth_4); order 6 from five symmetric steps has no
-# solution (exit 1, nothing written); ill-posed design files are refused with
-# exit 2 and one line naming the file and the field, and nothing is written.
+# solution (exit 1, nothing written); McLachlan's RKN method of order 4 (the
+# library's mclachlan_rkn_4, closed forms) comes out of its family with his
+# two kicks held; RKN order 6 with seven kicks gives methods of order 6 for
+# Nystrom H and 4 for separable H (the checker, from Nystrom trees, decides
+# both); a processed step C K C^-1 of order 4 whose kernel alone has order 2;
+# ill-posed design files are refused with exit 2 and one line naming the
+# file and the field, and nothing is written.
 set -u
 VIGEN=$1
 SRC=$2
@@ -61,6 +66,41 @@ rc=$?
 grep -q "^no solution" "$T/out" || bad "no_solution: no 'no solution' line"
 [ -z "$(ls "$T/none")" ] || bad "no_solution wrote $(ls "$T/none")"
 
+# RKN splittings: McLachlan's order-4 method with five kicks (the library's
+# mclachlan_rkn_4, its closed forms) from its family with his two kicks held
+# at -3/73 and 17/59; seven symmetric kicks of order 6 for Nystrom H: more
+# real roots than for separable H, which has only Yoshida's three
+mkdir "$T/rkn"
+"$VIGEN" design "$D/mclachlan_rkn4.lua" -o "$T/rkn" > "$T/out" 2>&1 || { bad "mclachlan_rkn4: exit $?"; cat "$T/out"; }
+found=0
+for f in "$T"/rkn/mrkn4_*.lua; do
+  "$VIGEN" check "$f" --against "$SRC/tableaux/published/mclachlan_rkn_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" && found=1
+  grep -q "order_nystrom = 4" "$f" || bad "$(basename "$f"): no order_nystrom claim"
+done
+[ $found = 1 ] || bad "no solution is the library's mclachlan_rkn_4"
+mkdir "$T/rkn6"
+"$VIGEN" design "$D/rkn6.lua" -o "$T/rkn6" > "$T/out" 2>&1 || { bad "rkn6: exit $?"; cat "$T/out"; }
+[ "$(grep -l "order_nystrom = 6" "$T"/rkn6/*.lua | wc -l)" = "$(ls "$T/rkn6" | wc -l)" ] || bad "rkn6: a file without order_nystrom = 6"
+n4=$(grep -l "order_separable = 4" "$T"/rkn6/*.lua | wc -l)
+[ "$n4" -ge 4 ] || bad "rkn6: $n4 methods of order 6 for Nystrom H only, expected several"
+for f in $(grep -l "order_separable = 4" "$T"/rkn6/*.lua | head -2); do
+  "$VIGEN" check "$f" > "$T/chk" 2>&1 || bad "check $(basename "$f") exits $?"
+  grep -q "^order for Nystrom H = p^2/2 + V(q): 6 within" "$T/chk" || bad "$(basename "$f"): not Nystrom order 6"
+  grep -q "^order for separable H = T(p) + V(q): 4 within" "$T/chk" || bad "$(basename "$f"): not separable order 4"
+done
+
+# processed: the step C K C^-1 of order 4, the kernel alone of order 2
+mkdir "$T/pk"
+"$VIGEN" design "$D/processed.lua" -o "$T/pk" > "$T/out" 2>&1 || { bad "processed: exit $?"; cat "$T/out"; }
+for f in "$T"/pk/*.lua; do
+  "$VIGEN" check "$f" > "$T/chk" 2>&1 || bad "check $(basename "$f") exits $?"
+  grep -q "^order         4 within" "$T/chk" || bad "$(basename "$f"): processed step not of order 4"
+  sed '/^  corrector = {/,/^  },/d; /order/d' "$f" > "$T/kernel.lua"
+  "$VIGEN" check "$T/kernel.lua" > "$T/chk" 2>&1
+  grep -q "^order         2 within" "$T/chk" || { bad "$(basename "$f"): kernel alone not of order 2"; grep "^order" "$T/chk"; }
+done
+[ -n "$(ls "$T/pk")" ] || bad "processed: no file"
+
 # ill-posed design files: exit 2, one line naming the file and the field
 refuse() {  # name field-regex lua-body
   printf 'return { %s }\n' "$3" > "$T/$1.lua"
@@ -83,5 +123,18 @@ refuse not_symmetric "base: symplectic_euler_q_first is not a symmetric splittin
   "$C, base = \"symplectic_euler_q_first\", stages = 3, order = 4"
 refuse splitting_base "base: a splitting has no base" 'name = "x", design = "splitting", base = "gauss_1", stages = 3, order = 4, solutions = "all"'
 refuse float_stages "stages: must be a whole number" "$C, base = \"stormer_verlet_position\", stages = 3.0, order = 4"
+R='name = "x", design = "rkn", symmetric = true, solutions = "all"'
+refuse rkn_order20 "order: 20 is impossible with 3 stages: it asks for at least [0-9]* conditions of 4 unknowns" \
+  "$R, stages = 3, order = 20"
+refuse rkn_typo "unknown field 'kernal'; did you mean 'kernel'" \
+  'name = "x", design = "processed", kernal = "rkn", stages = 3, order = 4, symmetric = true, solutions = "all"'
+refuse rkn_fix_name "fix: 'c1' is not an unknown of this family" "$R, stages = 5, order = 4, fix = { c1 = \"1/2\" }"
+refuse rkn_fix_value "fix: b1: must be an exact rational" "$R, stages = 5, order = 4, fix = { b1 = \"0.5\" }"
+refuse rkn_fix_zero "fix: b1: must be an exact rational" "$R, stages = 5, order = 4, fix = { b1 = \"1/0\" }"
+refuse processed_order6 "order: the effective order of a processed kernel must be 4" \
+  'name = "x", design = "processed", kernel = "rkn", stages = 3, order = 6, symmetric = true, solutions = "all"'
+refuse processed_nonsym "symmetric: a processed kernel must be symmetric" \
+  'name = "x", design = "processed", kernel = "splitting", stages = 3, order = 4, solutions = "all"'
+refuse rkn_kernel "kernel: only a processed design has a kernel" "$R, kernel = \"rkn\", stages = 5, order = 4"
 [ -z "$(ls "$T/none")" ] || bad "refused files wrote $(ls "$T/none")"
 exit $fail

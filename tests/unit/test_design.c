@@ -26,6 +26,9 @@
  *    composition (Phys. Lett. A 146 (1990) 319) is a member, so the best
  *    point found has an error constant no larger than the checker's on the
  *    library's suzuki_4;
+ *  - the numbers of RKN conditions, McLachlan's RKN method of order 4 and
+ *    the effective-order condition of the two-kick kernel (each test's
+ *    comment gives its source);
  *  - the Krawczyk test refuses a box that holds no root: the triple jump
  *    moved by 1e-10 with a box of radius 1e-20, and a point far from every
  *    root.
@@ -100,6 +103,44 @@ static void test_counts(void)
     vigen_error_init(&err);
     design_system sys;
     CHECK(design_composition_conditions(&sys, 15, 1, 2, 8, &err) == VIGEN_OK);
+    CHECK(sys.n == 8 && sys.k == 8);
+    design_system_clear(&sys);
+}
+
+/* The conditions for Nystrom H (T = p^2/2, V(q)): the free Lie algebra on
+ * A, B modulo the relations of T and V ([B,[B,[B,A]]] = 0 first, a new one
+ * at degree 8, where the ideal of [B,[B,[B,A]]] alone would leave 15) has
+ * dimensions 2, 1, 2, 2, 4, 5, 10, 14 in degrees 1..8, the numbers of RKN
+ * order conditions per order
+ * (McLachlan, SIAM J. Sci. Comput. 16 (1995) 151; Blanes & Moan, J. Comput.
+ * Appl. Math. 142 (2002) 313; Blanes & Casas, A Concise Introduction to
+ * Geometric Numerical Integration, sec. 3.4), against Witt's 2, 1, 2, 3, 6,
+ * 9, 18, 30 for separable H: symmetric order 4 asks 4 conditions of both,
+ * order 6 asks 8 against 10.  A kernel of effective order 4 asks dim Lie_3 -
+ * dim Lie_2 = 1 condition at h^3 instead of 2 (Blanes, Casas & Ros, SIAM J.
+ * Sci. Comput. 21 (1999) 711): 3 in all. */
+static void test_nystrom_counts(void)
+{
+    static const slong dim[] = {2, 1, 2, 2, 4, 5, 10, 14};
+    slong below = 0;
+    for (int p = 1; p <= 8; p++) {
+        slong n = design_quotient_count(p, 0, DESIGN_MOD_NYSTROM);
+        CHECK_MSG(n - below == dim[p - 1], "degree %d: %ld conditions, want %ld", p, (long)(n - below),
+                  (long)dim[p - 1]);
+        below = n;
+    }
+    CHECK(design_quotient_count(4, 1, DESIGN_MOD_NYSTROM) == 4 && design_splitting_count(1, 4) == 4);
+    CHECK(design_quotient_count(6, 1, DESIGN_MOD_NYSTROM) == 8 && design_splitting_count(1, 6) == 10);
+    CHECK(design_quotient_count(8, 1, DESIGN_MOD_NYSTROM) == 2 + 2 + 4 + 10);
+    CHECK(design_quotient_count(4, 1, DESIGN_MOD_PROCESSED) == 3);
+    CHECK(design_quotient_count(4, 1, DESIGN_MOD_PROCESSED | DESIGN_MOD_NYSTROM) == 3);
+    /* the plain quotient (mods 0) is the Lyndon count */
+    CHECK(design_quotient_count(6, 0, 0) == design_splitting_count(0, 6));
+    /* the polynomials agree with the count: 7 kicks, order 6 */
+    vigen_error err;
+    vigen_error_init(&err);
+    design_system sys;
+    CHECK(design_splitting_conditions(&sys, 7, 1, 6, DESIGN_MOD_NYSTROM, &err) == VIGEN_OK);
     CHECK(sys.n == 8 && sys.k == 8);
     design_system_clear(&sys);
 }
@@ -241,6 +282,96 @@ static void test_minimize(void)
     vigen_design_result_clear(&res);
 }
 
+/* McLachlan's RKN method of order 4 with five kicks (SIAM J. Sci. Comput.
+ * 16 (1995) 151, SB3A; the library's mclachlan_rkn_4): with b1 = -3/73 and
+ * b2 = 17/59 held, the drifts are a1 = (1095 sqrt(722025967665) -
+ * 229483763)/1729961856 and a2 = (315354233 - 1081 sqrt(722025967665)) /
+ * 2100667968, closed forms computed here in arb: one solution of the family
+ * is them, certified of order 4 for Nystrom H. */
+static void test_mclachlan_rkn(void)
+{
+    vigen_design_result res;
+    run(&res, "mclachlan_rkn4.lua", 60);
+    arb_t r, a1, a2, t;
+    arb_init(r);
+    arb_init(a1);
+    arb_init(a2);
+    arb_init(t);
+    arb_set_str(r, "722025967665", 4 * PREC);
+    arb_sqrt(r, r, 4 * PREC);
+    arb_mul_ui(a1, r, 1095, 4 * PREC);
+    arb_sub_ui(a1, a1, 229483763, 4 * PREC);
+    arb_div_ui(a1, a1, 1729961856, 4 * PREC);
+    arb_mul_ui(a2, r, 1081, 4 * PREC);
+    arb_neg(a2, a2);
+    arb_add_ui(a2, a2, 315354233, 4 * PREC);
+    arb_div_ui(a2, a2, 2100667968, 4 * PREC);
+    int found = 0;
+    for (slong i = 0; i < res.nsol; i++) {
+        const vigen_design_solution *s = &res.sol[i];
+        CHECK(s->certified && s->order_nystrom == 4);
+        if (s->digits && rounds(s->digits[0], a1) && rounds(s->digits[1], a2)) found++;
+    }
+    CHECK_MSG(found == 1, "%d solutions are McLachlan's", found);
+    arb_clear(r);
+    arb_clear(a1);
+    arb_clear(a2);
+    arb_clear(t);
+    vigen_design_result_clear(&res);
+}
+
+/* The kernel drift a, kick 1/2, drift 1 - 2a, kick 1/2, drift a: its h^3
+ * term lies in [A+B, Lie_2] exactly when a^2/2 - a/4 + 1/24 = 0 (the BCH
+ * coefficients of the words AAB and ABB, summed, worked out independently
+ * of this code), whose discriminant 1/16 - 1/12 is negative: no real
+ * kernel of effective order 4 has two kicks, where Forest and Ruth's
+ * order 4 needs three. */
+static void test_processed_two_kicks(void)
+{
+    vigen_error err;
+    vigen_error_init(&err);
+    design_system sys;
+    CHECK(design_splitting_conditions(&sys, 2, 1, 4, DESIGN_MOD_PROCESSED, &err) == VIGEN_OK);
+    CHECK(sys.n == 3 && sys.k == 3);
+    arb_ptr x = _arb_vec_init(3);
+    arb_t v, want, ratio, first;
+    arb_init(v);
+    arb_init(want);
+    arb_init(ratio);
+    arb_init(first);
+    for (int num = -5; num <= 5; num++) {
+        /* unknowns: drifts a1, a2, then the kick b1 */
+        arb_set_si(x + 0, num);
+        arb_div_si(x + 0, x + 0, 7, PREC);
+        arb_mul_2exp_si(x + 1, x + 0, 1);
+        arb_neg(x + 1, x + 1);
+        arb_add_ui(x + 1, x + 1, 1, PREC);
+        arb_set_d(x + 2, 0.5);
+        design_poly_eval_arb(v, &sys.cond[2], x, PREC);
+        arb_sqr(want, x + 0, PREC);
+        arb_mul_2exp_si(want, want, -1);
+        arb_mul_2exp_si(ratio, x + 0, -2);
+        arb_sub(want, want, ratio, PREC);
+        arb_set_ui(ratio, 1);
+        arb_div_ui(ratio, ratio, 24, PREC);
+        arb_add(want, want, ratio, PREC);
+        arb_div(ratio, v, want, PREC);
+        if (num == -5) arb_set(first, ratio);
+        arb_sub(want, ratio, first, PREC);
+        CHECK(!arb_contains_zero(first) && arb_contains_zero(want) && mag_cmp_2exp_si(arb_radref(want), -200) < 0);
+    }
+    _arb_vec_clear(x, 3);
+    arb_clear(v);
+    arb_clear(want);
+    arb_clear(ratio);
+    arb_clear(first);
+    design_system_clear(&sys);
+    vigen_design_result res;
+    run(&res, "processed_2kicks.lua", 40);
+    for (slong i = 0; i < res.nsol; i++) CHECK(!res.sol[i].certified);
+    vigen_design_result_clear(&res);
+}
+
 static void test_krawczyk_refuses(void)
 {
     vigen_error err;
@@ -283,10 +414,13 @@ int main(void)
     vigen_method_set_name_resolver(vigen_library_resolve);
     test_triple_jump_conditions();
     test_counts();
+    test_nystrom_counts();
     test_krawczyk_refuses();
     test_triple_jump();
     test_yoshida6();
     test_no_solution();
     test_minimize();
+    test_mclachlan_rkn();
+    test_processed_two_kicks();
     TEST_MAIN_END();
 }
