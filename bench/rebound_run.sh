@@ -14,7 +14,10 @@
 # (method, corrector order, step in days, steps, maximum relative energy
 # error over 100 outputs, best and median wall time of NBODY_REPEATS runs
 # (default 7), ns per step), then the instructions per step under callgrind
-# when valgrind is installed.  About a minute on 2 cores.  Not a test.
+# when valgrind is installed, and how those of an emitted step divide among
+# the runtime's flows.  The emitted steppers take the steps between two
+# outputs in one call of NAME_advance.  About a minute on 2 cores (idle).
+# Not a test.
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 REB=${1:-$SRC/bench/peers/rebound}
@@ -58,4 +61,24 @@ if command -v valgrind >/dev/null; then
         a=$(ir "$m" "$c" "$h" 2000); b=$(ir "$m" "$c" "$h" 4000)
         echo "$m $c $h $(( (b - a) / 2000 ))"
     done
+    # where an emitted step's instructions go: the runtime's flows (the
+    # Kepler flow, within it the Kepler drift of one body, the interaction
+    # kick) per step, inclusive, by the same difference of two runs
+    if command -v callgrind_annotate >/dev/null; then
+        echo "# per step, inclusive (callgrind_annotate): method h/d step kepler-flow kepler-drift interaction"
+        fn() { callgrind_annotate --inclusive=yes "$1" 2>/dev/null | grep -m1 ":$2 " | awk '{print $1}' | tr -d ,; }
+        for mh in wisdom_holman:200 saba_10_6_4:200 saba_10_6_4:555.555555555556; do
+            IFS=: read -r m h <<< "$mh"
+            line="$m $h"
+            for n in 2000 4000; do
+                valgrind --tool=callgrind --callgrind-out-file="$OUT/cg.$n" "$OUT/nbody_whfast" one "$m" "$h" 0 "$n" \
+                    >/dev/null 2>&1
+            done
+            for f in "${m}_advance" vigen_nbody_jacobi_kepler vigen_kepler_drift vigen_nbody_jacobi_interaction; do
+                line="$line $(( ($(fn "$OUT/cg.4000" "$f") - $(fn "$OUT/cg.2000" "$f")) / 2000 ))"
+            done
+            echo "$line"
+        done
+        rm -f "$OUT/cg.2000" "$OUT/cg.4000"
+    fi
 fi

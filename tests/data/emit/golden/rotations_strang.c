@@ -121,23 +121,28 @@ unsigned long rotations_strang_flow_calls(const rotations_strang_workspace *w, i
 }
 
 /* One substep, in the step that starts at t0: the one place where a
- * substep's times are computed.  The flow's status, or VIGEN_ENONFINITE
- * for a flow that left a NaN or an infinity. */
-static int rotations_strang_apply(rotations_strang_workspace *w, const struct rotations_strang_substep *s, double t0, double h, double *q, double *p)
+ * substep's times are formed.  The flow's status. */
+static int rotations_strang_call(rotations_strang_workspace *w, const struct rotations_strang_substep *s, double t0, double h, double *q, double *p)
 {
-    const int rc = w->flow[s->flow](t0 + s->time * h, s->coef * h, q, p, w->sys.ctx);
     w->calls[s->flow]++;
-    if (rc != VIGEN_SUCCESS) return rc;
-    if (!rotations_strang_finite(q, w->n) || !rotations_strang_finite(p, w->n)) return VIGEN_ENONFINITE;
-    return VIGEN_SUCCESS;
+    return w->flow[s->flow](t0 + s->time * h, s->coef * h, q, p, w->sys.ctx);
+}
+
+/* VIGEN_SUCCESS when q and p are finite, else VIGEN_ENONFINITE. */
+static int rotations_strang_check(const rotations_strang_workspace *w, const double *q, const double *p)
+{
+    return rotations_strang_finite(q, w->n) && rotations_strang_finite(p, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
 /* The substeps s[0 .. count-1] in order; the first status other than
- * VIGEN_SUCCESS ends them. */
-static int rotations_strang_substeps(rotations_strang_workspace *w, const struct rotations_strang_substep *s, int count, double t0, double h, double *q, double *p)
+ * VIGEN_SUCCESS ends them.  each = 1: q and p are checked after every
+ * substep (VIGEN_ENONFINITE for a flow that left a NaN or an infinity);
+ * 0: not at all (the caller checks). */
+static int rotations_strang_substeps(rotations_strang_workspace *w, const struct rotations_strang_substep *s, int count, double t0, double h, double *q, double *p, int each)
 {
     for (int k = 0; k < count; k++) {
-        const int rc = rotations_strang_apply(w, s + k, t0, h, q, p);
+        int rc = rotations_strang_call(w, s + k, t0, h, q, p);
+        if (rc == VIGEN_SUCCESS && each) rc = rotations_strang_check(w, q, p);
         if (rc != VIGEN_SUCCESS) return rc;
     }
     return VIGEN_SUCCESS;
@@ -171,7 +176,7 @@ int rotations_strang_step(rotations_strang_workspace *w, double *t, double *q, d
     const size_t n = w->n;
     memcpy(w->q0, q, n * sizeof(double));
     memcpy(w->p0, p, n * sizeof(double));
-    const int rc = rotations_strang_substeps(w, rotations_strang_sub, 3, t0, h, q, p);
+    const int rc = rotations_strang_substeps(w, rotations_strang_sub, 3, t0, h, q, p, 1);
     if (rc != VIGEN_SUCCESS) {
         memcpy(q, w->q0, n * sizeof(double));
         memcpy(p, w->p0, n * sizeof(double));
@@ -191,7 +196,9 @@ int rotations_strang_step(rotations_strang_workspace *w, double *t, double *q, d
  * (bit for bit), q and p agree with them to round-off.  Arguments and
  * failures as for rotations_strang_step, for the whole call: on a failure t, q and p
  * are those of the call's start, bit for bit, no step counts as taken and
- * one failed step is counted. */
+ * one failed step is counted.  q and p are checked for NaN and infinity
+ * once per step of the kernel (after its substeps, the join aside) and
+ * after every substep of C and C^-1. */
 int rotations_strang_advance(rotations_strang_workspace *w, double *t, double *q, double *p, double h, long nsteps)
 {
     if (w == NULL || t == NULL || q == NULL || p == NULL || nsteps < 0) return VIGEN_EINVAL;
@@ -205,16 +212,18 @@ int rotations_strang_advance(rotations_strang_workspace *w, double *t, double *q
     const struct rotations_strang_substep *const kern = rotations_strang_adv + ROTATIONS_STRANG_ADV_PRE;
     const int J = ROTATIONS_STRANG_ADV_JOIN, kahan = w->opt.kahan != 0;
     double ts = t0, ct = w->ct;   /* the start of the current step and its compensation */
-    int rc = rotations_strang_substeps(w, rotations_strang_adv, ROTATIONS_STRANG_ADV_PRE, ts, h, q, p);
-    if (rc == VIGEN_SUCCESS) rc = rotations_strang_substeps(w, kern, ROTATIONS_STRANG_ADV_KERN - J, ts, h, q, p);
+    int rc = rotations_strang_substeps(w, rotations_strang_adv, ROTATIONS_STRANG_ADV_PRE, ts, h, q, p, 1);
+    if (rc == VIGEN_SUCCESS) rc = rotations_strang_substeps(w, kern, ROTATIONS_STRANG_ADV_KERN - J, ts, h, q, p, 0);
     for (long j = 1; j < nsteps && rc == VIGEN_SUCCESS; j++) {
-        if (J) rc = rotations_strang_apply(w, kern + ROTATIONS_STRANG_ADV_KERN, ts, h, q, p);
+        rc = rotations_strang_check(w, q, p);
+        if (rc == VIGEN_SUCCESS && J) rc = rotations_strang_call(w, kern + ROTATIONS_STRANG_ADV_KERN, ts, h, q, p);
         ts = kahan ? vigen_twosum_update(ts, h, &ct) : ts + h;
-        if (rc == VIGEN_SUCCESS) rc = rotations_strang_substeps(w, kern + J, ROTATIONS_STRANG_ADV_KERN - 2 * J, ts, h, q, p);
+        if (rc == VIGEN_SUCCESS) rc = rotations_strang_substeps(w, kern + J, ROTATIONS_STRANG_ADV_KERN - 2 * J, ts, h, q, p, 0);
     }
-    if (rc == VIGEN_SUCCESS && J) rc = rotations_strang_apply(w, kern + ROTATIONS_STRANG_ADV_KERN - 1, ts, h, q, p);
+    if (rc == VIGEN_SUCCESS && J) rc = rotations_strang_call(w, kern + ROTATIONS_STRANG_ADV_KERN - 1, ts, h, q, p);
+    if (rc == VIGEN_SUCCESS) rc = rotations_strang_check(w, q, p);
     if (rc == VIGEN_SUCCESS)
-        rc = rotations_strang_substeps(w, kern + ROTATIONS_STRANG_ADV_KERN + J, ROTATIONS_STRANG_ADV_POST, ts, h, q, p);
+        rc = rotations_strang_substeps(w, kern + ROTATIONS_STRANG_ADV_KERN + J, ROTATIONS_STRANG_ADV_POST, ts, h, q, p, 1);
     if (rc != VIGEN_SUCCESS) {
         memcpy(q, w->q0, n * sizeof(double));
         memcpy(p, w->p0, n * sizeof(double));

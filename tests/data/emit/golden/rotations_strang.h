@@ -42,7 +42,10 @@
  *                           after the last.  The state returned is the
  *                           method's after nsteps steps, t bit for bit that
  *                           of rotations_strang_step, q and p to round-off.  Statuses
- *                           as for rotations_strang_step; on a failure t, q, p are
+ *                           as for rotations_strang_step (a NaN or an infinity is
+ *                           looked for at the end of every step, so that a
+ *                           flow may be called with one that an earlier
+ *                           flow of the step left); on a failure t, q, p are
  *                           those of the call's start (bit for bit), no step
  *                           is counted as taken, one failed step is; take
  *                           the stretch again with rotations_strang_step to find the
