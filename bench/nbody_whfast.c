@@ -17,8 +17,10 @@
  * Per row: the method, the corrector order, the step, the maximum relative
  * energy error over 100 outputs (a run of its own), and the wall time of
  * the bare run (no outputs; best and median of `repeats` runs).  With the
- * arguments "one METHOD H CORRECTOR STEPS" it makes one bare run only
- * (rebound_run.sh counts its instructions with callgrind). */
+ * arguments "one METHOD H CORRECTOR STEPS" it makes one bare run only and
+ * prints its wall time in ms (rebound_run.sh counts its instructions with
+ * callgrind, and takes the best of many such runs for the rows of the
+ * ratios). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -282,6 +284,7 @@ int main(int argc, char **argv)
         const method *m = method_find(argv[2]);
         if (!m && strcmp(argv[2], "whfast") != 0) return 2;
         sink = m ? vigen_time(m, h, corrector, nsteps) : rebound_time(h, corrector, nsteps);
+        printf("%.3f\n", 1e3 * sink);
         return 0;
     }
     static const long wh_steps[] = { 2500, 3000, 3500, 4000, 4500, 5000, 10000, 20000, 25000, 30000, 35000, 40000, 80000 };

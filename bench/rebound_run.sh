@@ -43,6 +43,16 @@ gcc -O3 -std=c11 -D_POSIX_C_SOURCE=200809L -I"$REB/src" -I"$SRC/runtime/include"
     -L"$REB/src" -Wl,-rpath,"$(cd "$REB/src" && pwd)" -lrebound -lgsl -lgslcblas -lm
 echo "# $(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), $(nproc) cores; REBOUND $(cat "$REB/version.txt") ($(git -C "$REB" rev-parse --short HEAD 2>/dev/null || echo unknown))"
 "$OUT/nbody_whfast" "${NBODY_REPEATS:-7}"
+# the rows of the ratios at 1e-8 and 1e-10 (docs/benchmarks.md): the best
+# wall time of 31 single runs each, less exposed to a shared machine's
+# bursts than the best of the table's 7
+echo "# best of 31 single runs (ms): method corrector steps"
+for mcs in whfast:11:4000 wisdom_holman:11:4500 whfast:3:25000 saba_10_6_4:0:1800; do
+    IFS=: read -r m c n <<< "$mcs"
+    h=$(awk -v n="$n" 'BEGIN { printf "%.15g", 1e6 / n }')
+    best=$(for k in $(seq 31); do "$OUT/nbody_whfast" one "$m" "$h" "$c" "$n"; done | sort -g | head -1)
+    echo "$m $c $n $best"
+done
 # instructions per step, free of the machine's load: callgrind's count of a
 # run of 2N steps less that of N steps, over N (N = 2000), at h = 200 days
 # for every method, then at the steps of the cheapest runs that reach 1e-8
