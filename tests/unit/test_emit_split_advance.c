@@ -28,6 +28,9 @@
  *     call at once, or a NaN, found at the end of its step at the latest):
  *     the status (VIGEN_ENONFINITE for the NaN), t, q, p those of the
  *     call's start bit for bit, steps not counted, one failed step;
+ *   - the long double stepper of the processed method: NAME_advance
+ *     against its NAME_step to long double round-off and against the double
+ *     stepper to double round-off;
  *   - a saved state after NAME_advance continues bit for bit in a fresh
  *     workspace; NAME_step after NAME_advance continues the compensated
  *     time; bad arguments refused with nothing changed. */
@@ -41,6 +44,7 @@
 #include "sa_saba1064.h"
 #include "sa_whc.h"
 #include "sa_lt.h"
+#include "sa_whc_ld.h"
 
 /* ---- H = (p^2 + q^2)/2 + eps (q^2/2 + f q), f = 0 or sin t ---------------- */
 typedef struct {
@@ -293,11 +297,52 @@ static void test_restart_arguments(void)
     }
 }
 
+/* The long double stepper of the processed method: NAME_advance agrees
+ * with the double one to double round-off, and with its own NAME_step to
+ * long double round-off. */
+static int rotation_ld(long double t, long double h, long double *q, long double *p, void *ctx)
+{
+    (void)t; (void)ctx;
+    const long double c = cosl(h), s = sinl(h), q0 = q[0];
+    q[0] = c * q0 + s * p[0];
+    p[0] = c * p[0] - s * q0;
+    return VIGEN_SUCCESS;
+}
+static int kick_ld(long double t, long double h, long double *q, long double *p, void *ctx)
+{
+    (void)t; (void)ctx;
+    p[0] -= 0.3L * h * q[0];
+    return VIGEN_SUCCESS;
+}
+
+static void test_long_double(void)
+{
+    const vigen_flow_fn_ld fl[2] = { rotation_ld, kick_ld };
+    vigen_split_problem_ld spl = { 1, 2, fl, NULL, NULL, NULL };
+    sa_whc_ld_workspace *a = sa_whc_ld_alloc_split(&spl, NULL), *b = sa_whc_ld_alloc_split(&spl, NULL);
+    CHECK(a != NULL && b != NULL);
+    long double ta = 0, qa = 1, pa = 0.5L, tb = 0, qb = 1, pb = 0.5L;
+    CHECK(sa_whc_ld_advance(a, &ta, &qa, &pa, 0.01L, 400) == VIGEN_SUCCESS);
+    for (int k = 0; k < 400; k++) CHECK(sa_whc_ld_step(b, &tb, &qb, &pb, 0.01L) == VIGEN_SUCCESS);
+    CHECK(ta == tb && fabsl(qa - qb) < 1e-15L && fabsl(pa - pb) < 1e-15L);
+    osc c = { 0.3, 0, 0, 0, 0 };
+    vigen_split_problem sp = osc_problem(&c);
+    sa_whc_workspace *w = sa_whc_alloc_split(&sp, NULL);
+    double t = 0, q = 1, p = 0.5;
+    CHECK(sa_whc_advance(w, &t, &q, &p, 0.01, 400) == VIGEN_SUCCESS);
+    CHECK_MSG(fabsl(qa - q) < 1e-13L && fabsl(pa - p) < 1e-13L, "long double (%.17Lg, %.17Lg), double (%.17g, %.17g)",
+              qa, pa, q, p);
+    sa_whc_ld_free(a);
+    sa_whc_ld_free(b);
+    sa_whc_free(w);
+}
+
 int main(void)
 {
     test_generalized_orders();
     test_against_step();
     test_failures();
     test_restart_arguments();
+    test_long_double();
     TEST_MAIN_END();
 }
