@@ -49,7 +49,9 @@
  *                           those of the call's start (bit for bit), no step
  *                           is counted as taken, one failed step is; take
  *                           the stretch again with rotations_strang_step to find the
- *                           last good step
+ *                           last good step.  For the stretches between
+ *                           outputs at a fixed step; the runtime's drivers
+ *                           (rotations_strang_type) call rotations_strang_step
  *   rotations_strang_reset(w)         forget the previous step (start a new trajectory)
  *   rotations_strang_stats(w)         steps and failed steps (stats->steps,
  *                           stats->failed_steps)
