@@ -9,13 +9,18 @@
  * correctors applied as WHFast applies its own (C^-1 once at the start, C
  * on a copy of the state at each output).  Built and run by rebound_run.sh
  * against a REBOUND built by its own Makefile and the steppers emitted by
- * the build's vigen.
+ * the build's vigen.  Between two outputs the emitted steppers take their
+ * steps in one call of NAME_advance, which merges the last substep of a
+ * step with the first of the next and applies a processed method's
+ * corrector at its ends only, as WHFast does between synchronizations.
  *
  * Per row: the method, the corrector order, the step, the maximum relative
  * energy error over 100 outputs (a run of its own), and the wall time of
  * the bare run (no outputs; best and median of `repeats` runs).  With the
- * arguments "one METHOD H CORRECTOR STEPS" it makes one bare run only
- * (rebound_run.sh counts its instructions with callgrind). */
+ * arguments "one METHOD H CORRECTOR STEPS" it makes one bare run only and
+ * prints its wall time in ms (rebound_run.sh counts its instructions with
+ * callgrind, and takes the best of many such runs for the rows of the
+ * ratios). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -105,15 +110,15 @@ static double rebound_time(double h, int corrector, long nsteps)
 typedef struct {
     const char *name;
     void *(*alloc)(const vigen_split_problem *sp);
-    int (*step)(void *w, double *t, double *q, double *p, double h);
+    int (*advance)(void *w, double *t, double *q, double *p, double h, long nsteps);
     void (*free)(void *w);
 } method;
 
 #define EMITTED(NAME)                                                                                         \
     static void *NAME##_alloc_(const vigen_split_problem *sp) { return NAME##_alloc_split(sp, NULL); }      \
-    static int NAME##_step_(void *w, double *t, double *q, double *p, double h)                              \
+    static int NAME##_advance_(void *w, double *t, double *q, double *p, double h, long nsteps)               \
     {                                                                                                         \
-        return NAME##_step(w, t, q, p, h);                                                                    \
+        return NAME##_advance(w, t, q, p, h, nsteps);                                                         \
     }                                                                                                         \
     static void NAME##_free_(void *w) { NAME##_free(w); }
 EMITTED(wisdom_holman)
@@ -122,7 +127,7 @@ EMITTED(saba_2)
 EMITTED(saba_3)
 EMITTED(saba_4)
 EMITTED(saba_10_6_4)
-#define METHOD(NAME) { #NAME, NAME##_alloc_, NAME##_step_, NAME##_free_ }
+#define METHOD(NAME) { #NAME, NAME##_alloc_, NAME##_advance_, NAME##_free_ }
 static const method methods[] = { METHOD(wisdom_holman), METHOD(saba_2), METHOD(saba_3), METHOD(saba_4),
                                   METHOD(saba_10_6_4), METHOD(wisdom_holman_corrected) };
 
@@ -154,13 +159,13 @@ static void run_free(run *r, const method *m)
     vigen_nbody_free(r->sys);
 }
 
+/* n steps between two outputs in one call of NAME_advance (the last
+ * substep of a step merged with the first of the next, a processed
+ * method's corrector applied at the ends only), as WHFast steps between
+ * two synchronizations */
 static int run_steps(run *r, const method *m, double h, long n, double *q, double *p)
 {
-    for (long k = 0; k < n; k++) {
-        int st = m->step(r->w, &r->t, q, p, h);
-        if (st != VIGEN_SUCCESS) return st;
-    }
-    return VIGEN_SUCCESS;
+    return m->advance(r->w, &r->t, q, p, h, n);
 }
 
 /* The energy of the true state: the corrector applied to a copy. */
@@ -279,6 +284,7 @@ int main(int argc, char **argv)
         const method *m = method_find(argv[2]);
         if (!m && strcmp(argv[2], "whfast") != 0) return 2;
         sink = m ? vigen_time(m, h, corrector, nsteps) : rebound_time(h, corrector, nsteps);
+        printf("%.3f\n", 1e3 * sink);
         return 0;
     }
     static const long wh_steps[] = { 2500, 3000, 3500, 4000, 4500, 5000, 10000, 20000, 25000, 30000, 35000, 40000, 80000 };

@@ -13,12 +13,16 @@
  * Consecutive substeps of one flow are merged, their coefficients added in
  * ball arithmetic (exactly: the sum is rounded once), and a substep whose
  * coefficient is an exact zero is dropped (which may bring two of one flow
- * together: merged again).  Merging across steps (the last substep of a
- * step with the first of the next, first same as last) is not done: it
- * would change the state every step returns, which output at any time,
- * events and restart read.  Time is carried by flow 0: substep k starts at
- * t0 + tau_k h with tau_k the sum of the coefficients of flow 0 before it,
- * rounded from its ball like the coefficients. */
+ * together: merged again).  NAME_step does not merge across steps (the
+ * last substep of a step with the first of the next, first same as last):
+ * the state every step returns is the method's, which output at any time,
+ * events and restart read.  NAME_advance, which takes many steps and
+ * returns the state at their end only, has tables of its own: the
+ * corrector C, one step of the kernel, the join (the kernel's last substep
+ * and its first added, when they are of one flow) and C^-1, each merged
+ * within itself.  Time is carried by flow 0: substep k starts at
+ * t0 + tau_k h with tau_k the sum of the coefficients of flow 0 before it
+ * in the step C K C^-1, rounded from its ball like the coefficients. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,11 +31,13 @@
 #include "emit/variant.h"
 #include "support/strbuf.h"
 
-/* The substeps as the builder reads them. */
+/* The substeps as the builder reads them: one step, C K C^-1 for a
+ * processed method (ncorrector substeps of C first and of C^-1 last). */
 typedef struct {
     slong nflows;
     const char *const *names;
     slong n;
+    slong ncorrector;
     int *flow;
     char *const *coef;
 } split_input;
@@ -54,6 +60,7 @@ static int split_input_get(split_input *in, emit_ctx *E)
     in->names = kick_drift_names;
     if (t->flows != NULL && t->flows->nflows == 2) in->names = (const char *const *)t->flows->names;
     in->n = t->nsubsteps;
+    if (t->flows != NULL && 2 * t->flows->ncorrector < t->nsubsteps) in->ncorrector = t->flows->ncorrector;
     in->flow = malloc(sizeof(int) * (size_t)t->nsubsteps);
     if (in->flow == NULL) abort();
     for (slong k = 0; k < in->n; k++) in->flow[k] = t->substep_drift[k] ? 0 : 1;
@@ -63,10 +70,12 @@ static int split_input_get(split_input *in, emit_ctx *E)
 
 static void split_input_clear(split_input *in) { free(in->flow); }
 
-/* The merged substeps: flow, coefficient and start time as literals. */
+/* Merged substeps: flow, coefficient (its ball in val) and start time as
+ * literals. */
 typedef struct {
     slong m;
     int *flow;
+    arb_ptr val;
     char **coef, **time;
     char **text;     /* the coefficients as written, joined by " + " where merged */
 } split_subs;
@@ -78,6 +87,7 @@ static void split_subs_clear(split_subs *U)
         free(U->time[k]);
         free(U->text[k]);
     }
+    if (U->val != NULL) _arb_vec_clear(U->val, U->m);
     free(U->flow);
     free(U->coef);
     free(U->time);
@@ -93,17 +103,22 @@ static char *join_text(char *a, const char *b)
     return j;
 }
 
-static int split_round(split_subs *U, emit_ctx *E, const split_input *in)
+/* The n substeps of in from k0 on, merged: consecutive substeps of one flow
+ * added, exact zeros dropped.  tau is the time (in units of h) at the first
+ * of them on entry and after the last on return: the one place where the
+ * start time of a substep is computed.  Substep labels in messages count
+ * from first (1-based). */
+static int split_round(split_subs *U, emit_ctx *E, const split_input *in, slong k0, slong n, arb_t tau, slong first)
 {
     memset(U, 0, sizeof *U);
-    const slong N = in->n;
+    const slong N = n > 0 ? n : 1;
     arb_ptr v = _arb_vec_init(N);
     int *flow = calloc((size_t)N, sizeof *flow);
     char **text = calloc((size_t)N, sizeof *text);
     if (flow == NULL || text == NULL) abort();
     int rc = VIGEN_OK;
     slong m = 0;
-    for (slong k = 0; k < N && rc == VIGEN_OK; k++) {
+    for (slong k = k0; k < k0 + n && rc == VIGEN_OK; k++) {
         arb_t x;
         arb_init(x);
         rc = vigen_tableau_entry_eval(x, in->coef[k], E->prec, E->err);
@@ -128,36 +143,92 @@ static int split_round(split_subs *U, emit_ctx *E, const split_input *in)
         }
         arb_clear(x);
     }
-    if (rc == VIGEN_OK && m == 0)
-        rc = vigen_error_set(E->err, VIGEN_E_SPEC, "the splitting has no substep with a nonzero coefficient");
     if (rc == VIGEN_OK) {
         U->m = m;
         U->flow = flow;
         U->text = text;
         flow = NULL;
         text = NULL;
-        U->coef = calloc((size_t)m, sizeof *U->coef);
-        U->time = calloc((size_t)m, sizeof *U->time);
+        U->val = _arb_vec_init(m);
+        _arb_vec_set(U->val, v, m);
+        U->coef = calloc((size_t)N, sizeof *U->coef);
+        U->time = calloc((size_t)N, sizeof *U->time);
         if (U->coef == NULL || U->time == NULL) abort();
-        arb_t tau;
-        arb_init(tau);
         for (slong k = 0; k < m && rc == VIGEN_OK; k++) {
             char label[64];
-            snprintf(label, sizeof label, "coefficient of substep %ld", (long)k + 1);
+            snprintf(label, sizeof label, "coefficient of substep %ld", (long)(first + k));
             rc = vigen_emit_literal(U->coef + k, E, v + k, -1, label);
             if (rc == VIGEN_OK) {
-                snprintf(label, sizeof label, "time of substep %ld", (long)k + 1);
+                snprintf(label, sizeof label, "time of substep %ld", (long)(first + k));
                 rc = vigen_emit_literal(U->time + k, E, tau, -1, label);
             }
             if (U->flow[k] == 0) arb_add(tau, tau, v + k, E->prec);
         }
-        arb_clear(tau);
     } else {
         for (slong k = 0; k < m; k++) free(text[k]);
     }
     free(flow);
     free(text);
     _arb_vec_clear(v, N);
+    return rc;
+}
+
+/* The tables of NAME_advance: the corrector C (none for a method that is not
+ * processed), one step of the kernel, the join and C^-1.  The join is the
+ * kernel's last substep followed by the next step's first, one substep when
+ * they are of one flow (coefficients added before rounding; absent when
+ * they are not, or when their sum is zero); it starts when the kernel's
+ * last substep does.  Times are those of the step C K C^-1: C's from the
+ * step's start, the kernel's after C's, C^-1's after the kernel's. */
+typedef struct {
+    split_subs pre, kern, post;
+    int join;            /* 1: the join is a substep */
+    int join_flow;
+    char *join_coef, *join_time, *join_text;
+} split_advance;
+
+static void split_advance_clear(split_advance *A)
+{
+    split_subs_clear(&A->pre);
+    split_subs_clear(&A->kern);
+    split_subs_clear(&A->post);
+    free(A->join_coef);
+    free(A->join_time);
+    free(A->join_text);
+    memset(A, 0, sizeof *A);
+}
+
+static int split_advance_round(split_advance *A, emit_ctx *E, const split_input *in)
+{
+    memset(A, 0, sizeof *A);
+    const slong c = in->ncorrector, nk = in->n - 2 * c;
+    arb_t tau;
+    arb_init(tau);
+    int rc = split_round(&A->pre, E, in, 0, c, tau, 1);
+    /* a corrector's coefficients of flow 0 cancel as a rule (it is made of
+     * pairs K(-a h) ... K(a h)): a sum zero to the working precision starts
+     * the kernel at 0, as vigen_emit_tiny_zero takes every coefficient */
+    if (vigen_emit_tiny_zero(E, tau)) arb_zero(tau);
+    if (rc == VIGEN_OK) rc = split_round(&A->kern, E, in, c, nk, tau, c + 1);
+    if (rc == VIGEN_OK && A->kern.m == 0)
+        rc = vigen_error_set(E->err, VIGEN_E_SPEC, "the kernel of the splitting has no substep with a nonzero "
+                             "coefficient");
+    if (rc == VIGEN_OK) rc = split_round(&A->post, E, in, c + nk, c, tau, c + nk + 1);
+    const split_subs *K = &A->kern;
+    if (rc == VIGEN_OK && K->m >= 2 && K->flow[0] == K->flow[K->m - 1]) {
+        arb_t x;
+        arb_init(x);
+        arb_add(x, K->val + K->m - 1, K->val, E->prec);
+        if (!vigen_emit_tiny_zero(E, x)) {
+            A->join = 1;
+            A->join_flow = K->flow[0];
+            A->join_text = vigen_strdup_printf("%s + %s", K->text[K->m - 1], K->text[0]);
+            rc = vigen_emit_literal(&A->join_coef, E, x, -1, "coefficient of the join of two steps");
+            if (rc == VIGEN_OK) A->join_time = K->time[K->m - 1] ? vigen_strdup(K->time[K->m - 1]) : NULL;
+        }
+        arb_clear(x);
+    }
+    arb_clear(tau);
     return rc;
 }
 
@@ -176,8 +247,44 @@ static char *flow_constant(const char *uname, const char *name)
     return sb.data;
 }
 
+/* One row of a substep table: the flow's constant, the coefficient and the
+ * start time (an exact zero: 0). */
+static void sub_row(vigen_slot *T, char *const *constant, int flow, const char *coef, const char *time, int more)
+{
+    vigen_slot_line(T, "{ %s, %s, %s }%s", constant[flow], coef, time ? time : "0", more ? "," : "");
+}
+
+/* The rows of NAME_advance's table (ADV_TABLE), each group under a comment,
+ * and their counts. */
+static void advance_texts(vigen_slots *S, char *const *constant, const split_advance *A)
+{
+    const split_subs *group[3] = { &A->pre, &A->kern, &A->post };
+    static const char *const what[3] = { "the corrector C, once at the start", "one step of the kernel",
+                                         "C^-1, once at the end" };
+    const slong count = A->pre.m + A->kern.m + A->join + A->post.m;
+    vigen_slots_textf(S, "ADV_PRE", "%ld", (long)A->pre.m);
+    vigen_slots_textf(S, "ADV_KERN", "%ld", (long)A->kern.m);
+    vigen_slots_textf(S, "ADV_JOIN", "%d", A->join);
+    vigen_slots_textf(S, "ADV_POST", "%ld", (long)A->post.m);
+    vigen_slots_textf(S, "ADV_COUNT", "%ld", (long)count);
+    vigen_slot *T = vigen_slots_lines(S, "ADV_TABLE");
+    slong row = 0;
+    for (int g = 0; g < 3; g++) {
+        const split_subs *U = group[g];
+        if (U->m > 0) vigen_slot_line(T, "/* %s */", what[g]);
+        for (slong k = 0; k < U->m; k++, row++)
+            sub_row(T, constant, U->flow[k], U->coef[k], U->time[k], row + 1 < count);
+        if (g == 1 && A->join) {
+            char *d = vigen_emit_safe_text(A->join_text, 200);
+            vigen_slot_line(T, "/* the join: the last substep of a step and the first of the next, %s */", d);
+            free(d);
+            sub_row(T, constant, A->join_flow, A->join_coef, A->join_time, ++row < count);
+        }
+    }
+}
+
 static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *opt, const char *ident,
-                        const split_input *in, const split_subs *U)
+                        const split_input *in, const split_subs *U, const split_advance *A)
 {
     const vigen_emit_real_type *R = &vigen_emit_reals[opt->real];
     const vigen_tableau *t = E->t;
@@ -233,9 +340,9 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
         char *d = vigen_emit_safe_text(U->text[k], 200);
         vigen_slot_line(C, "%2ld. %s, %s", (long)k + 1, nm[U->flow[k]], d);
         free(d);
-        vigen_slot_line(T, "{ %s, %s, %s }%s", constant[U->flow[k]], U->coef[k], U->time[k] ? U->time[k] : "0",
-                        k + 1 < U->m ? "," : "");
+        sub_row(T, constant, U->flow[k], U->coef[k], U->time[k], k + 1 < U->m);
     }
+    advance_texts(S, constant, A);
     for (slong k = 0; k < in->nflows; k++) {
         free(constant[k]);
         free(nm[k]);
@@ -255,8 +362,17 @@ int vigen_emit_split_slots(vigen_slots *S, emit_ctx *E, const vigen_emit_options
     int rc = split_input_get(&in, E);
     if (rc != VIGEN_OK) return rc;
     split_subs U;
-    rc = split_round(&U, E, &in);
-    if (rc == VIGEN_OK) split_texts(S, E, opt, ident, &in, &U);
+    split_advance A;
+    memset(&A, 0, sizeof A);
+    arb_t tau;
+    arb_init(tau);
+    rc = split_round(&U, E, &in, 0, in.n, tau, 1);
+    arb_clear(tau);
+    if (rc == VIGEN_OK && U.m == 0)
+        rc = vigen_error_set(E->err, VIGEN_E_SPEC, "the splitting has no substep with a nonzero coefficient");
+    if (rc == VIGEN_OK) rc = split_advance_round(&A, E, &in);
+    if (rc == VIGEN_OK) split_texts(S, E, opt, ident, &in, &U, &A);
+    split_advance_clear(&A);
     split_subs_clear(&U);
     split_input_clear(&in);
     return rc;

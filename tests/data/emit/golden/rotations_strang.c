@@ -21,15 +21,39 @@
 #error "compile without -ffast-math: the finiteness checks and the compensated time need IEEE arithmetic"
 #endif
 
-/* Substep k: flow sub[k].flow for the time sub[k].coef h, from the time
- * t0 + sub[k].time h (time: the coefficients of flow 0 before it, added). */
-static const struct {
+/* A substep: flow `flow` for the time coef h, from the time t0 + time h
+ * (time: the coefficients of flow 0 before it in the step, added; t0 the
+ * start of the step). */
+struct rotations_strang_substep {
     int flow;
     double coef, time;
-} rotations_strang_sub[3] = {
+};
+
+/* One step of the method (rotations_strang_step). */
+static const struct rotations_strang_substep rotations_strang_sub[3] = {
     { ROTATIONS_STRANG_FLOW_AXIS1, 0x1p-1, 0 },
     { ROTATIONS_STRANG_FLOW_AXIS3, 0x1p+0, 0x1p-1 },
     { ROTATIONS_STRANG_FLOW_AXIS1, 0x1p-1, 0x1p-1 }
+};
+
+/* The substeps of rotations_strang_advance, which takes many steps and returns the
+ * state at their end only: rows [0, PRE) once before the first step, rows
+ * [PRE, PRE + KERN) at every step, the row after them (when JOIN is 1)
+ * between two steps in place of the last substep of the one and the first
+ * of the other, and the last POST rows once after the last step. */
+enum {
+    ROTATIONS_STRANG_ADV_PRE = 0,
+    ROTATIONS_STRANG_ADV_KERN = 3,
+    ROTATIONS_STRANG_ADV_JOIN = 1,
+    ROTATIONS_STRANG_ADV_POST = 0
+};
+static const struct rotations_strang_substep rotations_strang_adv[4] = {
+    /* one step of the kernel */
+    { ROTATIONS_STRANG_FLOW_AXIS1, 0x1p-1, 0 },
+    { ROTATIONS_STRANG_FLOW_AXIS3, 0x1p+0, 0x1p-1 },
+    { ROTATIONS_STRANG_FLOW_AXIS1, 0x1p-1, 0x1p-1 },
+    /* the join: the last substep of a step and the first of the next, 1/2 + 1/4 + 1/4 */
+    { ROTATIONS_STRANG_FLOW_AXIS1, 0x1p+0, 0x1p-1 }
 };
 
 struct rotations_strang_workspace {
@@ -96,20 +120,47 @@ unsigned long rotations_strang_flow_calls(const rotations_strang_workspace *w, i
     return w != NULL && k >= 0 && k < 2 ? w->calls[k] : 0;
 }
 
-/* The substeps in order; the first status other than VIGEN_SUCCESS (a
- * flow's, or VIGEN_ENONFINITE for a flow that left a NaN or an infinity)
- * ends the step. */
-static int rotations_strang_substeps(rotations_strang_workspace *w, double t0, double *q, double *p, double h)
+/* One substep, in the step that starts at t0: the one place where a
+ * substep's times are formed.  The flow's status. */
+static int rotations_strang_call(rotations_strang_workspace *w, const struct rotations_strang_substep *s, double t0, double h, double *q, double *p)
 {
-    const size_t n = w->n;
-    for (int k = 0; k < 3; k++) {
-        const int f = rotations_strang_sub[k].flow;
-        const int rc = w->flow[f](t0 + rotations_strang_sub[k].time * h, rotations_strang_sub[k].coef * h, q, p, w->sys.ctx);
-        w->calls[f]++;
+    w->calls[s->flow]++;
+    return w->flow[s->flow](t0 + s->time * h, s->coef * h, q, p, w->sys.ctx);
+}
+
+/* VIGEN_SUCCESS when q and p are finite, else VIGEN_ENONFINITE. */
+static int rotations_strang_check(const rotations_strang_workspace *w, const double *q, const double *p)
+{
+    return rotations_strang_finite(q, w->n) && rotations_strang_finite(p, w->n) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
+}
+
+/* The substeps s[0 .. count-1] in order; the first status other than
+ * VIGEN_SUCCESS ends them.  each = 1: q and p are checked after every
+ * substep (VIGEN_ENONFINITE for a flow that left a NaN or an infinity);
+ * 0: not at all (the caller checks). */
+static int rotations_strang_substeps(rotations_strang_workspace *w, const struct rotations_strang_substep *s, int count, double t0, double h, double *q, double *p, int each)
+{
+    for (int k = 0; k < count; k++) {
+        int rc = rotations_strang_call(w, s + k, t0, h, q, p);
+        if (rc == VIGEN_SUCCESS && each) rc = rotations_strang_check(w, q, p);
         if (rc != VIGEN_SUCCESS) return rc;
-        if (!rotations_strang_finite(q, n) || !rotations_strang_finite(p, n)) return VIGEN_ENONFINITE;
     }
     return VIGEN_SUCCESS;
+}
+
+/* Whether a call continues the last output: else the compensation of t is
+ * dropped (a new trajectory). */
+static void rotations_strang_continue(rotations_strang_workspace *w, double t0, const double *q, const double *p)
+{
+    if (t0 != w->t_next || q[0] != w->q_next0 || p[0] != w->p_next0) w->ct = 0;
+}
+
+/* What the next call continues. */
+static void rotations_strang_done(rotations_strang_workspace *w, double t, const double *q, const double *p)
+{
+    w->t_next = t;
+    w->q_next0 = q[0];
+    w->p_next0 = p[0];
 }
 
 /* t, h and t + h must be finite (VIGEN_EINVAL otherwise, nothing changed;
@@ -121,11 +172,11 @@ int rotations_strang_step(rotations_strang_workspace *w, double *t, double *q, d
     const double t0 = *t, tend = t0 + h;
     if (!(tend - tend == 0)) return VIGEN_EINVAL;
     if (h == 0) return VIGEN_SUCCESS;
-    if (t0 != w->t_next || q[0] != w->q_next0 || p[0] != w->p_next0) w->ct = 0;
+    rotations_strang_continue(w, t0, q, p);
     const size_t n = w->n;
     memcpy(w->q0, q, n * sizeof(double));
     memcpy(w->p0, p, n * sizeof(double));
-    const int rc = rotations_strang_substeps(w, t0, q, p, h);
+    const int rc = rotations_strang_substeps(w, rotations_strang_sub, 3, t0, h, q, p, 1);
     if (rc != VIGEN_SUCCESS) {
         memcpy(q, w->q0, n * sizeof(double));
         memcpy(p, w->p0, n * sizeof(double));
@@ -134,9 +185,55 @@ int rotations_strang_step(rotations_strang_workspace *w, double *t, double *q, d
     }
     *t = w->opt.kahan ? vigen_twosum_update(t0, h, &w->ct) : tend;
     w->stats.steps++;
-    w->t_next = *t;
-    w->q_next0 = q[0];
-    w->p_next0 = p[0];
+    rotations_strang_done(w, *t, q, p);
+    return VIGEN_SUCCESS;
+}
+
+/* nsteps steps of size h, the state in between never formed: the kernel's
+ * last substep and the next step's first are one substep when they are of
+ * one flow, and a processed method's C and C^-1 run once, before the first
+ * step and after the last.  t advances as in nsteps calls of rotations_strang_step
+ * (bit for bit), q and p agree with them to round-off.  Arguments and
+ * failures as for rotations_strang_step, for the whole call: on a failure t, q and p
+ * are those of the call's start, bit for bit, no step counts as taken and
+ * one failed step is counted.  q and p are checked for NaN and infinity
+ * once per step of the kernel (after its substeps, the join aside) and
+ * after every substep of C and C^-1. */
+int rotations_strang_advance(rotations_strang_workspace *w, double *t, double *q, double *p, double h, long nsteps)
+{
+    if (w == NULL || t == NULL || q == NULL || p == NULL || nsteps < 0) return VIGEN_EINVAL;
+    const double t0 = *t, tend = t0 + (double)nsteps * h, t1 = t0 + h;
+    if (!(tend - tend == 0) || !(t1 - t1 == 0)) return VIGEN_EINVAL;
+    if (h == 0 || nsteps == 0) return VIGEN_SUCCESS;
+    rotations_strang_continue(w, t0, q, p);
+    const size_t n = w->n;
+    memcpy(w->q0, q, n * sizeof(double));
+    memcpy(w->p0, p, n * sizeof(double));
+    const struct rotations_strang_substep *const kern = rotations_strang_adv + ROTATIONS_STRANG_ADV_PRE;
+    const int J = ROTATIONS_STRANG_ADV_JOIN, kahan = w->opt.kahan != 0;
+    double ts = t0, ct = w->ct;   /* the start of the current step and its compensation */
+    int rc = rotations_strang_substeps(w, rotations_strang_adv, ROTATIONS_STRANG_ADV_PRE, ts, h, q, p, 1);
+    if (rc == VIGEN_SUCCESS) rc = rotations_strang_substeps(w, kern, ROTATIONS_STRANG_ADV_KERN - J, ts, h, q, p, 0);
+    for (long j = 1; j < nsteps && rc == VIGEN_SUCCESS; j++) {
+        rc = rotations_strang_check(w, q, p);
+        if (rc == VIGEN_SUCCESS && J) rc = rotations_strang_call(w, kern + ROTATIONS_STRANG_ADV_KERN, ts, h, q, p);
+        ts = kahan ? vigen_twosum_update(ts, h, &ct) : ts + h;
+        if (rc == VIGEN_SUCCESS) rc = rotations_strang_substeps(w, kern + J, ROTATIONS_STRANG_ADV_KERN - 2 * J, ts, h, q, p, 0);
+    }
+    if (rc == VIGEN_SUCCESS && J) rc = rotations_strang_call(w, kern + ROTATIONS_STRANG_ADV_KERN - 1, ts, h, q, p);
+    if (rc == VIGEN_SUCCESS) rc = rotations_strang_check(w, q, p);
+    if (rc == VIGEN_SUCCESS)
+        rc = rotations_strang_substeps(w, kern + ROTATIONS_STRANG_ADV_KERN + J, ROTATIONS_STRANG_ADV_POST, ts, h, q, p, 1);
+    if (rc != VIGEN_SUCCESS) {
+        memcpy(q, w->q0, n * sizeof(double));
+        memcpy(p, w->p0, n * sizeof(double));
+        w->stats.failed_steps++;
+        return rc;
+    }
+    *t = kahan ? vigen_twosum_update(ts, h, &ct) : ts + h;
+    w->ct = ct;
+    w->stats.steps += (unsigned long)nsteps;
+    rotations_strang_done(w, *t, q, p);
     return VIGEN_SUCCESS;
 }
 

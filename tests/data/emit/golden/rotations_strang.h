@@ -31,6 +31,27 @@
  *                           t + h not finite, the status of a flow that
  *                           failed, VIGEN_ENONFINITE for a flow that left a
  *                           NaN or infinity in q or p
+ *   rotations_strang_advance(w, &t, q, p, h, nsteps)  nsteps steps of size h (nsteps
+ *                           >= 0), cheaper than as many calls of rotations_strang_step:
+ *                           the state between them is never formed, so that
+ *                           the kernel's last substep and the next step's
+ *                           first are one flow call when they are of one
+ *                           flow (first same as last, their coefficients
+ *                           added), and a processed method's corrector C
+ *                           and C^-1 run once, before the first step and
+ *                           after the last.  The state returned is the
+ *                           method's after nsteps steps, t bit for bit that
+ *                           of rotations_strang_step, q and p to round-off.  Statuses
+ *                           as for rotations_strang_step (a NaN or an infinity is
+ *                           looked for at the end of every step, so that a
+ *                           flow may be called with one that an earlier
+ *                           flow of the step left); on a failure t, q, p are
+ *                           those of the call's start (bit for bit), no step
+ *                           is counted as taken, one failed step is; take
+ *                           the stretch again with rotations_strang_step to find the
+ *                           last good step.  For the stretches between
+ *                           outputs at a fixed step; the runtime's drivers
+ *                           (rotations_strang_type) call rotations_strang_step
  *   rotations_strang_reset(w)         forget the previous step (start a new trajectory)
  *   rotations_strang_stats(w)         steps and failed steps (stats->steps,
  *                           stats->failed_steps)
@@ -66,6 +87,7 @@ typedef struct rotations_strang_workspace rotations_strang_workspace;
 
 rotations_strang_workspace *rotations_strang_alloc_split(const vigen_split_problem *sys, const vigen_solver_options *opt);
 int rotations_strang_step(rotations_strang_workspace *w, double *t, double *q, double *p, double h);
+int rotations_strang_advance(rotations_strang_workspace *w, double *t, double *q, double *p, double h, long nsteps);
 void rotations_strang_reset(rotations_strang_workspace *w);
 const vigen_stats *rotations_strang_stats(const rotations_strang_workspace *w);
 unsigned long rotations_strang_flow_calls(const rotations_strang_workspace *w, int k);
