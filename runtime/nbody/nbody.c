@@ -17,7 +17,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     for (size_t i = 0; i < n; i++)
         if (!(mass[i] > 0) || !isfinite(mass[i])) return VIGEN_EINVAL;
     vigen_nbody *s = calloc(1, sizeof *s);
-    double *block = calloc(20 * n, sizeof *block);
+    double *block = calloc(26 * n, sizeof *block);
     if (s == NULL || block == NULL) {
         free(s);
         free(block);
@@ -31,7 +31,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     s->mred = block + 3 * n;
     s->mu = block + 4 * n;
     s->work = block + 5 * n;
-    s->saved = block + 14 * n;
+    s->saved = block + 20 * n;
     double M = 0;
     for (size_t i = 0; i < n; i++) {
         s->m[i] = mass[i];
