@@ -64,11 +64,15 @@ extern "C" {
 
 /* Advances the two-body orbit x'' = -mu x/|x|^3 by time h: x (3 entries,
  * position) and v (3 entries, velocity) in place.  Universal variables
- * (Stumpff functions, the universal Kepler equation solved by
- * Laguerre-Conway iterations inside a bisection bracket, f and g functions
- * applied as increments), for every eccentricity: elliptic, parabolic and
+ * (Stumpff functions; the universal Kepler equation solved by Halley's
+ * method from the series of the anomaly in h, Laguerre-Conway iterations
+ * inside a bisection bracket where that fails; f and g functions applied
+ * as increments), for every eccentricity: elliptic, parabolic and
  * hyperbolic orbits alike; a bound orbit's h is reduced modulo its period
- * first.  Returns VIGEN_SUCCESS; VIGEN_EINVAL (mu <= 0 or not finite, h not
+ * first.  The map is evaluated in long double and rounded once, so that
+ * the energy of a two-body orbit carries no drift, only a round-off
+ * growing like the square root of the drifts (where long double is wider
+ * than double).  Returns VIGEN_SUCCESS; VIGEN_EINVAL (mu <= 0 or not finite, h not
  * finite, x = 0, or a radial orbit (zero angular momentum) that falls into
  * the centre or is bound: a collision orbit) or VIGEN_ENONFINITE (a
  * non-finite input or result: a hyperbolic orbit driven past overflow) or
