@@ -84,22 +84,6 @@ static int kick(vigen_nbody *sys, double h, double *p, const double *force, doub
     return VIGEN_SUCCESS;
 }
 
-void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f)
-{
-    size_t n = sys->n;
-    vigen_nbody_jacobi_positions_inverse(sys, q, x);
-    /* the pair (0, 1) and the Jacobi term of body 1 cancel exactly
-     * (x_1 - x_0 = q_1): both left out */
-    vigen_nbody_pair_forces(sys, x, f, 0, 1);
-    vigen_nbody_jacobi_momenta(sys, f, f);
-    for (size_t i = 2; i < n; i++) {
-        const double *qi = q + 3 * i;
-        double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
-        double k = sys->G * sys->m[i] * sys->interior[i - 1] / (r2 * sqrt(r2));
-        for (int c = 0; c < 3; c++) f[3 * i + c] += k * qi[c];
-    }
-}
-
 int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, void *ctx)
 {
     (void)t;

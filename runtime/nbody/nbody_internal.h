@@ -25,7 +25,7 @@ void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f,
 
 /* The force of the Jacobi interaction, f = -dH_interaction/dq (3n
  * entries, f_0 = 0), and the inertial positions x of q on the way
- * (flows.c). */
+ * (nbody.c). */
 void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f);
 
 /* The linear maps of the changes of coordinates (nbody.c), positions and
