@@ -142,6 +142,7 @@ static int run_start(run *r, const method *m, double h, int corrector, double *q
 {
     if (vigen_nbody_alloc(&r->sys, N, G, mass) != VIGEN_SUCCESS) exit(1);
     if (vigen_nbody_split(r->sys, VIGEN_NBODY_JACOBI, &r->sp) != VIGEN_SUCCESS) exit(1);
+    r->sp.nflows = 2; /* the methods here compose kepler and interaction, the first two */
     r->w = m->alloc(&r->sp);
     if (!r->w) exit(1);
     r->t = 0;

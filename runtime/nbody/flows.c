@@ -89,20 +89,9 @@ int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, voi
     (void)t;
     vigen_nbody *sys = ctx;
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
-    size_t n = sys->n;
     double local[9 * STACK_BODIES], *work = scratch(sys, local);
-    double *x = work, *f = work + 3 * n;
-    vigen_nbody_jacobi_positions_inverse(sys, q, x);
-    /* the pair (0, 1) and the Jacobi term of body 1 cancel exactly
-     * (x_1 - x_0 = q_1): both left out */
-    vigen_nbody_pair_forces(sys, x, f, 0, 1);
-    vigen_nbody_jacobi_momenta(sys, f, f);
-    for (size_t i = 2; i < n; i++) {
-        const double *qi = q + 3 * i;
-        double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
-        double k = sys->G * sys->m[i] * sys->interior[i - 1] / (r2 * sqrt(r2));
-        for (int c = 0; c < 3; c++) f[3 * i + c] += k * qi[c];
-    }
+    double *f = work + 3 * sys->n;
+    vigen_nbody_jacobi_interaction_force(sys, q, work, f);
     return kick(sys, h, p, f, work);
 }
 
@@ -192,22 +181,25 @@ double vigen_nbody_democratic_energy(double t, const double *q, const double *p,
     return energy(ctx, VIGEN_NBODY_DEMOCRATIC, q, p);
 }
 
-static const vigen_flow_fn jacobi_flows[] = { vigen_nbody_jacobi_kepler, vigen_nbody_jacobi_interaction };
+static const vigen_flow_fn jacobi_flows[] = { vigen_nbody_jacobi_kepler, vigen_nbody_jacobi_interaction,
+                                              vigen_nbody_jacobi_interaction_gradient };
 static const vigen_flow_fn democratic_flows[] = { vigen_nbody_democratic_kepler, vigen_nbody_democratic_interaction,
                                                   vigen_nbody_democratic_jump };
-static const char *const flow_names[] = { "kepler", "interaction", "jump" };
+static const char *const jacobi_names[] = { "kepler", "interaction", "interaction_gradient" };
+static const char *const democratic_names[] = { "kepler", "interaction", "jump" };
 
 const char *vigen_nbody_flow_name(int coords, size_t k)
 {
-    size_t count = coords == VIGEN_NBODY_JACOBI ? 2 : coords == VIGEN_NBODY_DEMOCRATIC ? 3 : 0;
-    return k < count ? flow_names[k] : NULL;
+    if (k >= 3) return NULL;
+    return coords == VIGEN_NBODY_JACOBI ? jacobi_names[k] : coords == VIGEN_NBODY_DEMOCRATIC ? democratic_names[k]
+                                                                                            : NULL;
 }
 
 int vigen_nbody_split(vigen_nbody *sys, int coords, vigen_split_problem *out)
 {
     if (sys == NULL || out == NULL) return VIGEN_EINVAL;
     if (coords == VIGEN_NBODY_JACOBI) {
-        *out = (vigen_split_problem){ .dim = 3 * sys->n, .nflows = 2, .flow = jacobi_flows, .ctx = sys,
+        *out = (vigen_split_problem){ .dim = 3 * sys->n, .nflows = 3, .flow = jacobi_flows, .ctx = sys,
                                       .vector_field = vigen_nbody_jacobi_vector_field,
                                       .H = vigen_nbody_jacobi_energy };
         return VIGEN_SUCCESS;

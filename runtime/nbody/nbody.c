@@ -1,7 +1,8 @@
 /* nbody.c — the N-body system (masses, G, the scratch memory of its
  * flows), its energy and forces in the inertial frame, and the canonical
  * changes of coordinates inertial <-> Jacobi and inertial <-> democratic
- * heliocentric (vigen/nbody.h gives the formulas).  Every change is linear,
+ * heliocentric (vigen/nbody.h gives the formulas), and the force of the
+ * Jacobi interaction that the interaction flows share.  Every change is linear,
  * q' = A x with p' = A^-T p; the same code maps velocities like positions
  * and forces like momenta, which the vector fields of flows.c use. */
 #include <math.h>
@@ -17,7 +18,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     for (size_t i = 0; i < n; i++)
         if (!(mass[i] > 0) || !isfinite(mass[i])) return VIGEN_EINVAL;
     vigen_nbody *s = calloc(1, sizeof *s);
-    double *block = calloc(20 * n, sizeof *block);
+    double *block = calloc(26 * n, sizeof *block);
     if (s == NULL || block == NULL) {
         free(s);
         free(block);
@@ -31,7 +32,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     s->mred = block + 3 * n;
     s->mu = block + 4 * n;
     s->work = block + 5 * n;
-    s->saved = block + 14 * n;
+    s->saved = block + 20 * n;
     double M = 0;
     for (size_t i = 0; i < n; i++) {
         s->m[i] = mass[i];
@@ -166,6 +167,24 @@ void vigen_nbody_jacobi_momenta_inverse(const vigen_nbody *sys, const double *pj
             P[c] -= pi;
         }
     for (int c = 0; c < 3; c++) p[c] = P[c];
+}
+
+/* The force of the Jacobi interaction, -dH_interaction/dq: the pair forces
+ * mapped like momenta, and the Jacobi terms of bodies 2.. . */
+void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f)
+{
+    size_t n = sys->n;
+    vigen_nbody_jacobi_positions_inverse(sys, q, x);
+    /* the pair (0, 1) and the Jacobi term of body 1 cancel exactly
+     * (x_1 - x_0 = q_1): both left out */
+    vigen_nbody_pair_forces(sys, x, f, 0, 1);
+    vigen_nbody_jacobi_momenta(sys, f, f);
+    for (size_t i = 2; i < n; i++) {
+        const double *qi = q + 3 * i;
+        double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
+        double k = sys->G * sys->m[i] * sys->interior[i - 1] / (r2 * sqrt(r2));
+        for (int c = 0; c < 3; c++) f[3 * i + c] += k * qi[c];
+    }
 }
 
 /* ---- democratic heliocentric ----------------------------------------- */

@@ -15,13 +15,18 @@ struct vigen_nbody {
     double *frac;    /* m_i / M_i (Jacobi), frac[0] = 1 */
     double *mred;    /* m'_i = m_i M_{i-1} / M_i, i >= 1 (mred[0] = M) */
     double *mu;      /* G M_i: the Kepler constant of Jacobi body i */
-    double *work;    /* 9 n doubles of scratch for the flows */
+    double *work;    /* 15 n doubles of scratch for the flows */
     double *saved;   /* 6 n doubles: the state before a corrector */
 };
 
 /* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
  * pairs i < j with i >= from, the pair (0, 1) left out when skip01 (nbody.c). */
 void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01);
+
+/* The force of the Jacobi interaction, f = -dH_interaction/dq (3n
+ * entries, f_0 = 0), and the inertial positions x of q on the way
+ * (nbody.c). */
+void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f);
 
 /* The linear maps of the changes of coordinates (nbody.c), positions and
  * momenta apart: q' = A x (also velocities: dq'/dt = A dx/dt) and

@@ -100,12 +100,14 @@ static int vector_field(double t, const double *q, const double *p, double *dq, 
     return isfinite(dp[0]) && isfinite(dp[1]) ? VIGEN_SUCCESS : VIGEN_ENONFINITE;
 }
 
-static const vigen_flow_fn flows[] = { kepler_flow, zero_flow };
+/* kepler, interaction (zero) and interaction_gradient (of a zero
+ * interaction: the identity) */
+static const vigen_flow_fn flows[] = { kepler_flow, zero_flow, zero_flow };
 
 static int split(vigen_problem *pb, int coords, vigen_split_problem *out)
 {
     if (coords != VIGEN_NBODY_JACOBI) return VIGEN_EINVAL;
-    *out = (vigen_split_problem){ .dim = 2, .nflows = 2, .flow = flows, .ctx = pb, .vector_field = vector_field,
+    *out = (vigen_split_problem){ .dim = 2, .nflows = 3, .flow = flows, .ctx = pb, .vector_field = vector_field,
                                   .H = energy };
     return VIGEN_SUCCESS;
 }

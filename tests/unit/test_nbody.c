@@ -206,7 +206,7 @@ static void fields(void)
     for (int coords = 0; coords < 2; coords++) {
         vigen_split_problem sp;
         CHECK(vigen_nbody_split(sys, coords, &sp) == VIGEN_SUCCESS);
-        CHECK(sp.dim == DMAX && sp.nflows == (coords ? 3u : 2u) && sp.ctx == sys);
+        CHECK(sp.dim == DMAX && sp.nflows == 3 && sp.ctx == sys);
         vigen_nbody_to_coordinates(sys, coords, x, p, q, pc);
         CHECK(sp.vector_field(0, q, pc, dq, dp, sp.ctx) == VIGEN_SUCCESS);
         double worst = 0;
@@ -467,10 +467,11 @@ static void problem_splits(void)
         vigen_split_problem sp;
         char why[200];
         CHECK(vigen_problem_split(pb, NULL, &sp, why, sizeof why) == VIGEN_SUCCESS);
-        CHECK(sp.dim == vigen_problem_dim(pb) && sp.nflows == 2);
+        CHECK(sp.dim == vigen_problem_dim(pb) && sp.nflows == 3);
         CHECK(strcmp(vigen_problem_split_flow_name(pb, 0), "kepler") == 0);
         CHECK(strcmp(vigen_problem_split_flow_name(pb, 1), "interaction") == 0);
-        CHECK(vigen_problem_split_flow_name(pb, 2) == NULL);
+        CHECK(strcmp(vigen_problem_split_flow_name(pb, 2), "interaction_gradient") == 0);
+        CHECK(vigen_problem_split_flow_name(pb, 3) == NULL);
         double t, q[DMAX], p[DMAX], qs[DMAX], ps[DMAX], q2[DMAX], p2[DMAX];
         vigen_problem_initial(pb, &t, q, p);
         CHECK(vigen_problem_split_state(pb, 1, q, p, qs, ps) == VIGEN_SUCCESS);

@@ -9,7 +9,7 @@
  *     vigen_nbody *sys;
  *     vigen_nbody_alloc(&sys, 6, G, mass);            masses m_0 (the star) .. m_5
  *     vigen_split_problem sp;
- *     vigen_nbody_split(sys, VIGEN_NBODY_JACOBI, &sp);  flows {"kepler", "interaction"}
+ *     vigen_nbody_split(sys, VIGEN_NBODY_JACOBI, &sp);  flows "kepler", "interaction", ...
  *     vigen_nbody_to_jacobi(sys, x, p, q, pj);        inertial -> Jacobi (canonical)
  *     ... an emitted splitting stepper, or sp.flow[k](t, h, q, pj, sp.ctx) ...
  *     vigen_nbody_from_jacobi(sys, q, pj, x, p);
@@ -64,11 +64,15 @@ extern "C" {
 
 /* Advances the two-body orbit x'' = -mu x/|x|^3 by time h: x (3 entries,
  * position) and v (3 entries, velocity) in place.  Universal variables
- * (Stumpff functions, the universal Kepler equation solved by
- * Laguerre-Conway iterations inside a bisection bracket, f and g functions
- * applied as increments), for every eccentricity: elliptic, parabolic and
+ * (Stumpff functions; the universal Kepler equation solved by Halley's
+ * method from the series of the anomaly in h, Laguerre-Conway iterations
+ * inside a bisection bracket where that fails; f and g functions applied
+ * as increments), for every eccentricity: elliptic, parabolic and
  * hyperbolic orbits alike; a bound orbit's h is reduced modulo its period
- * first.  Returns VIGEN_SUCCESS; VIGEN_EINVAL (mu <= 0 or not finite, h not
+ * first.  The map is evaluated in long double and rounded once, so that
+ * the energy of a two-body orbit carries no drift, only a round-off
+ * growing like the square root of the drifts (where long double is wider
+ * than double).  Returns VIGEN_SUCCESS; VIGEN_EINVAL (mu <= 0 or not finite, h not
  * finite, x = 0, or a radial orbit (zero angular momentum) that falls into
  * the centre or is bound: a collision orbit) or VIGEN_ENONFINITE (a
  * non-finite input or result: a hyperbolic orbit driven past overflow) or
@@ -121,6 +125,15 @@ int vigen_nbody_from_coordinates(const vigen_nbody *sys, int coords, const doubl
  * interaction kick p -= h dH_interaction/dq. */
 int vigen_nbody_jacobi_kepler(double t, double h, double *q, double *p, void *ctx);
 int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, void *ctx);
+/* Jacobi: the flow of the double bracket
+ *   Phi = {{H_kepler, H_interaction}, H_interaction} = sum_{i>=1} |dB/dq_i|^2 / m'_i
+ * (B = H_interaction, m'_i = m_i M_{i-1}/M_i) by time h (a method passes
+ * tau = c h^3, of either sign): Phi depends on q only, so its flow is the
+ * kick p -= h dPhi/dq = h 2 Hess(B) M^-1 dB/dq, computed exactly (the
+ * Hessians of the pair potentials along the Jacobi map); q and p_0
+ * unchanged.  The modified kicks of SABAC_n and of the kernels of Wisdom,
+ * Holman and Touma (1996) compose it with the interaction kick. */
+int vigen_nbody_jacobi_interaction_gradient(double t, double h, double *q, double *p, void *ctx);
 /* Democratic heliocentric: the Kepler drift, the planet-planet kick, and
  * the jump q_i += h (p_1 + ... + p_{n-1})/m_0 (i >= 1). */
 int vigen_nbody_democratic_kepler(double t, double h, double *q, double *p, void *ctx);
@@ -137,7 +150,8 @@ double vigen_nbody_democratic_energy(double t, const double *q, const double *p,
 
 /* Fills *out with the split problem of sys in coordinates coords: dim 3n,
  * ctx sys, the flows in the order of vigen_nbody_flow_name (Jacobi:
- * "kepler", "interaction"; democratic: "kepler", "interaction", "jump"),
+ * "kepler", "interaction", "interaction_gradient"; democratic: "kepler",
+ * "interaction", "jump"),
  * the vector field and H above.  VIGEN_SUCCESS or VIGEN_EINVAL. */
 int vigen_nbody_split(vigen_nbody *sys, int coords, vigen_split_problem *out);
 /* The name of flow k of the coordinates' splitting; NULL past the end. */
