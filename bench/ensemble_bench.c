@@ -44,7 +44,17 @@ static inline void kep_force_b(const double *t, const double *q, double *f, size
         fy[j] = -y[j] / r3;
     }
 }
+/* the callback: the same loop, compiled for the machine's vector units as
+ * the batched steps are (the force of a block is the user's code) */
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
+__attribute__((target_clones("avx512f", "avx2", "default"), optimize("fp-contract=off")))
+#endif
+static void kep_force_cb(const double *t, const double *q, double *f, size_t W, void *c)
+{
+    kep_force_b(t, q, f, W, c);
+}
 
+#include "kepler_verlet_avx512.h"
 #include "ens_sv.h"
 #include "ens_y4.h"
 #include "ens_g2.h"
@@ -129,11 +139,12 @@ static void ensemble(const stepper *S, run *R, int threads)
 
 /* blocks of W orbits (the last one shorter), each copied into the
  * structure-of-arrays layout, stepped, and copied back */
-static void batch(const stepper *S, run *R, int direct, int threads)
+static void batch(const stepper *S, run *R, int direct, int hand, int threads)
 {
     const size_t nb = (R->n + R->W - 1) / R->W;
-    vigen_mechanical_batch sys = { .dim = 2, .force = kep_force_b };
+    vigen_mechanical_batch sys = { .dim = 2, .force = kep_force_cb };
     (void)threads;
+    (void)hand;
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads)
 #endif
@@ -157,6 +168,10 @@ static void batch(const stepper *S, run *R, int direct, int threads)
                 p[W + j] = R->p[2 * (lo + j) + 1];
                 st[j] = VIGEN_SUCCESS;
             }
+#if KV512_AVAILABLE
+            if (hand && W % 8 == 0) kv512_run(W, t, q, p, R->h, R->steps);
+            else
+#endif
             for (size_t s = 0; s < R->steps; s++) (direct ? S->bstep_d : S->bstep)(*slot, t, q, p, R->h, st);
             for (size_t j = 0; j < W; j++) {
                 R->t[lo + j] = t[j];
@@ -175,24 +190,35 @@ static void batch(const stepper *S, run *R, int direct, int threads)
     }
 }
 
-enum { SCALAR, ENS, BATCH, BATCH_DIRECT };
+enum { SCALAR, ENS, BATCH, BATCH_DIRECT, HAND };
 
-/* fastest of `repeat` runs, in ns per orbit-step; *same: the final state
- * has the scalar loop's bits */
-static double measure(const stepper *S, run *R, int kind, int threads, int repeat, int *same)
+static int cmp_double(const void *a, const void *b)
 {
-    double best = INFINITY;
+    const double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* fastest of `repeat` runs, in ns per orbit-step, and the median in *med;
+ * *same: the final state has the scalar loop's bits */
+static double measure(const stepper *S, run *R, int kind, int threads, int repeat, int *same, double *med)
+{
+    double best = INFINITY, dts[64];
+    if (repeat > 64) repeat = 64;
     for (int r = 0; r < repeat; r++) {
         initial(R->n, R->t, R->q, R->p);
         const double t0 = now();
         switch (kind) {
         case SCALAR: scalar_loop(S, R); break;
         case ENS: ensemble(S, R, threads); break;
-        default: batch(S, R, kind == BATCH_DIRECT, threads); break;
+        default: batch(S, R, kind == BATCH_DIRECT, kind == HAND, threads); break;
         }
         const double dt = now() - t0;
+        dts[r] = dt;
         if (dt < best) best = dt;
     }
+    qsort(dts, (size_t)repeat, sizeof dts[0], cmp_double);
+    const double m = repeat % 2 ? dts[repeat / 2] : 0.5 * (dts[repeat / 2 - 1] + dts[repeat / 2]);
+    *med = m * 1e9 / ((double)R->n * (double)R->steps);
     if (kind == SCALAR) {
         memcpy(R->ref_q, R->q, 2 * R->n * sizeof(double));
         memcpy(R->ref_p, R->p, 2 * R->n * sizeof(double));
@@ -209,8 +235,11 @@ int main(int argc, char **argv)
     R.steps = argc > 2 ? strtoul(argv[2], NULL, 10) : 200;
     R.W = argc > 3 ? strtoul(argv[3], NULL, 10) : 256;
     const int repeat = argc > 4 ? atoi(argv[4]) : 3;
-    if (R.n == 0 || R.steps == 0 || R.W == 0 || repeat <= 0) {
-        fprintf(stderr, "usage: ensemble_bench [N [STEPS [W [REPEAT]]]] (positive integers)\n");
+    int only_s = -1, only_r = -1;   /* ONLY = "S:R": that configuration alone, no reference run */
+    if (argc > 5 && sscanf(argv[5], "%d:%d", &only_s, &only_r) != 2) only_s = 99;
+    if (R.n == 0 || R.steps == 0 || R.W == 0 || repeat <= 0 || only_s > 2) {
+        fprintf(stderr, "usage: ensemble_bench [N [STEPS [W [REPEAT [S:R]]]]] (positive integers; S stepper 0-2, "
+                        "R row)\n");
         return 2;
     }
     R.h = 2 * pi / 200;
@@ -222,10 +251,16 @@ int main(int argc, char **argv)
     R.status = malloc(R.n * sizeof(int));
     if (!R.t || !R.q || !R.p || !R.ref_q || !R.ref_p || !R.status) return 1;
     const stepper S[3] = { STEPPER(ens_sv, ens_svd), STEPPER(ens_y4, ens_y4d), STEPPER(ens_g2, ens_g2d) };
-    printf("Kepler ensemble: %zu orbits, %zu steps each (h = 2 pi/200), batch blocks of %zu, fastest of %d; "
-           "OpenMP threads available: %d\n\n", R.n, R.steps, R.W, repeat, vigen_ensemble_max_threads());
-    printf("| stepper | configuration | cores | ns per orbit-step | M orbit-steps/s | vs scalar loop | same bits |\n");
-    printf("|---|---|---|---|---|---|---|\n");
+    int hand = 0;
+#if KV512_AVAILABLE
+    hand = __builtin_cpu_supports("avx512f") && R.W % 8 == 0;
+#endif
+    printf("Kepler ensemble: %zu orbits, %zu steps each (h = 2 pi/200), batch blocks of %zu, best and median of %d; "
+           "OpenMP threads available: %d; AVX-512: %s\n\n", R.n, R.steps, R.W, repeat, vigen_ensemble_max_threads(),
+           hand ? "yes" : "no (or W not a multiple of 8): no hand-written row");
+    printf("| stepper | configuration | cores | ns per orbit-step (best) | ns (median) | vs scalar loop (best) | "
+           "vs scalar loop (median) | same bits |\n");
+    printf("|---|---|---|---|---|---|---|---|\n");
     for (int s = 0; s < 3; s++) {
         struct { const char *what; int kind, threads; } rows[] = {
             { "scalar loop (NAME_step)", SCALAR, 1 },
@@ -235,14 +270,27 @@ int main(int argc, char **argv)
             { "batch, force by callback", BATCH, 2 },
             { "batch, force direct", BATCH_DIRECT, 1 },
             { "batch, force direct", BATCH_DIRECT, 2 },
+            { "hand-written AVX-512 intrinsics (limit)", HAND, 1 },
+            { "hand-written AVX-512 intrinsics (limit)", HAND, 2 },
         };
-        double base = 0;
-        for (size_t r = 0; r < sizeof rows / sizeof rows[0]; r++) {
+        size_t nrows = sizeof rows / sizeof rows[0] - (s == 0 && hand ? 0 : 2);
+        double base = 0, base_med = 0;
+        for (size_t r = 0; r < nrows; r++) {
+            if (only_s >= 0 && (s != only_s || (int)r != only_r)) continue;
             int same;
-            const double ns = measure(&S[s], &R, rows[r].kind, rows[r].threads, repeat, &same);
-            if (r == 0) base = ns;
-            printf("| %s | %s | %d | %.2f | %.1f | %.2f | %s |\n", S[s].type->name, rows[r].what, rows[r].threads, ns,
-                   1e3 / ns, base / ns, same ? "yes" : "NO");
+            double med;
+            const double ns = measure(&S[s], &R, rows[r].kind, rows[r].threads, repeat, &same, &med);
+            if (r == 0) {
+                base = ns;
+                base_med = med;
+            }
+            if (only_s >= 0) {
+                printf("| %s | %s | %d | %.2f | %.2f | | | |\n", S[s].type->name, rows[r].what, rows[r].threads, ns,
+                       med);
+                continue;
+            }
+            printf("| %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %s |\n", S[s].type->name, rows[r].what,
+                   rows[r].threads, ns, med, base / ns, base_med / med, same ? "yes" : "NO");
             fflush(stdout);
         }
     }

@@ -1,10 +1,15 @@
 #!/bin/bash
 # ensemble_run.sh VIGEN [BUILD_DIR] — the ensemble benchmarks, side by side in
 # one run (docs/benchmarks.md, "Ensembles"):
-#   1. bench/ensemble_bench.c: Kepler ensemble of 10^5 orbits, Stormer-Verlet,
+#   1. bench/ensemble_bench.c: Kepler ensemble of 4096 orbits, Stormer-Verlet,
 #      Yoshida's triple jump and Gauss s = 2 emitted with --batch: the scalar
 #      loop, the OpenMP ensemble on 1 and 2 threads, the batch on 1 and 2
-#      threads;
+#      threads, and the hand-written AVX-512 Verlet (bench/kepler_verlet_avx512.h);
+#      once pinned to core 0 (the one-core rows) and once on cores 0 and 1
+#      (the two-thread rows against the one-thread rows of the same run),
+#      best and median of 7 runs;
+#   1b. bench/ensemble_count.sh: callgrind instructions per orbit-step (the
+#      batch's AVX2 clone: valgrind has no AVX-512);
 #   2. examples/mpi-ensemble (Gauss s = 2, the ensemble spread over ranks):
 #      1 and 2 MPI ranks of one thread each, wall-clock time of the
 #      integration and the gathering (fastest of three runs), and whether
@@ -26,15 +31,31 @@ done
 for n in g2 g2d; do
     "$VIGEN" emit "$SRC/tableaux/published/gauss_2.lua" --name ens_$n --batch -o "$OUT" -q
 done
-FLAGS="-std=c11 -O3 -Wall -Wextra -Wpedantic"
+# -fno-math-errno: the force's square root in vector registers (with errno
+# it is a call per orbit); the batched steps choose their clone at load time
+FLAGS="-std=c11 -O3 -fno-math-errno -Wall -Wextra -Wpedantic"
 gcc $FLAGS -fopenmp -I"$SRC/runtime/include" -I"$OUT" "$SRC/bench/ensemble_bench.c" "$OUT/ens_sv.c" \
     "$OUT/ens_y4.c" "$OUT/ens_g2.c" "$SRC"/runtime/{core,drive,diagnostics,lagrangian,poincare}/*.c -lgsl -lgslcblas -lm -o "$OUT/ensemble_bench"
 
 echo "## $(date -u '+%Y-%m-%d %H:%M UTC'), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores, gcc $(gcc -dumpfullversion) ($FLAGS)"
 echo "load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo
-"$OUT/ensemble_bench" 100000 200 256 3
+echo "One core (taskset -c 0):"
 echo
+taskset -c 0 "$OUT/ensemble_bench" 4096 1000 256 7
+echo
+echo "load average: $(cut -d' ' -f1-3 /proc/loadavg); two cores (taskset -c 0,1):"
+echo
+taskset -c 0,1 "$OUT/ensemble_bench" 4096 1000 256 7
+echo
+echo "load average after the run: $(cut -d' ' -f1-3 /proc/loadavg)"
+echo
+if command -v valgrind >/dev/null; then
+    echo "Instructions per orbit-step (callgrind, 1024 orbits, 200 - 100 steps):"
+    echo
+    bash "$SRC/bench/ensemble_count.sh" "$OUT/ensemble_bench" 1024
+    echo
+fi
 
 if ! command -v mpirun >/dev/null; then
     echo "MPI: not installed (libopenmpi-dev openmpi-bin), no MPI rows"

@@ -156,4 +156,10 @@ function(vigen_add_stepper)
   target_link_libraries(${VAS_TARGET} PUBLIC vigen::runtime)
   set_target_properties(${VAS_TARGET} PROPERTIES C_STANDARD 11 C_STANDARD_REQUIRED ON
     POSITION_INDEPENDENT_CODE ON)
+  # no fused multiply-adds by contraction (GNU C mode allows it where the
+  # target has FMA): the batched stepper, compiled without, must have the
+  # scalar stepper's bits
+  if(CMAKE_C_COMPILER_ID MATCHES "GNU|Clang")
+    target_compile_options(${VAS_TARGET} PRIVATE -ffp-contract=off)
+  endif()
 endfunction()

@@ -38,6 +38,7 @@ static void update_lines(vigen_slot *L, const char *N, const char *x, char sign,
     for (int kahan = 1; kahan >= 0; kahan--) {
         vigen_slot_line(L, kahan ? "if (kahan) {" : "} else {");
         vigen_slot_line(L, "    for (size_t c = 0; c < n; c++)");
+        vigen_slot_line(L, "        %s_lanes", N);
         vigen_slot_line(L, "        for (size_t j = 0; j < W; j++) {");
         vigen_slot_line(L, "            const size_t k = c * W + j;");
         vigen_slot_line(L, "            const double x = %s[k];", x);
@@ -61,6 +62,7 @@ static void batch_ops(vigen_slot *L, const emit_explicit *X, const char *N, int 
             const int isf = op->op == XOP_EVAL_F;
             const char *qa = strcmp(op->q, "q0") == 0 ? q0 : op->q, *pa = strcmp(op->p, "p0") == 0 ? p0 : op->p;
             if (mech && isf) {
+                vigen_slot_line(L, "%s_lanes", N);
                 vigen_slot_line(L, "for (size_t k = 0; k < nw; k++) X%ld[k] = imw[k] * %s[k];", op->dst, pa);
                 continue;
             }
@@ -90,9 +92,11 @@ static void batch_ops(vigen_slot *L, const emit_explicit *X, const char *N, int 
         char *ht = vigen_emit_hsum_op(op);
         switch (op->op) {
         case XOP_STAGE_Q:
+            vigen_slot_line(L, "%s_lanes", N);
             vigen_slot_line(L, "for (size_t k = 0; k < nw; k++) X%ld[k] = %s[k] + %s;", op->dst, q0, ht);
             break;
         case XOP_STAGE_P:
+            vigen_slot_line(L, "%s_lanes", N);
             vigen_slot_line(L, "for (size_t k = 0; k < nw; k++) X%ld[k] = %s[k] %c %s;", op->dst, p0, psign, ht);
             break;
         default: {

@@ -230,6 +230,7 @@ static void sub_lines(vigen_slot *L, const sub_target *T, const sub_coefs *U)
         }
         if (T->batch) {
             vigen_slot_line(L, "for (size_t c = 0; c < n; c++)");
+            vigen_slot_line(L, "    %s_lanes", T->N);
             vigen_slot_line(L, "    for (size_t j = 0; j < W; j++) {");
             vigen_slot_line(L, "        const size_t k = c * W + j;");
         } else {
