@@ -14,7 +14,9 @@
  * through the mechanical callbacks, the force an out-of-line function).
  * "newton" selects the emitted steppers' simplified Newton iteration.
  * Prints the forces and sweeps per step, the relative energy error at the
- * end and the status.  Built per problem like bench/peer_bench.c (the
+ * end, the status, the final q[0], p[0] (hexadecimal: bits to compare
+ * between two builds) and the wall time per step of this run (a single
+ * run: noise on a loaded machine).  Built per problem like bench/peer_bench.c (the
  * problem as macros PEER_FILE, PEER_NAME, PEER_PARAMS, PEER_DIM,
  * PEER_UNIT_MASS, PEER_H; the problem's file compiled here so that its
  * static force is inlined).  A measurement, not a test. */
@@ -23,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <vigen/problems.h>
 #include <vigen/runtime.h>
 #include PEER_FILE
@@ -128,6 +131,8 @@ int main(int argc, char **argv)
     memcpy(q, q0, sizeof q);
     memcpy(p, p0, sizeof p);
     int st;
+    struct timespec ts0, ts1;
+    clock_gettime(CLOCK_MONOTONIC, &ts0);
     if (strcmp(which, "gni2") == 0) st = gni2_run(steps, &t, q, p, &forces, &sweeps);
     else if (strcmp(which, "gni3") == 0) st = gni3_run(steps, &t, q, p, &forces, &sweeps);
     else if (strcmp(which, "gnil3") == 0) st = gnil3_run(steps, &t, q, p, &forces, &sweeps);
@@ -141,9 +146,11 @@ int main(int argc, char **argv)
         fprintf(stderr, "mech_icount: unknown stepper %s\n", which);
         return 2;
     }
+    clock_gettime(CLOCK_MONOTONIC, &ts1);
+    const double ns = 1e9 * ((double)(ts1.tv_sec - ts0.tv_sec) + 1e-9 * (double)(ts1.tv_nsec - ts0.tv_nsec)) / (double)steps;
     double H0 = vigen_problem_energy(pb, t0, q0, p0), H = vigen_problem_energy(pb, t, q, p);
-    printf("%s %ld forces/step %.3f sweeps/step %.3f rel.energy.error %.3e status %d q0 %a p0 %a\n", which, steps,
-           forces, sweeps, fabs((H - H0) / H0), st, q[0], p[0]);
+    printf("%s %ld forces/step %.3f sweeps/step %.3f rel.energy.error %.3e status %d q0 %a p0 %a ns/step %.1f\n", which,
+           steps, forces, sweeps, fabs((H - H0) / H0), st, q[0], p[0], ns);
     vigen_problem_free(pb);
     return st != 0;
 }

@@ -3,7 +3,8 @@
 # mechanical steppers against the hand-written anchors (bench/hand_gni_gauss.h)
 # under callgrind: for each stepper of bench/mech_icount.c, the whole
 # program's count at 2N steps less that at N steps, over N (start-up and
-# set-up cancel), beside the forces and sweeps per step and the energy error.
+# set-up cancel), beside the forces and sweeps per step, the energy error and
+# the wall time per step (fastest of 3 runs; noise on a loaded machine).
 # Emits gauss_2, gauss_3 and lobatto_iiia_iiib_3 with the vigen binary VIGEN
 # (with --dim for the direct-force rows, without for the callback rows),
 # builds with gcc -O2 into BUILD_DIR (default /tmp/vigen-bench-mech) and
@@ -21,7 +22,7 @@ INC=(-I"$SRC/runtime/include" -I"$SRC/runtime/problems" -I"$SRC/bench")
 # id|collection name|parameters|dim|unit masses|h|N|steppers|title
 declare -A ROWS=(
     [kepler]="kepler|kepler|e=0.6|2|1|(2 * 3.14159265358979323846 / 200)|20000|gni2 g2d g2 gni3 g3d g3 gnil3 l3d l3|Kepler, e = 0.6, h = 2 pi/200"
-    [fput-stiff]="fput|fput|n=32,beta=1e4|32|1|0.05|500|g2d g2d:newton g3d g3d:newton l3d l3d:newton|FPUT-beta chain, n = 32, beta = 10^4 (stiff), amplitude 1, h = 0.02"
+    [fput-stiff]="fput|fput|n=32,beta=1e4|32|1|0.05|500|g2d g2d:newton g3d g3d:newton l3d l3d:newton|FPUT-beta chain, n = 32, beta = 10^4 (stiff: h omega_max about 1.6), amplitude 1, h = 0.05"
 )
 
 rm -f "$OUT"/obj/*.o
@@ -53,8 +54,8 @@ for key in ${MECH_PROBLEMS:-kepler}; do
     echo
     echo "#### $title; instructions per step from $n and $((2 * n)) steps"
     echo
-    echo "| stepper | instructions / step | forces / step | sweeps / step | rel. energy error | x anchor |"
-    echo "|---|--:|--:|--:|--:|--:|"
+    echo "| stepper | instructions / step | forces / step | sweeps / step | rel. energy error | x anchor | ns / step (wall) |"
+    echo "|---|--:|--:|--:|--:|--:|--:|"
     declare -A IPS=()
     for s in $steppers; do
         st=${s%%:*} opt=
@@ -65,14 +66,16 @@ for key in ${MECH_PROBLEMS:-kepler}; do
                 >"$dir/run.txt" 2>"$dir/cg.err" || true
             counts+=("$(sed -n 's/^summary: //p' "$dir/cg.out")")
         done
-        read -r _ _ _ forces _ sweeps _ err _ status _ <"$dir/run.txt"
+        read -r _ _ _ forces _ sweeps _ err _ status _ _ _ _ _ _ <"$dir/run.txt"
+        # wall time beside the count: the fastest of 3 plain runs of 2N steps
+        ns=$(for r in 1 2 3; do "$dir/mech_icount" "$st" $((2 * n)) $opt | awk '{ print $NF }'; done | sort -g | head -1)
         ips=$(awk -v a="${counts[0]}" -v b="${counts[1]}" -v n="$n" 'BEGIN { printf "%.0f", (b - a) / n }')
         IPS[$s]=$ips
         case $st in g2* ) anchor=gni2 ;; g3* ) anchor=gni3 ;; l3* ) anchor=gnil3 ;; *) anchor=$st ;; esac
         ratio=-
         [ -n "${IPS[$anchor]:-}" ] && ratio=$(awk -v a="$ips" -v b="${IPS[$anchor]}" 'BEGIN { printf "%.2f", a / b }')
         [ "$status" = 0 ] || err="failed (status $status)"
-        echo "| $s | $ips | $forces | $sweeps | $err | $ratio |"
+        echo "| $s | $ips | $forces | $sweeps | $err | $ratio | $ns |"
     done
     unset IPS
 done

@@ -142,12 +142,15 @@ static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, const cha
             vigen_slot_line(st, "const %s y%ld = %s + m * (%s);", R, i, u, sum);
             vigen_slot_line(sw, "const %s y%ld = %s + m * (%s);", R, i, b, sum);
         } else {
-            /* no term at all: q + 0, as increment() writes it (-0 becomes +0) */
+            /* no term at all: q + 0, as increment() writes it (-0 becomes
+             * +0), set at the start and never moved by a sweep */
             vigen_slot_line(st, "const %s y%ld = %s%s;", R, i, u, base ? "" : " + 0");
-            vigen_slot_line(sw, "const %s y%ld = %s%s;", R, i, b, base ? "" : " + 0");
+            if (base) vigen_slot_line(sw, "const %s y%ld = %s;", R, i, b);
         }
-        vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
-        vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+        if (sum || base) {
+            vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
+            vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+        }
         free(u);
         free(b);
         free(base);
@@ -174,13 +177,21 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
     vigen_slot *nb = vigen_slots_lines(S, "MECH_NEWTON_BLOCKS");
     vigen_slot *nr = vigen_slots_lines(S, "MECH_NEWTON_RHS");
     vigen_slot *nu = vigen_slots_lines(S, "MECH_NEWTON_UPDATE");
+    /* a stage at q itself (no term: Lobatto's first) has the same force in
+     * every sweep: evaluated once, before them */
+    vigen_slot *cf = vigen_slots_lines(S, "NYS_CONST_FORCES");
+    slong nconst = 0;
     for (slong i = 1; i <= s; i++) {
         char *ti = vigen_emit_at_time(K->c[i - 1]);
+        int fixed = Y->ca[i - 1] == NULL;
+        for (slong j = 0; j < s && fixed; j++) fixed = Y->aat[(i - 1) * s + j] == NULL;
+        nconst += fixed;
         vigen_slot_line(ptr, "%s *const Q%ld = w->Q[%ld];", R, i, i - 1);
         if (vigen_emit_colused(Y->aat, s, i - 1)) vigen_slot_line(ptr, "const %s *const f%ld = w->G[%ld];", R, i, i - 1);
-        vigen_slot_line(fc, "%s_force(w, %s, Q%ld, w->G[%ld]);", N, ti, i, i - 1);
+        vigen_slot_line(fixed ? cf : fc, "%s_force(w, %s, Q%ld, w->G[%ld]);", N, ti, i, i - 1);
         free(ti);
     }
+    vigen_slots_textf(S, "NYS_FORCE_COUNT", "%ld * sweeps + %ld", (long)(s - nconst), (long)nconst);
     for (slong j = 1; j <= s; j++)
         if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(st, "const %s x%ld = f%ld[k];", R, j, j);
     for (slong i = 1; i <= s; i++) {
@@ -190,7 +201,6 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         vigen_slot_line(ss, "Q%ld[k] = y%ld;", i, i);
         vigen_slot_line(ss, "d = %s_abs(y%ld); sq = d > sq ? d : sq;", N, i);
         vigen_slot_line(nr, "rhs[%ld * n + k] = (double)(y%ld - Q%ld[k]);", i - 1, i, i);
-        vigen_slot_line(nr, "rhs[%ld * n + k] = 0;", s + i - 1);
         vigen_slot_line(nu, "d = (%s)rhs[%ld * n + k];", R, i - 1);
         vigen_slot_line(nu, "Q%ld[k] += d;", i);
         vigen_slot_line(nu, "dq = %s_inc_add(dq, d);", N);

@@ -218,7 +218,8 @@ static gauss2_workspace *gauss2_alloc_dim(size_t n, int separable, int mech, con
     w->fdwork = m; m += 6 * n;
     w->im = m; m += n;
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
-        w->nw = vigen_newton_alloc(2, n);
+        /* a mechanical problem in Nystrom form: the s n stage positions alone */
+        w->nw = mech ? vigen_newton_alloc_nystrom(2, n) : vigen_newton_alloc(2, n);
         if (w->nw == NULL) { gauss2_free(w); return NULL; }
     }
     w->t_next = 0;
@@ -627,7 +628,7 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
         st = vigen_iter_judge(&mon, rel, w->tol, max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdq_evals += 2 * sweeps + 0;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -635,8 +636,9 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
 /* Simplified Newton on the stage positions:
  * (I - h^2 (A At) (x) M^-1 J) dQ = Y0 + h^2 (A At) (x) M^-1 f(Q) - Q, with
  * J the Jacobian of the force at the step's start by forward differences
- * (vigen_mechanical_jacobian_fd; the LU is of the runtime's 2 s n system,
- * the momentum rows being the identity). */
+ * (vigen_mechanical_jacobian_fd): a system of s n unknowns
+ * (vigen_newton_alloc_nystrom), not the 2 s n of the PRK stage equations,
+ * an eighth of their LU's work. */
 static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = gauss2_n(w);
@@ -693,9 +695,7 @@ static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, c
             const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
             const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
             rhs[0 * n + k] = (double)(y1 - Q1[k]);
-            rhs[2 * n + k] = 0;
             rhs[1 * n + k] = (double)(y2 - Q2[k]);
-            rhs[3 * n + k] = 0;
         }
         st = vigen_newton_solve(w->nw);
         if (st != VIGEN_SUCCESS) break;
@@ -712,7 +712,7 @@ static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, c
         st = vigen_iter_judge(&mon, gauss2_rel(gauss2_inc_value(dq), sq), w->tol, w->opt.max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdq_evals += 2 * sweeps + 0;
     w->stats.last_iterations = sweeps;
     return st;
 }
