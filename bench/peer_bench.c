@@ -1,6 +1,8 @@
 /* peer_bench.c — the emitted mechanical steppers side by side with their
  * peers on one problem of the collection (runtime/problems/), in one run:
- *   1. Gauss-2: the hand-written stepper of bench/hand_gauss2.h with the
+ *   1. Gauss-2 (and Gauss-3, Lobatto IIIA-IIIB s = 3 against the
+ *      hand-written anchors of bench/hand_gni_gauss.h): the hand-written
+ *      stepper of bench/hand_gauss2.h with the
  *      problem's gradients inlined (the reference); the emitted Gauss-2 as a
  *      mechanical problem with --dim and the force called directly
  *      (NAME_DIRECT_FORCE), with and without start_force; through the
@@ -64,6 +66,8 @@ void peer_boost_force(double t, const double *q, double *f, void *ctx) { peer_fo
 #include "peer_g2d.c"
 #define PEER_G3D_DIRECT_FORCE peer_force
 #include "peer_g3d.c"
+#define PEER_L3D_DIRECT_FORCE peer_force
+#include "peer_l3d.c"
 #define PEER_SVD_DIRECT_FORCE peer_force
 #include "peer_svd.c"
 #define PEER_MCLD_DIRECT_FORCE peer_force
@@ -92,15 +96,7 @@ static double peer_inv_mass[PEER_DIM];
 
 /* the GNI_IRK2-style anchors (bench/hand_gni_gauss.h): Nystrom form,
  * static dimension, force inlined */
-#define GNI_NAME gni2
-#define GNI_S 2
-#define GNI_DIM PEER_DIM
-#define GNI_FORCE peer_force
-#define GNI_VEL(k, x) PEER_VELOCITY(k, x)
-#include "hand_gni_gauss.h"
-#define GNI_NAME gni3
-#define GNI_S 3
-#include "hand_gni_gauss.h"
+#include "gni_anchors.h"
 
 /* ------------------------------------------------------------ the problem */
 static vigen_problem *pb;
@@ -167,6 +163,7 @@ static const vigen_stats *hg2_stats_v(const void *ws)
     }
 GNI_ROW(gni2)
 GNI_ROW(gni3)
+GNI_ROW(gnil3)
 
 /* ------------------------------------------------------------- one row */
 typedef int (*step_fn)(void *w, double *t, double *q, double *p, double h);
@@ -393,6 +390,25 @@ static void gauss3_block(void)
     for (int i = 1; i < N; i++) peer_g3d_free(rows[i].w);
 }
 
+static void lobatto3_block(void)
+{
+    vigen_mechanical mech = { PEER_DIM, peer_force, NULL, pb, PEER_UNIT_MASS ? NULL : peer_inv_mass };
+    vigen_solver_options dflt = options(1, 0, 1);
+    row rows[] = {
+        { "hand-written Lobatto IIIA-IIIB s = 3, GNI_IRK2 style (bench/hand_gni_gauss.h)", gnil3_alloc(),
+          gnil3_step_v, gnil3_stats_v, gnil3_reset_v },
+        { "emitted Lobatto IIIA-IIIB s = 3, mechanical, --dim, direct force", peer_l3d_alloc_mechanical(&mech, &dflt),
+          EMITTED(peer_l3d) },
+    };
+    enum { N = sizeof rows / sizeof rows[0] };
+    printf("Lobatto IIIA-IIIB s = 3 (x hand: over the hand-written stepper)\n\n");
+    table_head("hand");
+    run_rows(rows, N, 0, 1, NULL);
+    printf("\n");
+    free(rows[0].w);
+    for (int i = 1; i < N; i++) peer_l3d_free(rows[i].w);
+}
+
 static void verlet_block(void)
 {
     vigen_mechanical mech = { PEER_DIM, peer_force, NULL, pb, PEER_UNIT_MASS ? NULL : peer_inv_mass };
@@ -521,6 +537,7 @@ int main(int argc, char **argv)
     printf("#### %s, %ld steps\n\n", PEER_TITLE, steps);
     gauss2_block();
     gauss3_block();
+    lobatto3_block();
     verlet_block();
     composition_block(argc > 2 ? argv[2] : NULL);
     vigen_problem_free(pb);

@@ -62,6 +62,7 @@ for row in "${PROBLEMS[@]}"; do
     # the steppers with the dimension fixed and the force called directly
     "$VIGEN" emit "$SRC/tableaux/published/gauss_2.lua" --name peer_g2d --dim "$dim" -o "$dir" -q
     "$VIGEN" emit "$SRC/tableaux/published/gauss_3.lua" --name peer_g3d --dim "$dim" -o "$dir" -q
+    "$VIGEN" emit "$SRC/tableaux/published/lobatto_iiia_iiib_3.lua" --name peer_l3d --dim "$dim" -o "$dir" -q
     "$VIGEN" emit "$SRC/tableaux/published/stormer_verlet_velocity.lua" --name peer_svd --dim "$dim" -o "$dir" -q
     "$VIGEN" emit "$SRC/tableaux/published/mclachlan_rkn_4.lua" --name peer_mcld --dim "$dim" -o "$dir" -q
     "$VIGEN" emit "$SRC/tableaux/published/yoshida_4.lua" --name peer_y4d --dim "$dim" -o "$dir" -q

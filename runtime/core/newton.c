@@ -1,5 +1,6 @@
 /* newton.c — the linear algebra of simplified Newton for PRK stage equations
- * (GSL LU with GSL's aborting error handler switched off). */
+ * and for their Nystrom form (GSL LU with GSL's aborting error handler
+ * switched off). */
 #include <stdlib.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
@@ -9,14 +10,15 @@
 #include <vigen/runtime.h>
 
 struct vigen_newton {
-    size_t s, n, N;           /* stages, dimension, N = 2 s n */
+    size_t s, n, N;           /* stages, dimension, N = 2 s n (s n in Nystrom form) */
     double *hess;             /* (2n)^2, row-major */
     gsl_matrix *M;
     gsl_permutation *perm;
     gsl_vector *rhs, *x;
 };
 
-vigen_newton *vigen_newton_alloc(size_t stages, size_t dim)
+/* The solver with N unknowns in stage blocks of dim. */
+static vigen_newton *newton_alloc(size_t stages, size_t dim, size_t N)
 {
     if (stages == 0 || dim == 0) return NULL;
     gsl_set_error_handler_off();
@@ -24,7 +26,7 @@ vigen_newton *vigen_newton_alloc(size_t stages, size_t dim)
     if (nw == NULL) return NULL;
     nw->s = stages;
     nw->n = dim;
-    nw->N = 2 * stages * dim;
+    nw->N = N;
     nw->hess = calloc(4 * dim * dim, sizeof(double));
     nw->M = gsl_matrix_alloc(nw->N, nw->N);
     nw->perm = gsl_permutation_alloc(nw->N);
@@ -36,6 +38,10 @@ vigen_newton *vigen_newton_alloc(size_t stages, size_t dim)
     }
     return nw;
 }
+
+vigen_newton *vigen_newton_alloc(size_t stages, size_t dim) { return newton_alloc(stages, dim, 2 * stages * dim); }
+
+vigen_newton *vigen_newton_alloc_nystrom(size_t stages, size_t dim) { return newton_alloc(stages, dim, stages * dim); }
 
 void vigen_newton_free(vigen_newton *nw)
 {
@@ -54,10 +60,19 @@ double *vigen_newton_rhs(vigen_newton *nw) { return nw->rhs->data; }
 void vigen_newton_matrix_identity(vigen_newton *nw) { gsl_matrix_set_identity(nw->M); }
 
 /* Q rows of stage i: M[Qi, Qj] -= ha Hpq,  M[Qi, Pj] -= ha Hpp;
- * P rows of stage i: M[Pi, Qj] += hat Hqq, M[Pi, Pj] += hat Hqp. */
+ * P rows of stage i: M[Pi, Qj] += hat Hqq, M[Pi, Pj] += hat Hqp.
+ * In Nystrom form only the first: M[Qi, Qj] -= ha Hpq. */
 void vigen_newton_matrix_block(vigen_newton *nw, size_t i, size_t j, double ha, double hat)
 {
     const size_t n = nw->n, s = nw->s, n2 = 2 * n;
+    if (nw->N == s * n) {
+        for (size_t r = 0; r < n; r++) {
+            const double *hp = nw->hess + (n + r) * n2;
+            double *mq = gsl_matrix_ptr(nw->M, i * n + r, 0);
+            for (size_t k = 0; k < n && ha != 0.0; k++) mq[j * n + k] -= ha * hp[k];
+        }
+        return;
+    }
     const size_t qi = i * n, pi = (s + i) * n, qj = j * n, pj = (s + j) * n;
     for (size_t r = 0; r < n; r++) {
         const double *hq = nw->hess + r * n2;          /* row r of d(dH/dq)/d(q,p) */

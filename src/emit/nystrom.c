@@ -113,6 +113,58 @@ static char *increment(const char *ca, char *const *row, slong s, const char *pr
     return sum2(a, b);
 }
 
+/* The fixed-point sweep on stage bases: stage i's position is
+ * base_i + m * (sum_j (A At)_ij x_j), base_i = qk + ca_i * hv formed once
+ * per step into w->F[i-1] (qk itself when ca_i = 0) -- the same sums, in
+ * the same order, as the one-expression form of increment(), so the same
+ * bits. */
+static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, const char *R, const char *N)
+{
+    vigen_slot *bp = vigen_slots_lines(S, "NYS_BASE_POINTERS");
+    vigen_slot *st = vigen_slots_lines(S, "NYS_START");
+    vigen_slot *sw = vigen_slots_lines(S, "NYS_SWEEP");
+    for (slong j = 1; j <= s; j++)
+        if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(sw, "const %s x%ld = f%ld[k];", R, j, j);
+    for (slong j = 1; j <= s; j++)
+        if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(st, "const %s x%ld = f%ld[k];", R, j, j);
+    for (slong i = 1; i <= s; i++) {
+        const char *ca = Y->ca[i - 1];
+        char *sum = vigen_emit_lin(Y->aat + (i - 1) * s, s, "x", "");
+        char *base = ca ? vigen_emit_times(ca, "hv") : NULL;
+        if (base) {
+            vigen_slot_line(bp, "%s *const b%ld = w->F[%ld];", R, i, i - 1);
+            vigen_slot_line(st, "const %s u%ld = qk + %s;", R, i, base);
+            vigen_slot_line(st, "b%ld[k] = u%ld;", i, i);
+        }
+        char *u = base ? vigen_strdup_printf("u%ld", i) : vigen_strdup("qk");
+        char *b = base ? vigen_strdup_printf("b%ld[k]", i) : vigen_strdup("q[k]");
+        if (sum) {
+            vigen_slot_line(st, "const %s y%ld = %s + m * (%s);", R, i, u, sum);
+            vigen_slot_line(sw, "const %s y%ld = %s + m * (%s);", R, i, b, sum);
+        } else {
+            /* no term at all: q + 0, as increment() writes it (-0 becomes
+             * +0), set at the start and never moved by a sweep */
+            vigen_slot_line(st, "const %s y%ld = %s%s;", R, i, u, base ? "" : " + 0");
+            if (base) vigen_slot_line(sw, "const %s y%ld = %s;", R, i, b);
+        }
+        if (sum || base) {
+            vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
+            vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+        }
+        free(u);
+        free(b);
+        free(base);
+        free(sum);
+    }
+}
+
+void vigen_emit_nys_batch_code(vigen_slots *S, slong s, const char *N)
+{
+    vigen_slot *sw = vigen_slots_lines(S, "MECH_SWEEP_STORE");
+    for (slong i = 1; i <= s; i++) vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
+    for (slong i = 1; i <= s; i++) vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+}
+
 void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int real)
 {
     const char *R = vigen_emit_reals[real].ctype;
@@ -122,17 +174,24 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
     vigen_slot *fc = vigen_slots_lines(S, "MECH_FORCES");
     vigen_slot *st = vigen_slots_lines(S, "MECH_STAGES");
     vigen_slot *ss = vigen_slots_lines(S, "MECH_START_STORE");
-    vigen_slot *sw = vigen_slots_lines(S, "MECH_SWEEP_STORE");
     vigen_slot *nb = vigen_slots_lines(S, "MECH_NEWTON_BLOCKS");
     vigen_slot *nr = vigen_slots_lines(S, "MECH_NEWTON_RHS");
     vigen_slot *nu = vigen_slots_lines(S, "MECH_NEWTON_UPDATE");
+    /* a stage at q itself (no term: Lobatto's first) has the same force in
+     * every sweep: evaluated once, before them */
+    vigen_slot *cf = vigen_slots_lines(S, "NYS_CONST_FORCES");
+    slong nconst = 0;
     for (slong i = 1; i <= s; i++) {
         char *ti = vigen_emit_at_time(K->c[i - 1]);
+        int fixed = Y->ca[i - 1] == NULL;
+        for (slong j = 0; j < s && fixed; j++) fixed = Y->aat[(i - 1) * s + j] == NULL;
+        nconst += fixed;
         vigen_slot_line(ptr, "%s *const Q%ld = w->Q[%ld];", R, i, i - 1);
         if (vigen_emit_colused(Y->aat, s, i - 1)) vigen_slot_line(ptr, "const %s *const f%ld = w->G[%ld];", R, i, i - 1);
-        vigen_slot_line(fc, "%s_force(w, %s, Q%ld, w->G[%ld]);", N, ti, i, i - 1);
+        vigen_slot_line(fixed ? cf : fc, "%s_force(w, %s, Q%ld, w->G[%ld]);", N, ti, i, i - 1);
         free(ti);
     }
+    vigen_slots_textf(S, "NYS_FORCE_COUNT", "%ld * sweeps + %ld", (long)(s - nconst), (long)nconst);
     for (slong j = 1; j <= s; j++)
         if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(st, "const %s x%ld = f%ld[k];", R, j, j);
     for (slong i = 1; i <= s; i++) {
@@ -141,15 +200,13 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         free(inc);
         vigen_slot_line(ss, "Q%ld[k] = y%ld;", i, i);
         vigen_slot_line(ss, "d = %s_abs(y%ld); sq = d > sq ? d : sq;", N, i);
-        vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
         vigen_slot_line(nr, "rhs[%ld * n + k] = (double)(y%ld - Q%ld[k]);", i - 1, i, i);
-        vigen_slot_line(nr, "rhs[%ld * n + k] = 0;", s + i - 1);
         vigen_slot_line(nu, "d = (%s)rhs[%ld * n + k];", R, i - 1);
         vigen_slot_line(nu, "Q%ld[k] += d;", i);
         vigen_slot_line(nu, "dq = %s_inc_add(dq, d);", N);
         vigen_slot_line(nu, "sq = %s_max(sq, %s_abs(Q%ld[k]));", N, N, i);
     }
-    for (slong i = 1; i <= s; i++) vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+    nys_base_code(S, Y, s, R, N);
     for (slong i = 0; i < s; i++)
         for (slong j = 0; j < s; j++)
             if (Y->aat[i * s + j])

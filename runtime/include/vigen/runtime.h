@@ -202,6 +202,14 @@ typedef struct vigen_newton vigen_newton;
 /* The solver of an s-stage method in dimension n (NULL when memory runs out),
  * and its release. */
 vigen_newton *vigen_newton_alloc(size_t stages, size_t dim);
+/* The solver of the Nystrom form of a mechanical problem's stage equations:
+ * the unknowns are the s stage positions alone (s n of them), the iteration
+ * matrix M = I - [ h^2 (A At)_ij M^-1 J ] (blocks i, j), with M^-1 J in the
+ * Hessian buffer's rows n..2n-1, columns 0..n-1 (where
+ * vigen_mechanical_jacobian_fd puts it) and ha = h^2 (A At)_ij given to
+ * vigen_newton_matrix_block (hat is not used); the right-hand side has s n
+ * entries.  NULL when memory runs out or stages or dim is 0. */
+vigen_newton *vigen_newton_alloc_nystrom(size_t stages, size_t dim);
 void vigen_newton_free(vigen_newton *nw);
 double *vigen_newton_hessian(vigen_newton *nw);              /* buffer to fill */
 void vigen_newton_matrix_identity(vigen_newton *nw);         /* M = I */
@@ -210,7 +218,7 @@ void vigen_newton_matrix_block(vigen_newton *nw, size_t i, size_t j, double ha, 
  * infinite entry of M (a Hessian from gradients that are not finite) or an
  * overflowing factorisation. */
 int vigen_newton_factor(vigen_newton *nw);
-double *vigen_newton_rhs(vigen_newton *nw);                  /* 2 s n doubles */
+double *vigen_newton_rhs(vigen_newton *nw);                  /* 2 s n doubles (s n: Nystrom) */
 /* rhs <- M^-1 rhs; VIGEN_ENONFINITE when rhs or the solution is not finite. */
 int vigen_newton_solve(vigen_newton *nw);
 

@@ -223,7 +223,8 @@ static gauss2_workspace *gauss2_alloc_dim(size_t n, int separable, int mech, con
     w->fdwork = m; m += 6 * n;
     w->im = m; m += n;
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
-        w->nw = vigen_newton_alloc(2, n);
+        /* a mechanical problem in Nystrom form: the s n stage positions alone */
+        w->nw = mech ? vigen_newton_alloc_nystrom(2, n) : vigen_newton_alloc(2, n);
         if (w->nw == NULL) { gauss2_free(w); return NULL; }
     }
     w->t_next = 0;
@@ -546,33 +547,65 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
 
 /* ---- mechanical problems: the implicit step in Nystrom form ------------- */
 
+/* A small static dimension: the component loops unrolled in full (for a
+ * planar problem their control costs as much as their body). */
+#if defined(__GNUC__) && GAUSS2_DIM > 0 && GAUSS2_DIM <= 4
+#define GAUSS2_UNROLL _Pragma("GCC unroll 4")
+#else
+#define GAUSS2_UNROLL
+#endif
+
+/* vigen_iter_judge's verdict in its common case, without the call: a
+ * finite nonzero increment below the one two sweeps back (or with fewer
+ * than two before it) and under the cap goes on (1), with the monitor's
+ * bookkeeping done; every other case (0) is for vigen_iter_judge itself. */
+static inline int gauss2_going(vigen_iter_monitor *m, double delta, int max_iter)
+{
+    if (!(delta > 0 && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
+    m->iter++;
+    m->prev2 = m->prev1;
+    m->prev1 = delta;
+    return 1;
+}
+
 /* Fixed-point iteration on the stage positions: the forces at every stage,
  * then Q_i <- q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j (one
  * force per stage and sweep), stopped by vigen_iter_judge on the relative
- * increment of Q (scale: the largest starting stage position).  v = M^-1 p
- * is left in w->P[0] for the update. */
+ * increment of Q (scale: the largest starting stage position).  The base
+ * q + h (sum_j a_ij) v of each stage is formed once, at the start, into
+ * w->F (unused by a mechanical problem), so that a sweep adds to it only
+ * h^2 M^-1 times the precomputed (A At) combination of the forces.
+ * v = M^-1 p is left in w->P[0] for the update. */
 static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = gauss2_n(w);
     const double *const im = w->im;
     double *const v = w->P[0];
     const double h2 = h * h;
+    const int max_iter = w->opt.max_iter;
     double *const Q1 = w->Q[0];
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
     const double *const f2 = w->G[1];
+    double *const b1 = w->F[0];
+    double *const b2 = w->F[1];
     vigen_iter_monitor mon;
     unsigned long sweeps = 0;
     int st;
     double sq = 0, d;
+    GAUSS2_UNROLL
     for (size_t k = 0; k < n; k++) {
         const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
         (void)hv; (void)m;
         v[k] = vk;
         const double x1 = f1[k];
         const double x2 = f2[k];
-        const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
-        const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+        const double u1 = qk + 0x1.b0cb174df99c7p-3 * hv;
+        b1[k] = u1;
+        const double y1 = u1 + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+        const double u2 = qk + 0x1.93cd3a2c8198ep-1 * hv;
+        b2[k] = u2;
+        const double y2 = u2 + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
         Q1[k] = y1;
         d = gauss2_abs(y1); sq = d > sq ? d : sq;
         Q2[k] = y2;
@@ -585,22 +618,25 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
         gauss2_force(w, t0 + 0x1.b0cb174df99c7p-3 * h, Q1, w->G[0]);
         gauss2_force(w, t0 + 0x1.93cd3a2c8198ep-1 * h, Q2, w->G[1]);
         sweeps++;
+        GAUSS2_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double qk = q[k], hv = h * v[k], m = h2 * im[k];
-            (void)hv; (void)m;
+            const double m = h2 * im[k];
+            (void)m;
             const double x1 = f1[k];
             const double x2 = f2[k];
-            const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
-            const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            const double y1 = b1[k] + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
             dq = gauss2_inc_add(dq, y1 - Q1[k]);
-            dq = gauss2_inc_add(dq, y2 - Q2[k]);
             Q1[k] = y1;
+            const double y2 = b2[k] + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            dq = gauss2_inc_add(dq, y2 - Q2[k]);
             Q2[k] = y2;
         }
-        st = vigen_iter_judge(&mon, gauss2_rel(gauss2_inc_value(dq), sq), w->tol, w->opt.max_iter);
+        const double rel = gauss2_rel(gauss2_inc_value(dq), sq);
+        if (gauss2_going(&mon, rel, max_iter)) continue;
+        st = vigen_iter_judge(&mon, rel, w->tol, max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdq_evals += 2 * sweeps + 0;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -608,8 +644,9 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
 /* Simplified Newton on the stage positions:
  * (I - h^2 (A At) (x) M^-1 J) dQ = Y0 + h^2 (A At) (x) M^-1 f(Q) - Q, with
  * J the Jacobian of the force at the step's start by forward differences
- * (vigen_mechanical_jacobian_fd; the LU is of the runtime's 2 s n system,
- * the momentum rows being the identity). */
+ * (vigen_mechanical_jacobian_fd): a system of s n unknowns
+ * (vigen_newton_alloc_nystrom), not the 2 s n of the PRK stage equations,
+ * an eighth of their LU's work. */
 static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = gauss2_n(w);
@@ -666,9 +703,7 @@ static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, c
             const double y1 = qk + 0x1.b0cb174df99c7p-3 * hv + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
             const double y2 = qk + 0x1.93cd3a2c8198ep-1 * hv + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
             rhs[0 * n + k] = (double)(y1 - Q1[k]);
-            rhs[2 * n + k] = 0;
             rhs[1 * n + k] = (double)(y2 - Q2[k]);
-            rhs[3 * n + k] = 0;
         }
         st = vigen_newton_solve(w->nw);
         if (st != VIGEN_SUCCESS) break;
@@ -685,7 +720,7 @@ static int gauss2_mech_newton(gauss2_workspace *w, double t0, const double *q, c
         st = vigen_iter_judge(&mon, gauss2_rel(gauss2_inc_value(dq), sq), w->tol, w->opt.max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdq_evals += 2 * sweeps + 0;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -749,6 +784,7 @@ GAUSS2_NOINLINE int gauss2_mech_implicit(gauss2_workspace *w, double *t, double 
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
+        GAUSS2_UNROLL
         for (size_t k = 0; k < n; k++) {
             const double hv = h * v[k], m = h2 * im[k];
             (void)hv; (void)m;

@@ -226,7 +226,8 @@ static verlet_workspace *verlet_alloc_dim(size_t n, int separable, int mech, con
     w->im = m; m += n;
     for (int i = 0; i < 4; i++) { w->x[i] = m; m += n; }
     if (w->opt.solver == VIGEN_SOLVER_NEWTON) {
-        w->nw = vigen_newton_alloc(2, n);
+        /* a mechanical problem in Nystrom form: the s n stage positions alone */
+        w->nw = mech ? vigen_newton_alloc_nystrom(2, n) : vigen_newton_alloc(2, n);
         if (w->nw == NULL) { verlet_free(w); return NULL; }
     }
     w->t_next = 0;
@@ -545,58 +546,87 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
 
 /* ---- mechanical problems: the implicit step in Nystrom form ------------- */
 
+/* A small static dimension: the component loops unrolled in full (for a
+ * planar problem their control costs as much as their body). */
+#if defined(__GNUC__) && VERLET_DIM > 0 && VERLET_DIM <= 4
+#define VERLET_UNROLL _Pragma("GCC unroll 4")
+#else
+#define VERLET_UNROLL
+#endif
+
+/* vigen_iter_judge's verdict in its common case, without the call: a
+ * finite nonzero increment below the one two sweeps back (or with fewer
+ * than two before it) and under the cap goes on (1), with the monitor's
+ * bookkeeping done; every other case (0) is for vigen_iter_judge itself. */
+static inline int verlet_going(vigen_iter_monitor *m, double delta, int max_iter)
+{
+    if (!(delta > 0 && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
+    m->iter++;
+    m->prev2 = m->prev1;
+    m->prev1 = delta;
+    return 1;
+}
+
 /* Fixed-point iteration on the stage positions: the forces at every stage,
  * then Q_i <- q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j (one
  * force per stage and sweep), stopped by vigen_iter_judge on the relative
- * increment of Q (scale: the largest starting stage position).  v = M^-1 p
- * is left in w->P[0] for the update. */
+ * increment of Q (scale: the largest starting stage position).  The base
+ * q + h (sum_j a_ij) v of each stage is formed once, at the start, into
+ * w->F (unused by a mechanical problem), so that a sweep adds to it only
+ * h^2 M^-1 times the precomputed (A At) combination of the forces.
+ * v = M^-1 p is left in w->P[0] for the update. */
 static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = verlet_n(w);
     const double *const im = w->im;
     double *const v = w->P[0];
     const double h2 = h * h;
+    const int max_iter = w->opt.max_iter;
     double *const Q1 = w->Q[0];
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
+    double *const b2 = w->F[1];
     vigen_iter_monitor mon;
     unsigned long sweeps = 0;
     int st;
     double sq = 0, d;
+    VERLET_UNROLL
     for (size_t k = 0; k < n; k++) {
         const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
         (void)hv; (void)m;
         v[k] = vk;
         const double x1 = f1[k];
         const double y1 = qk + 0;
-        const double y2 = qk + hv + m * (0x1p-1 * x1);
+        const double u2 = qk + hv;
+        b2[k] = u2;
+        const double y2 = u2 + m * (0x1p-1 * x1);
         Q1[k] = y1;
         d = verlet_abs(y1); sq = d > sq ? d : sq;
         Q2[k] = y2;
         d = verlet_abs(y2); sq = d > sq ? d : sq;
     }
     if (sq == 0) sq = 1;
+    verlet_force(w, t0, Q1, w->G[0]);
     vigen_iter_start(&mon);
     for (;;) {
         verlet_inc dq = 0;
-        verlet_force(w, t0, Q1, w->G[0]);
         verlet_force(w, t0 + h, Q2, w->G[1]);
         sweeps++;
+        VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double qk = q[k], hv = h * v[k], m = h2 * im[k];
-            (void)hv; (void)m;
+            const double m = h2 * im[k];
+            (void)m;
             const double x1 = f1[k];
-            const double y1 = qk + 0;
-            const double y2 = qk + hv + m * (0x1p-1 * x1);
-            dq = verlet_inc_add(dq, y1 - Q1[k]);
+            const double y2 = b2[k] + m * (0x1p-1 * x1);
             dq = verlet_inc_add(dq, y2 - Q2[k]);
-            Q1[k] = y1;
             Q2[k] = y2;
         }
-        st = vigen_iter_judge(&mon, verlet_rel(verlet_inc_value(dq), sq), w->tol, w->opt.max_iter);
+        const double rel = verlet_rel(verlet_inc_value(dq), sq);
+        if (verlet_going(&mon, rel, max_iter)) continue;
+        st = vigen_iter_judge(&mon, rel, w->tol, max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdq_evals += 1 * sweeps + 1;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -604,8 +634,9 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
 /* Simplified Newton on the stage positions:
  * (I - h^2 (A At) (x) M^-1 J) dQ = Y0 + h^2 (A At) (x) M^-1 f(Q) - Q, with
  * J the Jacobian of the force at the step's start by forward differences
- * (vigen_mechanical_jacobian_fd; the LU is of the runtime's 2 s n system,
- * the momentum rows being the identity). */
+ * (vigen_mechanical_jacobian_fd): a system of s n unknowns
+ * (vigen_newton_alloc_nystrom), not the 2 s n of the PRK stage equations,
+ * an eighth of their LU's work. */
 static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = verlet_n(w);
@@ -642,11 +673,11 @@ static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, c
         }
         (void)sq;
     }
+    verlet_force(w, t0, Q1, w->G[0]);
     vigen_iter_start(&mon);
     for (;;) {
         verlet_inc dq = 0;
         double sq = 0, d;
-        verlet_force(w, t0, Q1, w->G[0]);
         verlet_force(w, t0 + h, Q2, w->G[1]);
         sweeps++;
         for (size_t k = 0; k < n; k++) {
@@ -656,9 +687,7 @@ static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, c
             const double y1 = qk + 0;
             const double y2 = qk + hv + m * (0x1p-1 * x1);
             rhs[0 * n + k] = (double)(y1 - Q1[k]);
-            rhs[2 * n + k] = 0;
             rhs[1 * n + k] = (double)(y2 - Q2[k]);
-            rhs[3 * n + k] = 0;
         }
         st = vigen_newton_solve(w->nw);
         if (st != VIGEN_SUCCESS) break;
@@ -675,7 +704,7 @@ static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, c
         st = vigen_iter_judge(&mon, verlet_rel(verlet_inc_value(dq), sq), w->tol, w->opt.max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 2 * sweeps;
+    w->stats.dHdq_evals += 1 * sweeps + 1;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -721,6 +750,7 @@ VERLET_NOINLINE int verlet_mech_implicit(verlet_workspace *w, double *t, double 
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
+        VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
             const double hv = h * v[k], m = h2 * im[k];
             (void)hv; (void)m;
