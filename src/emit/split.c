@@ -18,7 +18,11 @@
  * would change the state every step returns, which output at any time,
  * events and restart read.  Time is carried by flow 0: substep k starts at
  * t0 + tau_k h with tau_k the sum of the coefficients of flow 0 before it,
- * rounded from its ball like the coefficients. */
+ * rounded from its ball like the coefficients.
+ *
+ * A bracket flow (degree k: the Poisson bracket of k letters) advances by
+ * coef h^k: its table row carries k, and the stepper passes coef times the
+ * product h h ... h (k factors, computed once per step). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -34,6 +38,8 @@ typedef struct {
     slong n;
     int *flow;
     char *const *coef;
+    const int *degree;     /* [nflows] bracket flows: a substep advances flow j by coef h^degree[j]; else NULL */
+    int *const *bracket;   /* [nflows] the letters of a bracket flow, NULL for a plain one */
 } split_input;
 
 static const char *const kick_drift_names[] = { "drift", "kick" };
@@ -58,6 +64,20 @@ static int split_input_get(split_input *in, emit_ctx *E)
     if (in->flow == NULL) abort();
     for (slong k = 0; k < in->n; k++) in->flow[k] = t->substep_drift[k] ? 0 : 1;
     in->coef = t->substep_coef;
+    if (t->flows != NULL && t->flows->nstep > 0) {
+        /* bracket flows: the step's substeps, which the tableau leaves out */
+        const vigen_flows *fl = t->flows;
+        in->nflows = fl->nflows;
+        in->names = (const char *const *)fl->names;
+        in->n = fl->nstep;
+        free(in->flow);
+        in->flow = malloc(sizeof(int) * (size_t)fl->nstep);
+        if (in->flow == NULL) abort();
+        memcpy(in->flow, fl->step_flow, sizeof(int) * (size_t)fl->nstep);
+        in->coef = fl->step_coef;
+        in->degree = fl->degree;
+        in->bracket = fl->bracket;
+    }
     return VIGEN_OK;
 }
 
@@ -200,6 +220,11 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
     vigen_slots_textf(S, "ORDER", "%d", order);
     vigen_slots_textf(S, "NFLOWS", "%ld", (long)in->nflows);
     vigen_slots_textf(S, "SUB_COUNT", "%ld", (long)U->m);
+    int maxdeg = 1;
+    for (slong k = 0; k < in->nflows && in->degree; k++)
+        if (in->degree[k] > maxdeg) maxdeg = in->degree[k];
+    vigen_slots_flag(S, "BRACKETS", in->degree != NULL);
+    vigen_slots_textf(S, "MAX_DEGREE", "%d", maxdeg);
     if (E->inexact_done)
         vigen_slots_textf(S, "COEF_HEAD", "rounded to %s from the decimals as written (--allow-inexact: some "
                           "coefficients have too few digits to round correctly)", R->ctype);
@@ -225,6 +250,16 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
         nm[k] = vigen_emit_safe_text(in->names[k], 80);
         constant[k] = flow_constant(uname, nm[k]);
         vigen_slot_line(D, "flow %ld: \"%s\" (%s)%s", (long)k, nm[k], constant[k], k == 0 ? ", carries the time" : "");
+        if (in->degree != NULL && in->degree[k] > 1) {
+            vigen_strbuf br;
+            vigen_strbuf_init(&br);
+            for (int j = 0; j < in->degree[k]; j++) vigen_strbuf_append(&br, j < 2 ? "{" : "");
+            for (int j = 0; j < in->degree[k]; j++)
+                vigen_strbuf_printf(&br, "%s%s%s", j ? ", " : "", nm[in->bracket[k][j]], j ? "}" : "");
+            vigen_slot_line(D, "  the Hamiltonian %s (Poisson brackets), advanced by coef h^%d", br.data,
+                            in->degree[k]);
+            vigen_strbuf_clear(&br);
+        }
         vigen_slot_line(F, "%s = %ld%s", constant[k], (long)k, k + 1 < in->nflows ? "," : "");
     }
     vigen_slot *C = vigen_slots_lines(S, "COEF_LINES");
@@ -233,8 +268,12 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
         char *d = vigen_emit_safe_text(U->text[k], 200);
         vigen_slot_line(C, "%2ld. %s, %s", (long)k + 1, nm[U->flow[k]], d);
         free(d);
-        vigen_slot_line(T, "{ %s, %s, %s }%s", constant[U->flow[k]], U->coef[k], U->time[k] ? U->time[k] : "0",
-                        k + 1 < U->m ? "," : "");
+        if (in->degree != NULL)
+            vigen_slot_line(T, "{ %s, %d, %s, %s }%s", constant[U->flow[k]], in->degree[U->flow[k]], U->coef[k],
+                            U->time[k] ? U->time[k] : "0", k + 1 < U->m ? "," : "");
+        else
+            vigen_slot_line(T, "{ %s, %s, %s }%s", constant[U->flow[k]], U->coef[k], U->time[k] ? U->time[k] : "0",
+                            k + 1 < U->m ? "," : "");
     }
     for (slong k = 0; k < in->nflows; k++) {
         free(constant[k]);
