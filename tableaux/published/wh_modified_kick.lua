@@ -11,11 +11,11 @@
 -- [[A,B],B] + O(h^5) (the symmetric BCH formula), and exp(c W), W =
 -- [[A,B],B], adds c eps^2 h^3 W (vigen check derives and certifies it:
 -- generalized order (2,4), against (2,2) for the plain map).  The eps h^2
--- term is a corrector's business: wisdom_holman_modified_kick_corrected.
+-- term is a corrector's business: wh_modified_kick_corrected.
 -- J. Wisdom, M. Holman, J. Touma, "Symplectic correctors", Fields Inst.
 -- Commun. 10 (1996) 217-244; J. Wisdom, Astron. J. 131 (2006) 2294-2298.
 return {
-  name = "wisdom_holman_modified_kick",
+  name = "wh_modified_kick",
   generalized_order = {2, 4},
   symplectic = true,
   source = "kernel method of J. Wisdom, M. Holman, J. Touma, \"Symplectic correctors\", Fields Inst. Commun. 10 (1996) 217-244, and J. Wisdom, Astron. J. 131 (2006) 2294: the Wisdom-Holman map (Kepler h/2, interaction h, Kepler h/2) whose kick is exp(h eps B + c eps^2 h^3 {{A,B},B}); c = -1/12 derived with vigen check (it removes the eps^2 h^2 term)",

@@ -15,7 +15,7 @@
 -- its conjugation shifts the kernel's eps^2 h^2 term by -2 sum a_i b_i
 -- (= -1/24, fixed by its k = 1 equation), so that the kick's bracket
 -- coefficient is c = -1/24 here, not the -1/12 of the bare kernel
--- (wisdom_holman_modified_kick).  The corrector's own eps^2 h^3 term,
+-- (wh_modified_kick).  The corrector's own eps^2 h^3 term,
 -- (sum_i a_i b_i^2) [[A,B],B] to the sign the checker decides, would leave an
 -- eps^2 h^3 error in the step: the corrector ends with the bracket flow for
 -- x h^3, x = sum_i a_i b_i^2 = 3892997393283437/642706774802104320 /
@@ -23,7 +23,7 @@
 -- J. Wisdom, M. Holman, J. Touma, "Symplectic correctors", Fields Inst.
 -- Commun. 10 (1996) 217-244; J. Wisdom, Astron. J. 131 (2006) 2294-2298.
 return {
-  name = "wisdom_holman_modified_kick_corrected",
+  name = "wh_modified_kick_corrected",
   generalized_order = {12, 4},
   symplectic = true,
   source = "kernel method of J. Wisdom, M. Holman, J. Touma, \"Symplectic correctors\", Fields Inst. Commun. 10 (1996) 217-244: the Wisdom-Holman map with the modified kick exp(h eps B + c eps^2 h^3 {{A,B},B}), processed by their corrector of order 11 (a_i = i sqrt(7/40), b_i from f(x) = (x/2)/sinh(x/2), exact); c = -1/24 and the corrector's bracket term derived with vigen check",
