@@ -117,13 +117,7 @@ echo "return { name = 'comp', composition = { base = 'sabac_2', gamma = { '1/2',
 [ $? = 2 ] && grep -q "composition.base has bracket flows" "$T/out" || bad "composition of sabac_2: $(cat "$T/out")"
 
 # malformed brackets: exit 2, one line naming the file and the entry
-refuse() {   # file  expected text
-  "$VIGEN" check "$T/$1" > "$T/out" 2> "$T/err"
-  local rc=$?
-  [ $rc = 2 ] || bad "$1: exit $rc, expected 2"
-  [ "$(wc -l < "$T/err")" = 1 ] || bad "$1: not one line: $(cat "$T/err")"
-  grep -qF "$1" "$T/err" && grep -qF "$2" "$T/err" || bad "$1: message '$(cat "$T/err")' lacks '$2'"
-}
+. "$(dirname "$0")/refuse.bash"
 S='splitting = { { "k", "1/2" }, { "i", "1" }, { "k", "1/2" } }'
 echo "return { name = 'x', flows = { 'k', 'i', 'g' }, brackets = { g = { 'k', 'moon', 'i' } }, $S }" > "$T/letter.lua"
 refuse letter.lua 'brackets.g[2] "moon" is not a flow of this file ("k", "i", "g")'

@@ -71,6 +71,13 @@ static int bracket_ab(double t, double h, double *q, double *p, void *ctx)
 static const vigen_flow_fn flows3[3] = { drift, kick, gradient };
 static const vigen_flow_fn flows_ab[3] = { drift, kick, bracket_ab };
 
+/* the oscillator with the first nflows of flows3 (drift, kick, gradient) */
+static vigen_split_problem problem(osc *o, size_t nflows)
+{
+    vigen_split_problem sp = { 1, nflows, flows3, o, NULL, NULL };
+    return sp;
+}
+
 /* the error at T = 1 of n steps from (q, p) = (1, 0.5) */
 static double error_at_1(const vigen_stepper_type *T, void *w, const osc *o, int n)
 {
@@ -93,8 +100,7 @@ static void check_ratio(const vigen_stepper_type *T, void *w, const osc *o, int 
 static void test_sabac(void)
 {
     osc o = { 1.0, 0, 0 };
-    vigen_split_problem sp3 = { 1, 3, flows3, &o, NULL, NULL };
-    vigen_split_problem sp2 = { 1, 2, flows3, &o, NULL, NULL };
+    vigen_split_problem sp3 = problem(&o, 3), sp2 = problem(&o, 2);
     bx_sabac2_workspace *wc = bx_sabac2_alloc_split(&sp3, NULL);
     bx_saba2_workspace *ws = bx_saba2_alloc_split(&sp2, NULL);
     CHECK(wc != NULL && ws != NULL);
@@ -121,8 +127,7 @@ static void test_sabac(void)
 static void test_modified_kick(void)
 {
     osc o = { 1.0, 0, 0 };
-    vigen_split_problem sp3 = { 1, 3, flows3, &o, NULL, NULL };
-    vigen_split_problem sp2 = { 1, 2, flows3, &o, NULL, NULL };
+    vigen_split_problem sp3 = problem(&o, 3), sp2 = problem(&o, 2);
     bx_mk_workspace *wm = bx_mk_alloc_split(&sp3, NULL);
     bx_saba1_workspace *w1 = bx_saba1_alloc_split(&sp2, NULL);
     CHECK(wm != NULL && w1 != NULL);
