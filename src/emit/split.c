@@ -253,7 +253,7 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
         if (in->degree != NULL && in->degree[k] > 1) {
             vigen_strbuf br;
             vigen_strbuf_init(&br);
-            for (int j = 0; j < in->degree[k]; j++) vigen_strbuf_append(&br, j < 2 ? "{" : "");
+            for (int j = 1; j < in->degree[k]; j++) vigen_strbuf_append(&br, "{");
             for (int j = 0; j < in->degree[k]; j++)
                 vigen_strbuf_printf(&br, "%s%s%s", j ? ", " : "", nm[in->bracket[k][j]], j ? "}" : "");
             vigen_slot_line(D, "  the Hamiltonian %s (Poisson brackets), advanced by coef h^%d", br.data,

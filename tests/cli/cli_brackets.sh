@@ -109,6 +109,14 @@ for row in "sabac_1 +2  \(2,4\)" "sabac_4 +4  \(8,4\)" "wh_modified_kick +2  \(2
   grep -Eq "^$row " "$T/list" || bad "vigen list lacks '$row': $(grep "${row%% *}" "$T/list")"
 done
 
+# the emitted header names a bracket flow's Hamiltonian and its power of h
+"$VIGEN" emit "$P/sabac_2.lua" --name s2 -o "$T" > /dev/null 2>&1 || bad "emit sabac_2: exit $?"
+grep -qF 'the Hamiltonian {{kepler, interaction}, interaction} (Poisson brackets), advanced by coef h^3' "$T/s2.h" \
+  || bad "sabac_2's header: $(grep -i hamiltonian "$T/s2.h")"
+grep -qF 'S2_ORDER 4' "$T/s2.h" || bad "sabac_2's order: $(grep ORDER "$T/s2.h")"
+"$VIGEN" emit "$SRC/tests/data/emit/split/bracket_ab.lua" --name ab -o "$T" > /dev/null 2>&1 || bad "emit bracket_ab: exit $?"
+grep -qF 'the Hamiltonian {a, b} (Poisson brackets), advanced by coef h^2' "$T/ab.h" || bad "ab's header: $(grep -i hamiltonian "$T/ab.h")"
+
 # the PRK variant and a composition of a method with bracket flows: refused
 "$VIGEN" emit "$P/sabac_2.lua" --name s --variant prk -o "$T" > "$T/out" 2>&1
 [ $? = 2 ] && grep -q "bracket flows, which only the split variant emits" "$T/out" || bad "emit --variant prk: $(cat "$T/out")"
