@@ -314,6 +314,8 @@ typedef struct {
     int claim_status;            /* generalized_order claimed: tri-state (VIGEN_CHECK_YES ...); -1 absent */
     int claim_k;
     int claim[VIGEN_MAX_GENERALIZED];
+    int brackets;                /* bracket flows of the file: the step's series has them, while the tableau
+                                    (the tree conditions, stability, cost) is of the plain flows' substeps alone */
 } vigen_check_generalized;
 
 /* The linear stability interval on q'' = -omega^2 q (stability.c). */

@@ -29,7 +29,7 @@
 /* The named flows of a splitting file (`flows = {...}`,
  * src/method/splitting_file.h) whose method became this tableau.  Two flows:
  * the first is the letter A of the substeps (substep_drift[k] = 1), the
- * second B. */
+ * second B; bracket flows besides them: below. */
 typedef struct {
     slong nflows;
     char **names;          /* [nflows] */
@@ -38,6 +38,15 @@ typedef struct {
                             * the last ncorrector its inverse (kernel between); 0 otherwise */
     int ngeneralized;      /* the claim generalized_order = {r1, ..., rk}; 0 when absent */
     int generalized[VIGEN_MAX_GENERALIZED];
+    /* Bracket flows (`brackets` of the file): NULL and 0 when it has none.
+     * Then the tableau (and its substeps) is the method of the plain flows'
+     * substeps alone, and one step of the method is step_flow/step_coef. */
+    int *degree;           /* [nflows] 1 for a plain flow, k for a bracket of k letters */
+    int **bracket;         /* [nflows] NULL for a plain flow, else its degree[j] letters (0 or 1, the plain
+                            * flows), the left-nested Poisson bracket {{L1, L2}, L3}... */
+    slong nstep;           /* substeps of one step (C, the kernel, C^-1), bracket flows included */
+    int *step_flow;        /* [nstep] flow indices */
+    char **step_coef;      /* [nstep] coefficient texts: flow j advances by coef h^degree[j] */
 } vigen_flows;
 
 typedef struct {

@@ -234,6 +234,13 @@ void chk_lie_bracket(arb_ptr out, vigen_strbuf *sb, slong b, slong n, slong N, s
 int chk_lie_log(arb_ptr lg, const vigen_tableau *t, slong N, int flip, slong prec, vigen_error *err);
 void chk_lie_lyndon(vigen_check_lie_error *le, arb_ptr lg, slong N, slong n, int nb, slong prec);
 slong chk_adequate_prec(const vigen_tableau *t);
+/* The substeps of one step as the Lie series reads them: the tableau's, or
+ * for a method with bracket flows its step (vigen_flows.step_*): their
+ * number and the coefficient text of substep k.  chk_lie_log takes a
+ * bracket flow's substep as exp(coef X), X its bracket in the free Lie
+ * algebra (homogeneous of degree its letters: h^k). */
+slong chk_lie_step_count(const vigen_tableau *t);
+const char *chk_lie_step_coef(const vigen_tableau *t, slong k);
 
 /* simplifying.c: the simplifying assumptions of one part (c, A, b) of the
  * tableau, decided: B(k) sum_i b_i c_i^(k-1) = 1/k, C(k) sum_j a_ij

@@ -209,6 +209,8 @@ int chk_generalized(chk_round *rd, vigen_error *err)
     const vigen_flows *fl = t->flows;
     g->computed = 1;
     g->processed = fl->ncorrector > 0;
+    g->brackets = 0;
+    for (slong j = 0; j < fl->nflows && fl->degree; j++) g->brackets += fl->degree[j] > 1;
     int flip = fl->perturbation == 0;
     g->flipped = flip;
     g->letter_a = vigen_strdup(fl->names[flip ? 1 : 0]);
@@ -218,7 +220,8 @@ int chk_generalized(chk_round *rd, vigen_error *err)
         if (fl->generalized[j] + 1 > N) N = fl->generalized[j] + 1;
     if (N > VIGEN_GEN_MAX_DEGREE) N = VIGEN_GEN_MAX_DEGREE;
     g->degree = N;
-    for (slong k = 0; k < t->nsubsteps; k++) g->rounded |= vigen_tableau_entry_is_rounded(t->substep_coef[k]);
+    for (slong k = 0; k < chk_lie_step_count(t); k++)
+        g->rounded |= vigen_tableau_entry_is_rounded(chk_lie_step_coef(t, k));
     slong prec = rd->cx->prec < 128 ? 128 : rd->cx->prec, size = (slong)1 << (N + 1);
     arb_ptr lg = _arb_vec_init(size), lg2 = _arb_vec_init(size);
     int rc = chk_lie_log(lg, t, N, flip, prec, err);

@@ -127,6 +127,11 @@ int vigen_emit_certified_order_family(const vigen_tableau *t, int family)
         int at_least, undecided;
         int p = vigen_check_certified_order(&rep, family, &at_least, &undecided);
         if (!at_least && !undecided) order = p;
+        /* bracket flows, which the tableau leaves out: the order of the step's Lie series */
+        const vigen_check_generalized *g = rep.generalized;
+        if (u.flows != NULL && u.flows->nstep > 0)
+            order = g != NULL && g->computed && g->why == NULL && g->classical_state == VIGEN_GEN_DECIDED
+                        ? g->classical : -1;
     }
     vigen_error_clear(&err);
     vigen_check_report_clear(&rep);

@@ -126,6 +126,9 @@ int vigen_emit_render(const vigen_tableau *t, const vigen_emit_options *opt, cha
     int rc = check_options(&variant, opt, err);
     if (rc != VIGEN_OK) return rc;
     if (opt->variant == NULL && named_flows(t)) variant = vigen_emit_variant_find("split");
+    if (t->flows != NULL && t->flows->nstep > 0 && strcmp(variant->name, "split") != 0)
+        return vigen_error_set(err, VIGEN_E_USAGE, "'%s' has bracket flows, which only the split variant emits (the "
+                               "flows as the user's functions)", t->name ? t->name : "unnamed");
     char *id = vigen_emit_identifier(opt->name ? opt->name : "stepper");
     emit_ctx E;
     memset(&E, 0, sizeof E);

@@ -22,7 +22,11 @@
  * and its first added, when they are of one flow) and C^-1, each merged
  * within itself.  Time is carried by flow 0: substep k starts at
  * t0 + tau_k h with tau_k the sum of the coefficients of flow 0 before it
- * in the step C K C^-1, rounded from its ball like the coefficients. */
+ * in the step C K C^-1, rounded from its ball like the coefficients.
+ *
+ * A bracket flow (degree k: the Poisson bracket of k letters) advances by
+ * coef h^k: its table row carries k, and the stepper passes coef times the
+ * product h h ... h (k factors, formed at the call). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,6 +44,8 @@ typedef struct {
     slong ncorrector;
     int *flow;
     char *const *coef;
+    const int *degree;     /* [nflows] bracket flows: a substep advances flow j by coef h^degree[j]; else NULL */
+    int *const *bracket;   /* [nflows] the letters of a bracket flow, NULL for a plain one */
 } split_input;
 
 static const char *const kick_drift_names[] = { "drift", "kick" };
@@ -65,6 +71,20 @@ static int split_input_get(split_input *in, emit_ctx *E)
     if (in->flow == NULL) abort();
     for (slong k = 0; k < in->n; k++) in->flow[k] = t->substep_drift[k] ? 0 : 1;
     in->coef = t->substep_coef;
+    if (t->flows != NULL && t->flows->nstep > 0) {
+        /* bracket flows: the step's substeps, which the tableau leaves out */
+        const vigen_flows *fl = t->flows;
+        in->nflows = fl->nflows;
+        in->names = (const char *const *)fl->names;
+        in->n = fl->nstep;
+        free(in->flow);
+        in->flow = malloc(sizeof(int) * (size_t)fl->nstep);
+        if (in->flow == NULL) abort();
+        memcpy(in->flow, fl->step_flow, sizeof(int) * (size_t)fl->nstep);
+        in->coef = fl->step_coef;
+        in->degree = fl->degree;
+        in->bracket = fl->bracket;
+    }
     return VIGEN_OK;
 }
 
@@ -247,16 +267,22 @@ static char *flow_constant(const char *uname, const char *name)
     return sb.data;
 }
 
-/* One row of a substep table: the flow's constant, the coefficient and the
- * start time (an exact zero: 0). */
-static void sub_row(vigen_slot *T, char *const *constant, int flow, const char *coef, const char *time, int more)
+/* One row of a substep table: the flow's constant, its degree when the
+ * method has bracket flows (degree != NULL), the coefficient and the start
+ * time (an exact zero: 0). */
+static void sub_row(vigen_slot *T, char *const *constant, const int *degree, int flow, const char *coef,
+                    const char *time, int more)
 {
-    vigen_slot_line(T, "{ %s, %s, %s }%s", constant[flow], coef, time ? time : "0", more ? "," : "");
+    if (degree != NULL)
+        vigen_slot_line(T, "{ %s, %d, %s, %s }%s", constant[flow], degree[flow], coef, time ? time : "0",
+                        more ? "," : "");
+    else
+        vigen_slot_line(T, "{ %s, %s, %s }%s", constant[flow], coef, time ? time : "0", more ? "," : "");
 }
 
 /* The rows of NAME_advance's table (ADV_TABLE), each group under a comment,
  * and their counts. */
-static void advance_texts(vigen_slots *S, char *const *constant, const split_advance *A)
+static void advance_texts(vigen_slots *S, char *const *constant, const int *degree, const split_advance *A)
 {
     const split_subs *group[3] = { &A->pre, &A->kern, &A->post };
     static const char *const what[3] = { "the corrector C, once at the start", "one step of the kernel",
@@ -273,12 +299,12 @@ static void advance_texts(vigen_slots *S, char *const *constant, const split_adv
         const split_subs *U = group[g];
         if (U->m > 0) vigen_slot_line(T, "/* %s */", what[g]);
         for (slong k = 0; k < U->m; k++, row++)
-            sub_row(T, constant, U->flow[k], U->coef[k], U->time[k], row + 1 < count);
+            sub_row(T, constant, degree, U->flow[k], U->coef[k], U->time[k], row + 1 < count);
         if (g == 1 && A->join) {
             char *d = vigen_emit_safe_text(A->join_text, 200);
             vigen_slot_line(T, "/* the join: the last substep of a step and the first of the next, %s */", d);
             free(d);
-            sub_row(T, constant, A->join_flow, A->join_coef, A->join_time, ++row < count);
+            sub_row(T, constant, degree, A->join_flow, A->join_coef, A->join_time, ++row < count);
         }
     }
 }
@@ -307,6 +333,7 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
     vigen_slots_textf(S, "ORDER", "%d", order);
     vigen_slots_textf(S, "NFLOWS", "%ld", (long)in->nflows);
     vigen_slots_textf(S, "SUB_COUNT", "%ld", (long)U->m);
+    vigen_slots_flag(S, "BRACKETS", in->degree != NULL);
     if (E->inexact_done)
         vigen_slots_textf(S, "COEF_HEAD", "rounded to %s from the decimals as written (--allow-inexact: some "
                           "coefficients have too few digits to round correctly)", R->ctype);
@@ -332,6 +359,16 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
         nm[k] = vigen_emit_safe_text(in->names[k], 80);
         constant[k] = flow_constant(uname, nm[k]);
         vigen_slot_line(D, "flow %ld: \"%s\" (%s)%s", (long)k, nm[k], constant[k], k == 0 ? ", carries the time" : "");
+        if (in->degree != NULL && in->degree[k] > 1) {
+            vigen_strbuf br;
+            vigen_strbuf_init(&br);
+            for (int j = 1; j < in->degree[k]; j++) vigen_strbuf_append(&br, "{");
+            for (int j = 0; j < in->degree[k]; j++)
+                vigen_strbuf_printf(&br, "%s%s%s", j ? ", " : "", nm[in->bracket[k][j]], j ? "}" : "");
+            vigen_slot_line(D, "  the Hamiltonian %s (Poisson brackets), advanced by coef h^%d", br.data,
+                            in->degree[k]);
+            vigen_strbuf_clear(&br);
+        }
         vigen_slot_line(F, "%s = %ld%s", constant[k], (long)k, k + 1 < in->nflows ? "," : "");
     }
     vigen_slot *C = vigen_slots_lines(S, "COEF_LINES");
@@ -340,9 +377,9 @@ static void split_texts(vigen_slots *S, emit_ctx *E, const vigen_emit_options *o
         char *d = vigen_emit_safe_text(U->text[k], 200);
         vigen_slot_line(C, "%2ld. %s, %s", (long)k + 1, nm[U->flow[k]], d);
         free(d);
-        sub_row(T, constant, U->flow[k], U->coef[k], U->time[k], k + 1 < U->m);
+        sub_row(T, constant, in->degree, U->flow[k], U->coef[k], U->time[k], k + 1 < U->m);
     }
-    advance_texts(S, constant, A);
+    advance_texts(S, constant, in->degree, A);
     for (slong k = 0; k < in->nflows; k++) {
         free(constant[k]);
         free(nm[k]);

@@ -26,6 +26,8 @@ static int by_name(const void *a, const void *b)
 /* "6", "8+" (at least), "4?" (the next order undecided) */
 static char *order_word(const vigen_check_report *rep, int family)
 {
+    /* bracket flows: the tableau is the plain flows' alone; the order is the generalized table's */
+    if (rep->generalized != NULL && rep->generalized->brackets > 0) return vigen_strdup("-");
     int at_least, undecided;
     int p = vigen_check_certified_order(rep, family, &at_least, &undecided);
     return vigen_strdup_printf("%d%s", p, undecided ? "?" : at_least ? "+" : "");
@@ -149,6 +151,7 @@ static void print_json_row(FILE *out, const entry *e, int first)
             vigen_json_write_string(out, g->letter_b);
             fprintf(out, ", \"processed\": %s, \"decided\": %s", g->processed ? "true" : "false",
                     g->why ? "false" : "true");
+            if (g->brackets > 0) fprintf(out, ", \"bracket_flows\": %d", g->brackets);
             if (!g->why) {
                 fprintf(out, ", \"classical_order\": %d, \"classical_at_least\": %s, \"orders\": [", g->classical,
                         g->classical_state == VIGEN_GEN_DECIDED ? "false" : "true");
@@ -217,6 +220,11 @@ int vigen_library_list(FILE *out, int json, vigen_error *err)
         fputs("\ngen, sep, nys: certified order for general H, separable H = T(p) + V(q) and Nystrom\n"
               "H = p^T M^-1 p / 2 + V(q) (8+: every order checked holds); evals: force evaluations per\n"
               "step for separable H.  Any command takes a method's name in place of a file.\n", out);
+        int brackets = 0;
+        for (size_t k = 0; k < n; k++) brackets |= has_generalized(&es[k]) && es[k].rep.generalized->brackets > 0;
+        if (brackets)
+            fputs("-: a method with bracket flows, whose stages and evals are its plain flows' and whose\n"
+                  "orders are in the table of named flows below.\n", out);
         print_generalized(out, es, n);
     }
     for (size_t k = 0; k < n; k++) {

@@ -169,6 +169,13 @@ static void take_info(vigen_tableau *t, vigen_tableau *info)
     t->digits = info->digits;
 }
 
+static int has_brackets(const vigen_splitting *sp)
+{
+    for (slong f = 0; f < sp->nflows && sp->flow_degree; f++)
+        if (sp->flow_degree[f] > 1) return 1;
+    return 0;
+}
+
 /* One step of the method as substeps: the kernel, or for a processed method
  * the corrector C, the kernel and C^-1 (C's substeps reversed and negated).
  * drift[k] is the letter: 1 for the first flow (A, the drift), 0 for the
@@ -176,30 +183,47 @@ static void take_info(vigen_tableau *t, vigen_tableau *info)
 static int step_substeps(vigen_splitting *step, const vigen_splitting *sp, const char *path, vigen_error *err)
 {
     memset(step, 0, sizeof *step);
-    if (sp->nflows > 2)
+    if (!has_brackets(sp) && sp->nflows > 2)
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: a splitting of %ld flows: its order is not decided for more "
                                "than two flows (vigen checks splittings of two flows, A + B)", path, (long)sp->nflows);
     slong m = sp->ncorrector, n = sp->n + 2 * m;
     step->n = n;
     step->drift = calloc((size_t)n, sizeof *step->drift);
+    step->flow = calloc((size_t)n, sizeof *step->flow);
     step->coef = texts_alloc(n);
-    if (step->drift == NULL) abort();
+    if (step->drift == NULL || step->flow == NULL) abort();
     for (slong k = 0; k < m; k++) {
-        step->drift[k] = sp->corrector_flow[k] == 0;
+        step->flow[k] = step->flow[n - 1 - k] = sp->corrector_flow[k];
         step->coef[k] = vigen_strdup(sp->corrector_coef[k]);
-        step->drift[n - 1 - k] = step->drift[k];
         step->coef[n - 1 - k] = vigen_strdup_printf("-(%s)", sp->corrector_coef[k]);
     }
     for (slong k = 0; k < sp->n; k++) {
-        step->drift[m + k] = sp->drift[k];
+        step->flow[m + k] = sp->flow[k];
         step->coef[m + k] = vigen_strdup(sp->coef[k]);
     }
+    for (slong k = 0; k < n; k++) step->drift[k] = step->flow[k] == 0;
     return VIGEN_OK;
 }
 
+/* The substeps of the plain flows alone (the bracket flows have no PRK
+ * form): a view into step's arrays, which it borrows. */
+static void plain_substeps(vigen_splitting *plain, const vigen_splitting *step, const vigen_splitting *sp)
+{
+    memset(plain, 0, sizeof *plain);
+    plain->drift = calloc((size_t)step->n, sizeof *plain->drift);
+    plain->coef = texts_alloc(step->n);
+    if (plain->drift == NULL) abort();
+    for (slong k = 0; k < step->n; k++)
+        if (sp->flow_degree == NULL || sp->flow_degree[step->flow[k]] == 1) {
+            plain->drift[plain->n] = step->drift[k];
+            plain->coef[plain->n++] = step->coef[k];
+        }
+}
+
 /* the named flows, the corrector's length and the generalized-order claim
- * onto the tableau (files with `flows` or `corrector` only) */
-static void take_flows(vigen_tableau *t, const vigen_splitting *sp)
+ * onto the tableau (files with `flows` or `corrector` only), and the bracket
+ * flows with the whole step's substeps when there are any */
+static void take_flows(vigen_tableau *t, const vigen_splitting *sp, const vigen_splitting *step)
 {
     if (!sp->named && sp->ncorrector == 0) return;
     vigen_flows fl;
@@ -210,6 +234,13 @@ static void take_flows(vigen_tableau *t, const vigen_splitting *sp)
     fl.ncorrector = sp->ncorrector;
     fl.ngeneralized = sp->ngeneralized;
     memcpy(fl.generalized, sp->generalized, sizeof fl.generalized);
+    if (has_brackets(sp)) {
+        fl.degree = sp->flow_degree;
+        fl.bracket = sp->flow_bracket;
+        fl.nstep = step->n;
+        fl.step_flow = step->flow;
+        fl.step_coef = step->coef;
+    }
     vigen_tableau_set_flows(t, &fl);
 }
 
@@ -223,12 +254,19 @@ int vigen_method_splitting_read(void **state, vigen_sandbox *sb, const char *pat
     int rc = vigen_splitting_from_table(&sp, &info, sb, path, err);
     vigen_sandbox_free(sb);
     if (rc == VIGEN_OK) {
+        vigen_splitting plain;
+        memset(&plain, 0, sizeof plain);
         rc = step_substeps(&step, &sp, path, err);
-        if (rc == VIGEN_OK) rc = splitting_tableau(&t, &step, path, err);
         if (rc == VIGEN_OK) {
-            vigen_tableau_set_substeps(&t, step.n, step.drift, step.coef);
-            take_flows(&t, &sp);
+            plain_substeps(&plain, &step, &sp);
+            rc = splitting_tableau(&t, &plain, path, err);
         }
+        if (rc == VIGEN_OK) {
+            vigen_tableau_set_substeps(&t, plain.n, plain.drift, plain.coef);
+            take_flows(&t, &sp, &step);
+        }
+        free(plain.drift);
+        free(plain.coef);
         vigen_splitting_clear(&step);
         vigen_splitting_clear(&sp);
     }
@@ -401,6 +439,11 @@ int vigen_method_composition_tableau(vigen_tableau *t, void *state, slong digits
         vigen_tableau_clear(&u);
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: the composition has %ld stages, above the maximum %d",
                                st->path, (long)S, VIGEN_MAX_STAGES);
+    }
+    if (u.flows != NULL && u.flows->nstep > 0) {
+        vigen_tableau_clear(&u);
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: composition.base has bracket flows; a composition of such a "
+                               "method is not supported (write the composed substeps in a splitting file)", st->path);
     }
     compose(t, &u, &st->co);
     vigen_tableau_clear(&u);

@@ -64,6 +64,9 @@ void vigen_splitting_clear(vigen_splitting *sp)
     free(sp->flow);
     free(sp->corrector_flow);
     free(sp->corrector_coef);
+    for (slong k = 0; k < sp->nflows && sp->flow_bracket; k++) free(sp->flow_bracket[k]);
+    free(sp->flow_bracket);
+    free(sp->flow_degree);
     memset(sp, 0, sizeof *sp);
 }
 
@@ -146,6 +149,126 @@ static int read_flows(vigen_splitting *sp, lua_State *L, const char *path, vigen
         sp->perturbation = f;
     }
     lua_pop(L, 1);
+    return rc;
+}
+
+/* The least string key of the table on top of the stack that names no
+ * flow (NULL when every key does); a key that is not a string: "?". */
+static const char *stray_key(lua_State *L, const vigen_splitting *sp)
+{
+    const char *least = NULL;
+    lua_pushnil(L);
+    while (lua_next(L, -2) != 0) {
+        lua_pop(L, 1);
+        if (lua_type(L, -1) != LUA_TSTRING) {
+            lua_pop(L, 1);
+            return "?";
+        }
+        const char *k = lua_tostring(L, -1);
+        /* the key stays referenced by the table: its text outlives the pop */
+        if (flow_index(L, sp) < 0 && (least == NULL || strcmp(k, least) < 0)) least = k;
+    }
+    return least;
+}
+
+/* The letters of bracket flow f: the list on top of the stack. */
+static int read_letters(vigen_splitting *sp, int f, lua_State *L, const char *path, vigen_error *err)
+{
+    const char *name = sp->flow_names[f];
+    lua_Integer n = plain_list(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : -1;
+    if (n < 2 || n > VIGEN_MAX_GENERALIZED)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: brackets.%s must be a plain list of 2 to %d letters (plain "
+                               "flows), {L1, L2, L3} for the bracket {{L1, L2}, L3}", path, name,
+                               VIGEN_MAX_GENERALIZED);
+    sp->flow_bracket[f] = calloc((size_t)n, sizeof **sp->flow_bracket);
+    if (sp->flow_bracket[f] == NULL) abort();
+    sp->flow_degree[f] = (int)n;
+    int rc = VIGEN_OK;
+    for (lua_Integer k = 0; k < n && rc == VIGEN_OK; k++) {
+        lua_rawgeti(L, -1, k + 1);
+        int g = flow_index(L, sp);
+        if (g < 0) {
+            vigen_strbuf names, shown;
+            vigen_strbuf_init(&names);
+            vigen_strbuf_init(&shown);
+            flow_list(&names, sp);
+            size_t len = 0;
+            const char *s = lua_type(L, -1) == LUA_TSTRING ? lua_tolstring(L, -1, &len) : "";
+            vigen_printable_append(&shown, s, len);
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: brackets.%s[%ld] \"%s\" is not a flow of this file (%s)", path,
+                                 name, (long)(k + 1), shown.data, names.data);
+            vigen_strbuf_clear(&names);
+            vigen_strbuf_clear(&shown);
+        } else if (g == f)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: brackets.%s[%ld] names the bracket itself; its letters are "
+                                 "plain flows", path, name, (long)(k + 1));
+        else if (g >= 2)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: brackets.%s[%ld] \"%s\" is a bracket flow; the letters of a "
+                                 "bracket are the plain flows (\"%s\", \"%s\")", path, name, (long)(k + 1),
+                                 sp->flow_names[g], sp->flow_names[0], sp->flow_names[1]);
+        else sp->flow_bracket[f][k] = g;
+        lua_pop(L, 1);
+    }
+    return rc;
+}
+
+/* `brackets = { NAME = {LETTER, ...}, ... }`: flow_degree and flow_bracket
+ * (all plain when absent) */
+static int read_brackets(vigen_splitting *sp, lua_State *L, const char *path, vigen_error *err)
+{
+    sp->flow_degree = calloc((size_t)sp->nflows, sizeof *sp->flow_degree);
+    sp->flow_bracket = calloc((size_t)sp->nflows, sizeof *sp->flow_bracket);
+    if (sp->flow_degree == NULL || sp->flow_bracket == NULL) abort();
+    for (slong f = 0; f < sp->nflows; f++) sp->flow_degree[f] = 1;
+    push_raw(L, "brackets");
+    int rc = VIGEN_OK;
+    if (lua_isnil(L, -1)) {
+        lua_pop(L, 1);
+        return rc;
+    }
+    const char *stray = NULL;
+    if (!sp->named)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'brackets' defines bracket flows of the named 'flows'; a file of "
+                             "kicks and drifts has none", path);
+    else if (!plain_list(L, -1))
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'brackets' must be a plain table { FLOW = {LETTER, LETTER, ...} "
+                             "}, FLOW one of the 'flows'", path);
+    else if ((stray = stray_key(L, sp)) != NULL) {
+        vigen_strbuf names;
+        vigen_strbuf_init(&names);
+        flow_list(&names, sp);
+        char *shown = vigen_printable(stray);
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: brackets.%s is not a flow of this file (%s); a bracket flow is "
+                             "named in 'flows' too", path, shown, names.data);
+        free(shown);
+        vigen_strbuf_clear(&names);
+    }
+    /* which flows are brackets: they must follow the two plain ones */
+    slong nbrackets = 0;
+    for (slong f = 0; f < sp->nflows && rc == VIGEN_OK; f++) {
+        push_raw(L, sp->flow_names[f]);
+        if (!lua_isnil(L, -1)) {
+            if (f < 2)
+                rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: flows[%ld] \"%s\" is a bracket; the two plain flows "
+                                     "(the letters) come first in 'flows'", path, (long)(f + 1), sp->flow_names[f]);
+            nbrackets++;
+        }
+        lua_pop(L, 1);
+    }
+    if (rc == VIGEN_OK && sp->nflows - nbrackets != 2)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: a file with 'brackets' has exactly two plain flows (the letters); "
+                             "flows[3] \"%s\" is neither a bracket nor one of them", path, sp->flow_names[2]);
+    /* every flow after the two plain ones is a bracket */
+    for (slong f = 2; f < sp->nflows && rc == VIGEN_OK; f++) {
+        push_raw(L, sp->flow_names[f]);
+        rc = read_letters(sp, (int)f, L, path, err);
+        lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+    if (rc == VIGEN_OK && sp->flow_degree[sp->perturbation] > 1)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: 'perturbation' must name a plain flow (\"%s\" or \"%s\"), not the "
+                             "bracket \"%s\"", path, sp->flow_names[0], sp->flow_names[1],
+                             sp->flow_names[sp->perturbation]);
     return rc;
 }
 
@@ -241,11 +364,12 @@ int vigen_splitting_from_table(vigen_splitting *sp, vigen_tableau *info, vigen_s
 {
     static const char *const known[] = {"name", "splitting", "source", "description", "order", "symplectic",
                                         "order_separable", "order_nystrom", "digits", "flows", "perturbation",
-                                        "corrector", "generalized_order", NULL};
+                                        "corrector", "generalized_order", "brackets", NULL};
     memset(sp, 0, sizeof *sp);
     lua_State *L = vigen_sandbox_state(sb);
     int rc = start(L, sb, known, info, path, err);
     if (rc == VIGEN_OK) rc = read_flows(sp, L, path, err);
+    if (rc == VIGEN_OK) rc = read_brackets(sp, L, path, err);
     if (rc == VIGEN_OK) rc = read_substeps(&sp->n, &sp->flow, &sp->coef, sp, L, "splitting", 2, path, err);
     if (rc == VIGEN_OK) {
         push_raw(L, "corrector");

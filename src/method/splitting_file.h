@@ -35,7 +35,16 @@ int vigen_composition_file_detect(lua_State *L, int idx);
  * C, then the kernel K, then C^-1, which is C's substeps in reverse order
  * with their coefficients negated (each flow is a one-parameter group).
  * Over n steps the inner C^-1 C cancel: C once before the first step, n
- * kernel steps, and C^-1 wherever the state is output. */
+ * kernel steps, and C^-1 wherever the state is output.
+ *
+ * Bracket flows (`brackets = { G = {"kepler", "interaction", "interaction"} }`):
+ * flow G is the Hamiltonian {{kepler, interaction}, interaction}, the
+ * left-nested Poisson bracket of its letters ({F, G} = F_q G_p - F_p G_q),
+ * and its substep advances its exact flow by coef h^k, k its letters.  A
+ * file with brackets has exactly two plain flows, the first two of `flows`
+ * (flow_degree 1, flow_bracket NULL); every other flow is a bracket whose
+ * letters are those two.  The arrays are set for every file (all plain
+ * without brackets). */
 typedef struct {
     slong n;               /* substeps of the kernel */
     int *drift;            /* [n] kick/drift files: 1 drift, 0 kick; two named flows: flow[k] == 0 */
@@ -51,6 +60,10 @@ typedef struct {
     char **corrector_coef; /* [ncorrector] coefficient texts */
     int ngeneralized;      /* claim generalized_order = {r1, ..., rk}: k entries, 0 when absent */
     int generalized[VIGEN_MAX_GENERALIZED];
+    int *flow_degree;      /* [nflows] 1 for a plain flow, k for a bracket of k letters: its substep
+                            * advances it by coef h^k */
+    int **flow_bracket;    /* [nflows] NULL for a plain flow, else flow_degree[j] indices of plain flows,
+                            * the left-nested bracket */
 } vigen_splitting;
 
 void vigen_splitting_clear(vigen_splitting *sp);
@@ -58,9 +71,10 @@ void vigen_splitting_clear(vigen_splitting *sp);
 /* Reads the table on top of sb's stack (the file has run): info (name,
  * source, description, claims order, symplectic, ...) into info (initialised by the caller with
  * vigen_tableau_init(info, 1)), the substeps into sp.  Messages name the
- * file and the entry (splitting[3][2], corrector[2][1], flows[3]): unknown
- * flow names, repeated flows, fewer than two flows, a corrector that is not
- * a list of {FLOW, coef}. */
+ * file and the entry (splitting[3][2], corrector[2][1], flows[3],
+ * brackets.G[2]): unknown flow names, repeated flows, fewer than two flows,
+ * a corrector that is not a list of {FLOW, coef}, a bracket of one letter,
+ * a letter that is not a plain flow, brackets without flows. */
 int vigen_splitting_from_table(vigen_splitting *sp, vigen_tableau *info, vigen_sandbox *sb, const char *path,
                                vigen_error *err);
 

@@ -95,16 +95,44 @@ void vigen_tableau_set_substeps(vigen_tableau *t, slong n, const int *drift, cha
     t->nsubsteps = n;
 }
 
+static void *bytes_copy(const void *src, size_t n)
+{
+    if (src == NULL) return NULL;
+    void *d = malloc(n ? n : 1);
+    if (d == NULL) abort();
+    memcpy(d, src, n);
+    return d;
+}
+
 void vigen_tableau_set_flows(vigen_tableau *t, const vigen_flows *fl)
 {
-    if (t->flows) texts_free(t->flows->names, t->flows->nflows);
-    free(t->flows);
+    vigen_flows *old = t->flows;
+    if (old) {
+        texts_free(old->names, old->nflows);
+        for (slong k = 0; k < old->nflows && old->bracket; k++) free(old->bracket[k]);
+        free(old->bracket);
+        free(old->degree);
+        free(old->step_flow);
+        texts_free(old->step_coef, old->nstep);
+    }
+    free(old);
     t->flows = NULL;
     if (fl == NULL) return;
-    t->flows = malloc(sizeof *t->flows);
-    if (t->flows == NULL) abort();
-    *t->flows = *fl;
-    t->flows->names = texts_copy(fl->names, fl->nflows);
+    vigen_flows *c = malloc(sizeof *c);
+    if (c == NULL) abort();
+    *c = *fl;
+    c->names = texts_copy(fl->names, fl->nflows);
+    c->degree = bytes_copy(fl->degree, sizeof(int) * (size_t)fl->nflows);
+    c->bracket = NULL;
+    if (fl->bracket) {
+        c->bracket = calloc((size_t)fl->nflows, sizeof *c->bracket);
+        if (c->bracket == NULL) abort();
+        for (slong k = 0; k < fl->nflows; k++)
+            if (fl->bracket[k]) c->bracket[k] = bytes_copy(fl->bracket[k], sizeof(int) * (size_t)fl->degree[k]);
+    }
+    c->step_flow = bytes_copy(fl->step_flow, sizeof(int) * (size_t)fl->nstep);
+    c->step_coef = texts_copy(fl->step_coef, fl->nstep);
+    t->flows = c;
 }
 
 void vigen_tableau_copy(vigen_tableau *dst, const vigen_tableau *src)

@@ -316,6 +316,7 @@ static void json_generalized(FILE *out, const vigen_check_report *rep)
             g->degree, g->rounded ? "true" : "false", g->within_data ? "true" : "false");
     if (g->why) fprintf(out, "\"%s\"", g->why);
     else fputs("null", out);
+    if (g->brackets > 0) fprintf(out, ", \"bracket_flows\": %d", g->brackets);
     if (!g->why) {
         fprintf(out, ", \"classical_order\": %d, \"classical_status\": \"%s\", \"orders\": [", g->classical,
                 gen_state_word(g->classical_state));

@@ -420,6 +420,9 @@ static void text_generalized(FILE *out, const vigen_check_report *rep)
     if (g == NULL || !g->computed) return;
     fprintf(out, "generalized   H = %s + eps %s (A = %s, B = %s)%s\n", g->letter_a, g->letter_b, g->letter_a,
             g->letter_b, g->processed ? "; the step C K C^-1 of the processed method" : "");
+    if (g->brackets > 0)
+        fprintf(out, "  with %d bracket flow%s (their terms below); the tableau above, its trees, stability and cost "
+                "are those of the plain flows' substeps alone\n", g->brackets, g->brackets > 1 ? "s" : "");
     if (g->why) fprintf(out, "  not decided: %s\n", g->why);
     else {
         fputs("  generalized order ", out);

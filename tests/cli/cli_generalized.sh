@@ -102,13 +102,7 @@ sed -e 's/generalized_order = {4, 2}/generalized_order = {4}/' "$P/saba_2.lua" >
 [ $? = 1 ] || bad "claim {4} (eps^2 h^2 is there) does not fail"
 
 # malformed files: exit 2, one line naming the file and the entry
-refuse() {   # file  expected text
-  "$VIGEN" check "$T/$1" > "$T/out" 2> "$T/err"
-  local rc=$?
-  [ $rc = 2 ] || bad "$1: exit $rc, expected 2"
-  [ "$(wc -l < "$T/err")" = 1 ] || bad "$1: not one line: $(cat "$T/err")"
-  grep -qF "$1" "$T/err" && grep -qF "$2" "$T/err" || bad "$1: message '$(cat "$T/err")' lacks '$2'"
-}
+. "$(dirname "$0")/refuse.bash"
 K='{ "kepler", "1/2" }, { "interaction", "1" }, { "kepler", "1/2" }'
 echo "return { name = 'u', flows = { 'kepler', 'interaction' }, splitting = { { 'kepler', '1/2' }, { 'interactoin', '1' }, { 'kepler', '1/2' } } }" > "$T/unknown.lua"
 refuse unknown.lua 'splitting[2][1] "interactoin" is not a flow of this file ("kepler", "interaction")'

@@ -142,6 +142,19 @@ static void test_tableau(const char *path, const char *runtime_lib)
         vigen_error_clear(&err);
         return;
     }
+    if (t.flows != NULL && t.flows->nstep > 0) {
+        /* bracket flows have no PRK form: the PRK variant refuses the
+         * method (test_emit_brackets runs its split stepper) */
+        vigen_emit_options po = { "t_brackets", VIGEN_REAL_DOUBLE, "input.lua", 0, NULL, "prk", 0, 0 };
+        char *h = NULL, *c = NULL, *id = NULL;
+        CHECK_MSG(vigen_emit_render(&t, &po, &h, &c, &id, &err) == VIGEN_E_USAGE, "%s: PRK variant not refused", path);
+        free(h);
+        free(c);
+        free(id);
+        vigen_error_clear(&err);
+        vigen_tableau_clear(&t);
+        return;
+    }
     /* what the checker certifies about this tableau */
     int pg = -1, ps = -1, sym = 0, symsep = 0;
     {
