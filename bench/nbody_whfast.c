@@ -3,9 +3,11 @@
  * centre-of-mass frame) over 10^6 days: REBOUND's WHFast (Jacobi, its
  * drift-kick-drift kernel, with and without symplectic correctors) and
  * vigen's emitted Kepler splittings (the split variant of
- * tableaux/published/wisdom_holman, saba_2..4, saba_10_6_4 and
- * wisdom_holman_corrected, stepping the runtime's Jacobi flows through a
- * vigen_split_problem), the Wisdom-Holman kernel also with the runtime's
+ * tableaux/published/wisdom_holman, saba_2..4, saba_10_6_4,
+ * wisdom_holman_corrected, and the methods with a bracket flow sabac_2,
+ * sabac_3, wh_modified_kick and wh_modified_kick_corrected, stepping the
+ * runtime's Jacobi flows through a vigen_split_problem of their number of
+ * flows), the Wisdom-Holman kernel also with the runtime's
  * correctors applied as WHFast applies its own (C^-1 once at the start, C
  * on a copy of the state at each output).  Built and run by rebound_run.sh
  * against a REBOUND built by its own Makefile and the steppers emitted by
@@ -20,7 +22,8 @@
  * arguments "one METHOD H CORRECTOR STEPS" it makes one bare run only and
  * prints its wall time in ms (rebound_run.sh counts its instructions with
  * callgrind, and takes the best of many such runs for the rows of the
- * ratios). */
+ * ratios); with "only METHOD STEPS..." it prints that method's rows at
+ * those step counts alone. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -35,6 +38,10 @@
 #include "saba_3.h"
 #include "saba_4.h"
 #include "saba_10_6_4.h"
+#include "sabac_2.h"
+#include "sabac_3.h"
+#include "wh_modified_kick.h"
+#include "wh_modified_kick_corrected.h"
 
 enum { N = 6, D = 3 * N, OUTPUTS = 100 };
 
@@ -109,6 +116,7 @@ static double rebound_time(double h, int corrector, long nsteps)
  * kick-drift-kick). */
 typedef struct {
     const char *name;
+    size_t nflows; /* 2: kepler, interaction; 3: also interaction_gradient (bracket methods) */
     void *(*alloc)(const vigen_split_problem *sp);
     int (*advance)(void *w, double *t, double *q, double *p, double h, long nsteps);
     void (*free)(void *w);
@@ -127,9 +135,15 @@ EMITTED(saba_2)
 EMITTED(saba_3)
 EMITTED(saba_4)
 EMITTED(saba_10_6_4)
-#define METHOD(NAME) { #NAME, NAME##_alloc_, NAME##_advance_, NAME##_free_ }
-static const method methods[] = { METHOD(wisdom_holman), METHOD(saba_2), METHOD(saba_3), METHOD(saba_4),
-                                  METHOD(saba_10_6_4), METHOD(wisdom_holman_corrected) };
+EMITTED(sabac_2)
+EMITTED(sabac_3)
+EMITTED(wh_modified_kick)
+EMITTED(wh_modified_kick_corrected)
+#define METHOD(NAME, NF) { #NAME, NF, NAME##_alloc_, NAME##_advance_, NAME##_free_ }
+static const method methods[] = { METHOD(wisdom_holman, 2), METHOD(saba_2, 2), METHOD(saba_3, 2), METHOD(saba_4, 2),
+                                  METHOD(saba_10_6_4, 2), METHOD(wisdom_holman_corrected, 2), METHOD(sabac_2, 3),
+                                  METHOD(sabac_3, 3), METHOD(wh_modified_kick, 3),
+                                  METHOD(wh_modified_kick_corrected, 3) };
 
 typedef struct {
     vigen_nbody *sys;
@@ -142,7 +156,7 @@ static int run_start(run *r, const method *m, double h, int corrector, double *q
 {
     if (vigen_nbody_alloc(&r->sys, N, G, mass) != VIGEN_SUCCESS) exit(1);
     if (vigen_nbody_split(r->sys, VIGEN_NBODY_JACOBI, &r->sp) != VIGEN_SUCCESS) exit(1);
-    r->sp.nflows = 2; /* the methods here compose kepler and interaction, the first two */
+    r->sp.nflows = m->nflows; /* kepler, interaction (and interaction_gradient): the first ones */
     r->w = m->alloc(&r->sp);
     if (!r->w) exit(1);
     r->t = 0;
@@ -286,6 +300,13 @@ int main(int argc, char **argv)
         if (!m && strcmp(argv[2], "whfast") != 0) return 2;
         sink = m ? vigen_time(m, h, corrector, nsteps) : rebound_time(h, corrector, nsteps);
         printf("%.3f\n", 1e3 * sink);
+        return 0;
+    }
+    /* "only METHOD [STEPS...]": that method's rows alone */
+    if (argc > 2 && strcmp(argv[1], "only") == 0) {
+        const method *m = method_find(argv[2]);
+        if (!m) return 2;
+        for (int k = 3; k < argc; k++) row(m, atol(argv[k]), 0, 5);
         return 0;
     }
     static const long wh_steps[] = { 2500, 3000, 3500, 4000, 4500, 5000, 10000, 20000, 25000, 30000, 35000, 40000, 80000 };

@@ -32,7 +32,8 @@ cmake --build "$OUT" -j2 --target vigen_problems >&2
 cmake --build "$OUT" -j2 --target vigen >&2
 # the Kepler splittings of the library, emitted by the build's vigen (split
 # variant: their files name the flows "kepler" and "interaction")
-METHODS="wisdom_holman saba_2 saba_3 saba_4 saba_10_6_4 wisdom_holman_corrected"
+METHODS="wisdom_holman saba_2 saba_3 saba_4 saba_10_6_4 wisdom_holman_corrected sabac_2 sabac_3 wh_modified_kick
+         wh_modified_kick_corrected"
 mkdir -p "$OUT/emitted"
 for m in $METHODS; do
     "$OUT/vigen" emit "$SRC/tableaux/published/$m.lua" --name "$m" -o "$OUT/emitted" >&2
