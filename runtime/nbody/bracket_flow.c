@@ -32,7 +32,10 @@ int vigen_nbody_jacobi_interaction_gradient(double t, double h, double *q, doubl
     /* f = -dB/dq with the geometry of its terms; w = -f/m', u = A^-1 w */
     vigen_nbody_jacobi_interaction_force(sys, q, x, f, geo);
     for (int c = 0; c < 3; c++) w[c] = 0;
-    for (size_t k = 3; k < d; k++) w[k] = -f[k] / sys->mred[k / 3];
+    for (size_t i = 1; i < n; i++) {
+        double mi = sys->mred[i];
+        for (int c = 0; c < 3; c++) w[3 * i + c] = -f[3 * i + c] / mi;
+    }
     vigen_nbody_jacobi_positions_inverse(sys, w, u);
     vigen_nbody_jacobi_pair_hessian(sys, geo, u, df);
     /* df mapped like forces, plus the Jacobi terms G m_i M_{i-1}/|q_i|,

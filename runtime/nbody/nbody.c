@@ -161,14 +161,20 @@ void vigen_nbody_jacobi_positions(const vigen_nbody *sys, const double *x, doubl
 
 void vigen_nbody_jacobi_positions_inverse(const vigen_nbody *sys, const double *q, double *x)
 {
-    double R[3] = { q[0], q[1], q[2] };
-    for (size_t i = sys->n - 1; i >= 1; i--)
-        for (int c = 0; c < 3; c++) {
-            double qi = q[3 * i + c];
-            R[c] -= sys->frac[i] * qi;
-            x[3 * i + c] = R[c] + qi;
-        }
-    for (int c = 0; c < 3; c++) x[c] = R[c];
+    double R0 = q[0], R1 = q[1], R2 = q[2];
+    for (size_t i = sys->n - 1; i >= 1; i--) {
+        const double *qi = q + 3 * i;
+        double *xi = x + 3 * i, a = sys->frac[i], q0 = qi[0], q1 = qi[1], q2 = qi[2];
+        R0 -= a * q0;
+        R1 -= a * q1;
+        R2 -= a * q2;
+        xi[0] = R0 + q0;
+        xi[1] = R1 + q1;
+        xi[2] = R2 + q2;
+    }
+    x[0] = R0;
+    x[1] = R1;
+    x[2] = R2;
 }
 
 /* Momenta (and forces): P_i = p_0 + ... + p_i, p'_i = p_i - (m_i/M_i) P_i,
@@ -213,25 +219,35 @@ void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *
     } else {
         pair_pass(sys, x, f, 0, 1, NULL);
     }
-    double P[3] = { f[0], f[1], f[2] };
+    double P0 = f[0], P1 = f[1], P2 = f[2];
     for (size_t i = 1; i < n; i++) {
-        double *fi = f + 3 * i;
-        for (int c = 0; c < 3; c++) {
-            P[c] += fi[c];
-            fi[c] -= sys->frac[i] * P[c];
+        double *fi = f + 3 * i, a = sys->frac[i], f0 = fi[0], f1 = fi[1], f2 = fi[2];
+        P0 += f0;
+        P1 += f1;
+        P2 += f2;
+        f0 -= a * P0;
+        f1 -= a * P1;
+        f2 -= a * P2;
+        if (i >= 2) {
+            const double *qi = q + 3 * i;
+            double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
+            double k = sys->gjac[i] / (r2 * sqrt(r2));
+            f0 += k * qi[0];
+            f1 += k * qi[1];
+            f2 += k * qi[2];
+            if (geo) {
+                geo[0] = k;
+                geo[1] = 3 / r2;
+                geo += 2;
+            }
         }
-        if (i < 2) continue;
-        const double *qi = q + 3 * i;
-        double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
-        double k = sys->gjac[i] / (r2 * sqrt(r2));
-        for (int c = 0; c < 3; c++) fi[c] += k * qi[c];
-        if (geo) {
-            geo[0] = k;
-            geo[1] = 3 / r2;
-            geo += 2;
-        }
+        fi[0] = f0;
+        fi[1] = f1;
+        fi[2] = f2;
     }
-    for (int c = 0; c < 3; c++) f[c] = P[c];
+    f[0] = P0;
+    f[1] = P1;
+    f[2] = P2;
 }
 
 /* The change of the pairs' forces along u from their geometry geo
