@@ -15,6 +15,7 @@
  * for the force keeps d, k and 3/|d|^2 of each pair (geo) for the pass of
  * the Hessian. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "nbody_internal.h"
 
@@ -27,6 +28,10 @@ int vigen_nbody_jacobi_interaction_gradient(double t, double h, double *q, doubl
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
     size_t n = sys->n, d = 3 * n;
     double local[15 * STACK_BODIES], lgeo[VIGEN_NBODY_GEO(STACK_BODIES)];
+    if (n > STACK_BODIES && sys->geo == NULL) {
+        sys->geo = n < ((size_t)1 << 24) ? malloc(VIGEN_NBODY_GEO(n) * sizeof *sys->geo) : NULL;
+        if (sys->geo == NULL) return VIGEN_ENOMEM;
+    }
     double *work = n <= STACK_BODIES ? local : sys->work, *geo = n <= STACK_BODIES ? lgeo : sys->geo;
     double *x = work, *f = work + d, *w = work + 2 * d, *u = work + 3 * d, *df = work + 4 * d, *pn = x;
     /* f = -dB/dq with the geometry of its terms; w = -f/m', u = A^-1 w */

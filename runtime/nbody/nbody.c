@@ -18,7 +18,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     for (size_t i = 0; i < n; i++)
         if (!(mass[i] > 0) || !isfinite(mass[i])) return VIGEN_EINVAL;
     vigen_nbody *s = calloc(1, sizeof *s);
-    double *block = n > (size_t)1 << 20 ? NULL : calloc(27 * n + VIGEN_NBODY_GEO(n), sizeof *block);
+    double *block = calloc(27 * n, sizeof *block);
     if (s == NULL || block == NULL) {
         free(s);
         free(block);
@@ -34,7 +34,6 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     s->work = block + 5 * n;
     s->saved = block + 20 * n;
     s->gjac = block + 26 * n;
-    s->geo = block + 27 * n;
     double M = 0;
     for (size_t i = 0; i < n; i++) {
         s->m[i] = mass[i];
@@ -63,6 +62,7 @@ void vigen_nbody_free(vigen_nbody *sys)
 {
     if (sys == NULL) return;
     free(sys->m);
+    free(sys->geo);
     free(sys);
 }
 

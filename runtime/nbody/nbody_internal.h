@@ -18,7 +18,9 @@ struct vigen_nbody {
     double *work;    /* 15 n doubles of scratch for the flows */
     double *saved;   /* 6 n doubles: the state before a corrector */
     double *gjac;    /* G m_i M_{i-1}: the Jacobi term of body i (gjac[0] = 0) */
-    double *geo;     /* VIGEN_NBODY_GEO(n) doubles of scratch: the interaction's geometry */
+    double *geo;     /* VIGEN_NBODY_GEO(n) doubles of scratch for the interaction's geometry
+                      * above 32 bodies, allocated by the first gradient flow (O(n^2): only
+                      * the systems that use that flow pay for it), else NULL */
 };
 
 /* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
