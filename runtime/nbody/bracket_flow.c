@@ -11,37 +11,15 @@
  * Jacobi terms; A^-1 maps w like positions, A^-T the result like forces
  * (nbody.c).  The Hessian of one pair's -G m_i m_j/|d| (d = x_j - x_i)
  * along a displacement u changes the pair force k d (k = G m_i m_j/|d|^3)
- * by k (du - 3 (d.du) d/|d|^2), du = u_j - u_i. */
+ * by k (du - 3 (d.du) d/|d|^2), du = u_j - u_i: the pass over the pairs
+ * for the force keeps d, k and 3/|d|^2 of each pair (geo) for the pass of
+ * the Hessian. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include "nbody_internal.h"
 
 enum { STACK_BODIES = 32 };
-
-/* The change of the pair forces of x along u: df = -Hess(V) u (pairs
- * i < j, the pair (0, 1) left out). */
-static void pair_force_change(const vigen_nbody *sys, const double *x, const double *u, double *df)
-{
-    size_t n = sys->n;
-    memset(df, 0, 3 * n * sizeof *df);
-    for (size_t i = 0; i < n; i++)
-        for (size_t j = i + 1; j < n; j++) {
-            if (i == 0 && j == 1) continue;
-            double d[3], du[3], r2 = 0, dot = 0;
-            for (int c = 0; c < 3; c++) {
-                d[c] = x[3 * j + c] - x[3 * i + c];
-                du[c] = u[3 * j + c] - u[3 * i + c];
-                r2 += d[c] * d[c];
-                dot += d[c] * du[c];
-            }
-            double k = sys->G * sys->m[i] * sys->m[j] / (r2 * sqrt(r2)), s = 3 * dot / r2;
-            for (int c = 0; c < 3; c++) {
-                double e = k * (du[c] - s * d[c]);
-                df[3 * i + c] += e;
-                df[3 * j + c] -= e;
-            }
-        }
-}
 
 int vigen_nbody_jacobi_interaction_gradient(double t, double h, double *q, double *p, void *ctx)
 {
@@ -49,33 +27,50 @@ int vigen_nbody_jacobi_interaction_gradient(double t, double h, double *q, doubl
     vigen_nbody *sys = ctx;
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
     size_t n = sys->n, d = 3 * n;
-    double local[15 * STACK_BODIES], *work = n <= STACK_BODIES ? local : sys->work;
-    double *x = work, *f = work + d, *u = work + 2 * d, *df = work + 3 * d, *pn = work + 4 * d;
-    /* f = -dB/dq; w = -f/m' into u, then u = A^-1 w */
-    vigen_nbody_jacobi_interaction_force(sys, q, x, f);
-    for (int c = 0; c < 3; c++) u[c] = 0;
-    for (size_t k = 3; k < d; k++) u[k] = -f[k] / sys->mred[k / 3];
-    vigen_nbody_jacobi_positions_inverse(sys, u, u);
-    pair_force_change(sys, x, u, df);
-    vigen_nbody_jacobi_momenta(sys, df, df);
-    /* the Jacobi terms G m_i M_{i-1}/|q_i|, i >= 2: their force c q_i/|q_i|^3
-     * changes along w_i by c (w_i - 3 (q_i.w_i) q_i/|q_i|^2)/|q_i|^3 */
-    for (size_t i = 2; i < n; i++) {
-        const double *qi = q + 3 * i;
-        double w[3], r2 = 0, dot = 0;
-        for (int c = 0; c < 3; c++) {
-            w[c] = -f[3 * i + c] / sys->mred[i];
-            r2 += qi[c] * qi[c];
-            dot += qi[c] * w[c];
-        }
-        double k = sys->G * sys->m[i] * sys->interior[i - 1] / (r2 * sqrt(r2)), s = 3 * dot / r2;
-        for (int c = 0; c < 3; c++) df[3 * i + c] += k * (w[c] - s * qi[c]);
+    double local[15 * STACK_BODIES], lgeo[VIGEN_NBODY_GEO(STACK_BODIES)];
+    if (n > STACK_BODIES && sys->geo == NULL) {
+        sys->geo = n < ((size_t)1 << 24) ? malloc(VIGEN_NBODY_GEO(n) * sizeof *sys->geo) : NULL;
+        if (sys->geo == NULL) return VIGEN_ENOMEM;
     }
-    /* df = -Hess(B) w: p -= h 2 Hess(B) w */
-    for (int c = 0; c < 3; c++) pn[c] = p[c];
-    for (size_t k = 3; k < d; k++) pn[k] = p[k] + 2 * h * df[k];
-    for (size_t k = 0; k < d; k++)
-        if (!isfinite(pn[k])) return VIGEN_ENONFINITE;
+    double *work = n <= STACK_BODIES ? local : sys->work, *geo = n <= STACK_BODIES ? lgeo : sys->geo;
+    double *x = work, *f = work + d, *w = work + 2 * d, *u = work + 3 * d, *df = work + 4 * d, *pn = x;
+    /* f = -dB/dq with the geometry of its terms; w = -f/m', u = A^-1 w */
+    vigen_nbody_jacobi_interaction_force(sys, q, x, f, geo);
+    for (int c = 0; c < 3; c++) w[c] = 0;
+    for (size_t i = 1; i < n; i++) {
+        double mi = sys->mred[i];
+        for (int c = 0; c < 3; c++) w[3 * i + c] = -f[3 * i + c] / mi;
+    }
+    vigen_nbody_jacobi_positions_inverse(sys, w, u);
+    vigen_nbody_jacobi_pair_hessian(sys, geo, u, df);
+    /* df mapped like forces, plus the Jacobi terms G m_i M_{i-1}/|q_i|,
+     * i >= 2, whose force k q_i changes along w_i by k (w_i - 3 (q_i.w_i)
+     * q_i/|q_i|^2); df = -Hess(B) w: p -= h 2 Hess(B) w */
+    const double *jgeo = geo + VIGEN_NBODY_GEO(n) - 2 * n;
+    double P[3] = { df[0], df[1], df[2] }, h2 = 2 * h, z = 0;
+    for (int c = 0; c < 3; c++) {
+        pn[c] = p[c];
+        z += 0 * p[c];
+    }
+    for (size_t i = 1; i < n; i++) {
+        double *gi = df + 3 * i;
+        for (int c = 0; c < 3; c++) {
+            P[c] += gi[c];
+            gi[c] -= sys->frac[i] * P[c];
+        }
+        if (i >= 2) {
+            const double *qi = q + 3 * i, *wi = w + 3 * i;
+            double k = jgeo[0], s = jgeo[1] * (qi[0] * wi[0] + qi[1] * wi[1] + qi[2] * wi[2]);
+            for (int c = 0; c < 3; c++) gi[c] += k * (wi[c] - s * qi[c]);
+            jgeo += 2;
+        }
+        for (int c = 0; c < 3; c++) {
+            pn[3 * i + c] = p[3 * i + c] + h2 * gi[c];
+            z += 0 * pn[3 * i + c];
+        }
+    }
+    /* z is 0 when every value is finite, NaN otherwise */
+    if (z != 0) return VIGEN_ENONFINITE;
     memcpy(p, pn, d * sizeof *p);
     return VIGEN_SUCCESS;
 }

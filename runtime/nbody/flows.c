@@ -76,10 +76,14 @@ int vigen_nbody_democratic_kepler(double t, double h, double *q, double *p, void
 static int kick(vigen_nbody *sys, double h, double *p, const double *force, double *work)
 {
     size_t n = sys->n;
-    double *pn = work + 6 * n;
+    double *pn = work + 6 * n, z = 0;
     for (int c = 0; c < 3; c++) pn[c] = p[c];
-    for (size_t k = 3; k < 3 * n; k++) pn[k] = p[k] + h * force[k];
-    if (!all_finite(pn, 3 * n)) return VIGEN_ENONFINITE;
+    for (size_t k = 0; k < 3 * n; k++) {
+        if (k >= 3) pn[k] = p[k] + h * force[k];
+        /* z stays 0 while every value is finite, NaN after any other */
+        z += 0 * pn[k];
+    }
+    if (z != 0) return VIGEN_ENONFINITE;
     memcpy(p, pn, 3 * n * sizeof *p);
     return VIGEN_SUCCESS;
 }
@@ -91,7 +95,7 @@ int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, voi
     if (sys == NULL || q == NULL || p == NULL || !isfinite(h)) return VIGEN_EINVAL;
     double local[9 * STACK_BODIES], *work = scratch(sys, local);
     double *f = work + 3 * sys->n;
-    vigen_nbody_jacobi_interaction_force(sys, q, work, f);
+    vigen_nbody_jacobi_interaction_force(sys, q, work, f, NULL);
     return kick(sys, h, p, f, work);
 }
 

@@ -18,7 +18,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     for (size_t i = 0; i < n; i++)
         if (!(mass[i] > 0) || !isfinite(mass[i])) return VIGEN_EINVAL;
     vigen_nbody *s = calloc(1, sizeof *s);
-    double *block = calloc(26 * n, sizeof *block);
+    double *block = calloc(27 * n, sizeof *block);
     if (s == NULL || block == NULL) {
         free(s);
         free(block);
@@ -33,6 +33,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
     s->mu = block + 4 * n;
     s->work = block + 5 * n;
     s->saved = block + 20 * n;
+    s->gjac = block + 26 * n;
     double M = 0;
     for (size_t i = 0; i < n; i++) {
         s->m[i] = mass[i];
@@ -42,6 +43,7 @@ int vigen_nbody_alloc(vigen_nbody **out, size_t n, double G, const double *mass)
         s->frac[i] = mass[i] / M;
         s->mred[i] = i == 0 ? 0 : mass[i] * before / M;
         s->mu[i] = G * M;
+        s->gjac[i] = G * mass[i] * before;
     }
     s->mtot = M;
     s->mred[0] = M;
@@ -60,6 +62,7 @@ void vigen_nbody_free(vigen_nbody *sys)
 {
     if (sys == NULL) return;
     free(sys->m);
+    free(sys->geo);
     free(sys);
 }
 
@@ -90,25 +93,50 @@ double vigen_nbody_energy(const vigen_nbody *sys, const double *x, const double 
 }
 
 /* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
- * pairs i < j with i >= from, the pair (0, 1) left out when skip01. */
-void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01)
+ * pairs i < j with i >= from, the pair (0, 1) left out when skip01; with
+ * geo, each pair's d = x_j - x_i, k = G m_i m_j/|d|^3 and 3/|d|^2 stored
+ * there in the order of the loops (5 per pair), for a second pass over the
+ * same pairs.  Row i's force is summed in a register from f_i's value at
+ * the start of the row: the additions are those of f_i += k d in j order. */
+static inline void pair_pass(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01,
+                             double *geo)
 {
     size_t n = sys->n;
-    memset(f, 0, 3 * n * sizeof *f);
-    for (size_t i = from; i < n; i++)
-        for (size_t j = i + 1; j < n; j++) {
-            if (skip01 && i == 0 && j == 1) continue;
-            double d[3], r2 = 0;
-            for (int c = 0; c < 3; c++) {
-                d[c] = x[3 * j + c] - x[3 * i + c];
-                r2 += d[c] * d[c];
-            }
-            double k = sys->G * sys->m[i] * sys->m[j] / (r2 * sqrt(r2));
-            for (int c = 0; c < 3; c++) {
-                f[3 * i + c] += k * d[c];
-                f[3 * j + c] -= k * d[c];
+    const double *m = sys->m;
+    for (size_t k = 0; k < 3 * n; k++) f[k] = 0;
+    for (size_t i = from; i < n; i++) {
+        double xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2], gmi = sys->G * m[i];
+        double fi0 = f[3 * i], fi1 = f[3 * i + 1], fi2 = f[3 * i + 2];
+        for (size_t j = skip01 && i == 0 ? 2 : i + 1; j < n; j++) {
+            double *fj = f + 3 * j;
+            double d0 = x[3 * j] - xi0, d1 = x[3 * j + 1] - xi1, d2 = x[3 * j + 2] - xi2;
+            double r2 = d0 * d0 + d1 * d1 + d2 * d2;
+            double k = gmi * m[j] / (r2 * sqrt(r2));
+            double e0 = k * d0, e1 = k * d1, e2 = k * d2;
+            fi0 += e0;
+            fi1 += e1;
+            fi2 += e2;
+            fj[0] -= e0;
+            fj[1] -= e1;
+            fj[2] -= e2;
+            if (geo) {
+                geo[0] = d0;
+                geo[1] = d1;
+                geo[2] = d2;
+                geo[3] = k;
+                geo[4] = 3 / r2;
+                geo += 5;
             }
         }
+        f[3 * i] = fi0;
+        f[3 * i + 1] = fi1;
+        f[3 * i + 2] = fi2;
+    }
+}
+
+void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f, size_t from, int skip01)
+{
+    pair_pass(sys, x, f, from, skip01, NULL);
 }
 
 void vigen_nbody_forces(const vigen_nbody *sys, const double *x, double *f)
@@ -133,14 +161,20 @@ void vigen_nbody_jacobi_positions(const vigen_nbody *sys, const double *x, doubl
 
 void vigen_nbody_jacobi_positions_inverse(const vigen_nbody *sys, const double *q, double *x)
 {
-    double R[3] = { q[0], q[1], q[2] };
-    for (size_t i = sys->n - 1; i >= 1; i--)
-        for (int c = 0; c < 3; c++) {
-            double qi = q[3 * i + c];
-            R[c] -= sys->frac[i] * qi;
-            x[3 * i + c] = R[c] + qi;
-        }
-    for (int c = 0; c < 3; c++) x[c] = R[c];
+    double R0 = q[0], R1 = q[1], R2 = q[2];
+    for (size_t i = sys->n - 1; i >= 1; i--) {
+        const double *qi = q + 3 * i;
+        double *xi = x + 3 * i, a = sys->frac[i], q0 = qi[0], q1 = qi[1], q2 = qi[2];
+        R0 -= a * q0;
+        R1 -= a * q1;
+        R2 -= a * q2;
+        xi[0] = R0 + q0;
+        xi[1] = R1 + q1;
+        xi[2] = R2 + q2;
+    }
+    x[0] = R0;
+    x[1] = R1;
+    x[2] = R2;
 }
 
 /* Momenta (and forces): P_i = p_0 + ... + p_i, p'_i = p_i - (m_i/M_i) P_i,
@@ -170,20 +204,77 @@ void vigen_nbody_jacobi_momenta_inverse(const vigen_nbody *sys, const double *pj
 }
 
 /* The force of the Jacobi interaction, -dH_interaction/dq: the pair forces
- * mapped like momenta, and the Jacobi terms of bodies 2.. . */
-void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f)
+ * mapped like momenta (vigen_nbody_jacobi_momenta's sums), and the Jacobi
+ * terms of bodies 2.. ; with geo, the pairs' geometry (pair_pass), then
+ * each Jacobi term's k = G m_i M_{i-1}/|q_i|^3 and 3/|q_i|^2. */
+void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f, double *geo)
 {
     size_t n = sys->n;
     vigen_nbody_jacobi_positions_inverse(sys, q, x);
     /* the pair (0, 1) and the Jacobi term of body 1 cancel exactly
      * (x_1 - x_0 = q_1): both left out */
-    vigen_nbody_pair_forces(sys, x, f, 0, 1);
-    vigen_nbody_jacobi_momenta(sys, f, f);
-    for (size_t i = 2; i < n; i++) {
-        const double *qi = q + 3 * i;
-        double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
-        double k = sys->G * sys->m[i] * sys->interior[i - 1] / (r2 * sqrt(r2));
-        for (int c = 0; c < 3; c++) f[3 * i + c] += k * qi[c];
+    if (geo) {
+        pair_pass(sys, x, f, 0, 1, geo);
+        geo += 5 * (n * (n - 1) / 2 - 1);
+    } else {
+        pair_pass(sys, x, f, 0, 1, NULL);
+    }
+    double P0 = f[0], P1 = f[1], P2 = f[2];
+    for (size_t i = 1; i < n; i++) {
+        double *fi = f + 3 * i, a = sys->frac[i], f0 = fi[0], f1 = fi[1], f2 = fi[2];
+        P0 += f0;
+        P1 += f1;
+        P2 += f2;
+        f0 -= a * P0;
+        f1 -= a * P1;
+        f2 -= a * P2;
+        if (i >= 2) {
+            const double *qi = q + 3 * i;
+            double r2 = qi[0] * qi[0] + qi[1] * qi[1] + qi[2] * qi[2];
+            double k = sys->gjac[i] / (r2 * sqrt(r2));
+            f0 += k * qi[0];
+            f1 += k * qi[1];
+            f2 += k * qi[2];
+            if (geo) {
+                geo[0] = k;
+                geo[1] = 3 / r2;
+                geo += 2;
+            }
+        }
+        fi[0] = f0;
+        fi[1] = f1;
+        fi[2] = f2;
+    }
+    f[0] = P0;
+    f[1] = P1;
+    f[2] = P2;
+}
+
+/* The change of the pairs' forces along u from their geometry geo
+ * (pair_pass): df = -Hess(V) u, pairs i < j without (0, 1).  One pair's
+ * force k d changes by k (du - 3 (d.du) d/|d|^2), du = u_j - u_i. */
+void vigen_nbody_jacobi_pair_hessian(const vigen_nbody *sys, const double *geo, const double *u, double *df)
+{
+    size_t n = sys->n;
+    for (size_t k = 0; k < 3 * n; k++) df[k] = 0;
+    for (size_t i = 0; i < n; i++) {
+        double ui0 = u[3 * i], ui1 = u[3 * i + 1], ui2 = u[3 * i + 2];
+        double g0 = df[3 * i], g1 = df[3 * i + 1], g2 = df[3 * i + 2];
+        for (size_t j = i == 0 ? 2 : i + 1; j < n; j++, geo += 5) {
+            double *dj = df + 3 * j;
+            double du0 = u[3 * j] - ui0, du1 = u[3 * j + 1] - ui1, du2 = u[3 * j + 2] - ui2;
+            double s = geo[4] * (geo[0] * du0 + geo[1] * du1 + geo[2] * du2), k = geo[3];
+            double e0 = k * (du0 - s * geo[0]), e1 = k * (du1 - s * geo[1]), e2 = k * (du2 - s * geo[2]);
+            g0 += e0;
+            g1 += e1;
+            g2 += e2;
+            dj[0] -= e0;
+            dj[1] -= e1;
+            dj[2] -= e2;
+        }
+        df[3 * i] = g0;
+        df[3 * i + 1] = g1;
+        df[3 * i + 2] = g2;
     }
 }
 

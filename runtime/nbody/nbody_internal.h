@@ -17,6 +17,10 @@ struct vigen_nbody {
     double *mu;      /* G M_i: the Kepler constant of Jacobi body i */
     double *work;    /* 15 n doubles of scratch for the flows */
     double *saved;   /* 6 n doubles: the state before a corrector */
+    double *gjac;    /* G m_i M_{i-1}: the Jacobi term of body i (gjac[0] = 0) */
+    double *geo;     /* VIGEN_NBODY_GEO(n) doubles of scratch for the interaction's geometry
+                      * above 32 bodies, allocated by the first gradient flow (O(n^2): only
+                      * the systems that use that flow pay for it), else NULL */
 };
 
 /* Pair forces f_i = -dV/dx_i of V = -sum G m_i m_j/|x_i - x_j| over the
@@ -25,8 +29,16 @@ void vigen_nbody_pair_forces(const vigen_nbody *sys, const double *x, double *f,
 
 /* The force of the Jacobi interaction, f = -dH_interaction/dq (3n
  * entries, f_0 = 0), and the inertial positions x of q on the way
- * (nbody.c). */
-void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f);
+ * (nbody.c).  geo, when not NULL, receives the geometry of the terms
+ * (VIGEN_NBODY_GEO(n) doubles) for vigen_nbody_jacobi_pair_hessian and
+ * the Hessian of the Jacobi terms: 5 per pair (d = x_j - x_i, k = G m_i
+ * m_j/|d|^3, 3/|d|^2), pairs i < j without (0, 1) in row order, then 2
+ * per body i >= 2 (k = G m_i M_{i-1}/|q_i|^3, 3/|q_i|^2). */
+void vigen_nbody_jacobi_interaction_force(const vigen_nbody *sys, const double *q, double *x, double *f, double *geo);
+#define VIGEN_NBODY_GEO(n) (5 * ((n) * ((n) - 1) / 2 - 1) + 2 * (n))
+
+/* df = -Hess(V) u for the pairs of geo (vigen_nbody_jacobi_interaction_force). */
+void vigen_nbody_jacobi_pair_hessian(const vigen_nbody *sys, const double *geo, const double *u, double *df);
 
 /* The linear maps of the changes of coordinates (nbody.c), positions and
  * momenta apart: q' = A x (also velocities: dq'/dt = A dx/dt) and

@@ -132,7 +132,9 @@ int vigen_nbody_jacobi_interaction(double t, double h, double *q, double *p, voi
  * kick p -= h dPhi/dq = h 2 Hess(B) M^-1 dB/dq, computed exactly (the
  * Hessians of the pair potentials along the Jacobi map); q and p_0
  * unchanged.  The modified kicks of SABAC_n and of the kernels of Wisdom,
- * Holman and Touma (1996) compose it with the interaction kick. */
+ * Holman and Touma (1996) compose it with the interaction kick.  Above 32
+ * bodies its first call allocates O(n^2) scratch in the system
+ * (VIGEN_ENOMEM when it cannot, the state unchanged). */
 int vigen_nbody_jacobi_interaction_gradient(double t, double h, double *q, double *p, void *ctx);
 /* Democratic heliocentric: the Kepler drift, the planet-planet kick, and
  * the jump q_i += h (p_1 + ... + p_{n-1})/m_0 (i >= 1). */
