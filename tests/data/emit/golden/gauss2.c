@@ -560,7 +560,8 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
 
 /* A small static dimension: the component loops unrolled in full (for a
  * planar problem their control costs as much as their body). */
-#if defined(__GNUC__) && GAUSS2_DIM > 0 && GAUSS2_DIM <= 4
+#define GAUSS2_SMALL (GAUSS2_DIM > 0 && GAUSS2_DIM <= 4)
+#if defined(__GNUC__) && GAUSS2_SMALL
 #define GAUSS2_UNROLL _Pragma("GCC unroll 4")
 #else
 #define GAUSS2_UNROLL
@@ -607,6 +608,10 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
     unsigned long sweeps = 0;
     int st;
     double sq = 0, d;
+    /* h^2 M^-1 of a small static dimension kept in registers for the sweeps */
+    double hm[GAUSS2_SMALL ? GAUSS2_DIM : 1];
+    GAUSS2_UNROLL
+    for (size_t k = 0; k < (GAUSS2_SMALL ? n : 0); k++) hm[k] = h2 * im[k];
     if (xw) {
         /* the start forces extrapolated here, from the previous step's
          * forces with the weights xw, instead of in a pass of their own */
@@ -661,7 +666,7 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
         sweeps++;
         GAUSS2_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double m = h2 * im[k];
+            const double m = GAUSS2_SMALL ? hm[k] : h2 * im[k];
             (void)m;
             const double x1 = f1[k];
             const double x2 = f2[k];

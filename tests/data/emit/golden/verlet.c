@@ -559,7 +559,8 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
 
 /* A small static dimension: the component loops unrolled in full (for a
  * planar problem their control costs as much as their body). */
-#if defined(__GNUC__) && VERLET_DIM > 0 && VERLET_DIM <= 4
+#define VERLET_SMALL (VERLET_DIM > 0 && VERLET_DIM <= 4)
+#if defined(__GNUC__) && VERLET_SMALL
 #define VERLET_UNROLL _Pragma("GCC unroll 4")
 #else
 #define VERLET_UNROLL
@@ -604,6 +605,10 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
     unsigned long sweeps = 0;
     int st;
     double sq = 0, d;
+    /* h^2 M^-1 of a small static dimension kept in registers for the sweeps */
+    double hm[VERLET_SMALL ? VERLET_DIM : 1];
+    VERLET_UNROLL
+    for (size_t k = 0; k < (VERLET_SMALL ? n : 0); k++) hm[k] = h2 * im[k];
     if (xw) {
         /* the start forces extrapolated here, from the previous step's
          * forces with the weights xw, instead of in a pass of their own */
@@ -650,7 +655,7 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
         sweeps++;
         VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double m = h2 * im[k];
+            const double m = VERLET_SMALL ? hm[k] : h2 * im[k];
             (void)m;
             const double x1 = f1[k];
             const double y2 = b2[k] + m * (0x1p-1 * x1);
