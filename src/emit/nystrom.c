@@ -118,15 +118,34 @@ static char *increment(const char *ca, char *const *row, slong s, const char *pr
  * per step into w->F[i-1] (qk itself when ca_i = 0) -- the same sums, in
  * the same order, as the one-expression form of increment(), so the same
  * bits. */
-static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, const char *R, const char *N)
+static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, int lagrange, const char *R, const char *N)
 {
     vigen_slot *bp = vigen_slots_lines(S, "NYS_BASE_POINTERS");
     vigen_slot *st = vigen_slots_lines(S, "NYS_START");
+    vigen_slot *sf = vigen_slots_lines(S, "NYS_START_F");
+    vigen_slot *sx = vigen_slots_lines(S, "NYS_START_FO");
+    vigen_slot *xl = vigen_slots_lines(S, "NYS_XW_LOAD");
     vigen_slot *sw = vigen_slots_lines(S, "NYS_SWEEP");
-    for (slong j = 1; j <= s; j++)
-        if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(sw, "const %s x%ld = f%ld[k];", R, j, j);
-    for (slong j = 1; j <= s; j++)
-        if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(st, "const %s x%ld = f%ld[k];", R, j, j);
+    char **wrow = strv0(s);
+    for (slong j = 1; j <= s; j++) {
+        if (!vigen_emit_colused(Y->aat, s, j - 1)) continue;
+        vigen_slot_line(sw, "const %s x%ld = f%ld[k];", R, j, j);
+        vigen_slot_line(sf, "const %s x%ld = f%ld[k];", R, j, j);
+        if (!lagrange) continue;
+        /* the extrapolated start force of stage j, as MECH_EXTRAP_APPLY
+         * forms it (the same sum: the same bits), not stored */
+        for (slong l = 1; l <= s; l++) {
+            vigen_slot_line(xl, "const %s w%ld_%ld = xw[%ld];", R, j, l, (long)((j - 1) * s + l - 1));
+            wrow[l - 1] = vigen_strdup_printf("w%ld_%ld", j, l);
+        }
+        char *fo = vigen_emit_lin(wrow, s, "fo", "[k]");
+        vigen_slot_line(sx, "const %s x%ld = %s;", R, j, fo);
+        free(fo);
+        for (slong l = 0; l < s; l++) free(wrow[l]);
+    }
+    free(wrow);
+    for (slong j = 1; lagrange && j <= s; j++)
+        vigen_slot_line(bp, "const %s *const fo%ld = w->Go[%ld];", R, j, j - 1);
     for (slong i = 1; i <= s; i++) {
         const char *ca = Y->ca[i - 1];
         char *sum = vigen_emit_lin(Y->aat + (i - 1) * s, s, "x", "");
@@ -206,7 +225,7 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         vigen_slot_line(nu, "dq = %s_inc_add(dq, d);", N);
         vigen_slot_line(nu, "sq = %s_max(sq, %s_abs(Q%ld[k]));", N, N, i);
     }
-    nys_base_code(S, Y, s, R, N);
+    nys_base_code(S, Y, s, K->lagrange, R, N);
     for (slong i = 0; i < s; i++)
         for (slong j = 0; j < s; j++)
             if (Y->aat[i * s + j])
@@ -218,6 +237,8 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
     vigen_slot *ea = vigen_slots_lines(S, "MECH_EXTRAP_APPLY");
     vigen_slot *ec = vigen_slots_lines(S, "MECH_EXTRAP_COPY");
     vigen_slot *sc = vigen_slots_lines(S, "MECH_START_COPIES");
+    vigen_slot *xs = vigen_slots_lines(S, "MECH_XW_STORE");
+    vigen_slot *xa = vigen_slots_lines(S, "MECH_XW_LOAD");
     char **wrow = strv0(s);
     for (slong i = 1; i <= s; i++) {
         vigen_slot_line(ip, "%s *const f%ld = w->G[%ld];", R, i, i - 1);
@@ -225,7 +246,11 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         vigen_slot_line(ec, "memcpy(f%ld, fo%ld, n * sizeof(%s));", i, i, R);
         if (i >= 2) vigen_slot_line(sc, "memcpy(f%ld, f1, n * sizeof(%s));", i, R);
         if (!K->lagrange) continue;
-        for (slong j = 1; j <= s; j++) wrow[j - 1] = vigen_strdup_printf("w%ld_%ld", i, j);
+        for (slong j = 1; j <= s; j++) {
+            vigen_slot_line(xs, "w->xw[%ld] = w%ld_%ld;", (long)((i - 1) * s + j - 1), i, j);
+            vigen_slot_line(xa, "const %s w%ld_%ld = xw[%ld];", R, i, j, (long)((i - 1) * s + j - 1));
+            wrow[j - 1] = vigen_strdup_printf("w%ld_%ld", i, j);
+        }
         char *fo = vigen_emit_lin(wrow, s, "fo", "[k]");
         vigen_slot_line(ea, "f%ld[k] = %s;", i, fo);
         free(fo);

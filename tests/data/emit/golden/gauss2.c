@@ -92,6 +92,8 @@ struct gauss2_workspace {
                                       it), the new state of an implicit one (until finite) */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
+    double xh, xhp, xw[2 * 2];   /* the extrapolation weights of a mechanical
+                                      step xh after xhp (xh = 0: none yet) */
     int history;                    /* Fo, Go and hprev are valid */
     double t_next, q_next0, p_next0;   /* what the last step returned */
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
@@ -459,9 +461,25 @@ static inline int gauss2_solved(gauss2_workspace *w, int st)
     return st;
 }
 
+/* The end of an implicit step whose finite new state is in q, p: the
+ * compensation and t1 taken over, the stage gradients kept for the next
+ * step's start. */
+static inline int gauss2_keep(gauss2_workspace *w, double *t, const double *q, const double *p, double h, double t1,
+                              double ct)
+{
+    gauss2_commit(w, t, q, p, t1, ct, w->opt.kahan);
+    for (int i = 0; i < 2; i++) {
+        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
+        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
+    }
+    w->hprev = h;
+    w->history = 1;
+    return VIGEN_SUCCESS;
+}
+
 /* The end of an implicit step whose new state is in w->qx, w->px: taken
- * over if it is finite (nf, see gauss2_nf_add), the stage gradients kept
- * for the next step's start; otherwise VIGEN_ENONFINITE, nothing changed. */
+ * over if it is finite (nf, see gauss2_nf_add); otherwise VIGEN_ENONFINITE,
+ * nothing changed. */
 static int gauss2_accept(gauss2_workspace *w, double *t, double *q, double *p, double h, double t1, double ct,
                          gauss2_nf nf)
 {
@@ -472,14 +490,7 @@ static int gauss2_accept(gauss2_workspace *w, double *t, double *q, double *p, d
     }
     memcpy(q, w->qx, n * sizeof(double));
     memcpy(p, w->px, n * sizeof(double));
-    gauss2_commit(w, t, q, p, t1, ct, w->opt.kahan);
-    for (int i = 0; i < 2; i++) {
-        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
-        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
-    }
-    w->hprev = h;
-    w->history = 1;
-    return VIGEN_SUCCESS;
+    return gauss2_keep(w, t, q, p, h, t1, ct);
 }
 
 /* The implicit step: starting values, stage solve, compensated update. */
@@ -549,7 +560,8 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
 
 /* A small static dimension: the component loops unrolled in full (for a
  * planar problem their control costs as much as their body). */
-#if defined(__GNUC__) && GAUSS2_DIM > 0 && GAUSS2_DIM <= 4
+#define GAUSS2_SMALL (GAUSS2_DIM > 0 && GAUSS2_DIM <= 4)
+#if defined(__GNUC__) && GAUSS2_SMALL
 #define GAUSS2_UNROLL _Pragma("GCC unroll 4")
 #else
 #define GAUSS2_UNROLL
@@ -576,7 +588,8 @@ static inline int gauss2_going(vigen_iter_monitor *m, double delta, int max_iter
  * w->F (unused by a mechanical problem), so that a sweep adds to it only
  * h^2 M^-1 times the precomputed (A At) combination of the forces.
  * v = M^-1 p is left in w->P[0] for the update. */
-static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
+static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h,
+                                   const double *xw)
 {
     const size_t n = gauss2_n(w);
     const double *const im = w->im;
@@ -587,29 +600,62 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
     const double *const f2 = w->G[1];
+    const double *const fo1 = w->Go[0];
+    const double *const fo2 = w->Go[1];
     double *const b1 = w->F[0];
     double *const b2 = w->F[1];
     vigen_iter_monitor mon;
     unsigned long sweeps = 0;
     int st;
     double sq = 0, d;
+    /* h^2 M^-1 of a small static dimension kept in registers for the sweeps */
+    double hm[GAUSS2_SMALL ? GAUSS2_DIM : 1];
     GAUSS2_UNROLL
-    for (size_t k = 0; k < n; k++) {
-        const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
-        (void)hv; (void)m;
-        v[k] = vk;
-        const double x1 = f1[k];
-        const double x2 = f2[k];
-        const double u1 = qk + 0x1.b0cb174df99c7p-3 * hv;
-        b1[k] = u1;
-        const double y1 = u1 + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
-        const double u2 = qk + 0x1.93cd3a2c8198ep-1 * hv;
-        b2[k] = u2;
-        const double y2 = u2 + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
-        Q1[k] = y1;
-        d = gauss2_abs(y1); sq = d > sq ? d : sq;
-        Q2[k] = y2;
-        d = gauss2_abs(y2); sq = d > sq ? d : sq;
+    for (size_t k = 0; k < (GAUSS2_SMALL ? n : 0); k++) hm[k] = h2 * im[k];
+    if (xw) {
+        /* the start forces extrapolated here, from the previous step's
+         * forces with the weights xw, instead of in a pass of their own */
+        const double w1_1 = xw[0];
+        const double w1_2 = xw[1];
+        const double w2_1 = xw[2];
+        const double w2_2 = xw[3];
+        GAUSS2_UNROLL
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+            (void)hv; (void)m;
+            v[k] = vk;
+            const double x1 = w1_1 * fo1[k] + w1_2 * fo2[k];
+            const double x2 = w2_1 * fo1[k] + w2_2 * fo2[k];
+            const double u1 = qk + 0x1.b0cb174df99c7p-3 * hv;
+            b1[k] = u1;
+            const double y1 = u1 + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+            const double u2 = qk + 0x1.93cd3a2c8198ep-1 * hv;
+            b2[k] = u2;
+            const double y2 = u2 + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            Q1[k] = y1;
+            d = gauss2_abs(y1); sq = d > sq ? d : sq;
+            Q2[k] = y2;
+            d = gauss2_abs(y2); sq = d > sq ? d : sq;
+        }
+    } else {
+        GAUSS2_UNROLL
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+            (void)hv; (void)m;
+            v[k] = vk;
+            const double x1 = f1[k];
+            const double x2 = f2[k];
+            const double u1 = qk + 0x1.b0cb174df99c7p-3 * hv;
+            b1[k] = u1;
+            const double y1 = u1 + m * (0x1.5555555555555p-5 * x1 + (-0x1.3cd3a2c8198e2p-6) * x2);
+            const double u2 = qk + 0x1.93cd3a2c8198ep-1 * hv;
+            b2[k] = u2;
+            const double y2 = u2 + m * (0x1.13cd3a2c8198ep-2 * x1 + 0x1.5555555555555p-5 * x2);
+            Q1[k] = y1;
+            d = gauss2_abs(y1); sq = d > sq ? d : sq;
+            Q2[k] = y2;
+            d = gauss2_abs(y2); sq = d > sq ? d : sq;
+        }
     }
     if (sq == 0) sq = 1;
     vigen_iter_start(&mon);
@@ -620,7 +666,7 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
         sweeps++;
         GAUSS2_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double m = h2 * im[k];
+            const double m = GAUSS2_SMALL ? hm[k] : h2 * im[k];
             (void)m;
             const double x1 = f1[k];
             const double x2 = f2[k];
@@ -736,19 +782,18 @@ GAUSS2_NOINLINE int gauss2_mech_implicit(gauss2_workspace *w, double *t, double 
     const double *const fo1 = w->Go[0];
     double *const f2 = w->G[1];
     const double *const fo2 = w->Go[1];
+    const double *xw = NULL;   /* extrapolation weights for the fixed point's first pass */
     if (w->history && w->opt.extrapolate) {
-        /* Lagrange extrapolation of the previous step's stage forces, as
-         * for the gradients of gauss2_implicit. */
-        const double r = h / w->hprev;
-        const double x1 = 1 + 0x1.b0cb174df99c7p-3 * r;
-        const double x2 = 1 + 0x1.93cd3a2c8198ep-1 * r;
-        const double w1_1 = (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
-        const double w1_2 = (x1 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
-        const double w2_1 = (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
-        const double w2_2 = (x2 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
         if (w->opt.start_force) {
             /* with the force at (t0, q), the end of the previous step, as
              * one more node (1, in units of the previous step): degree s */
+            const double r = h / w->hprev;
+            const double x1 = 1 + 0x1.b0cb174df99c7p-3 * r;
+            const double x2 = 1 + 0x1.93cd3a2c8198ep-1 * r;
+            const double w1_1 = (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
+            const double w1_2 = (x1 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
+            const double w2_1 = (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
+            const double w2_2 = (x2 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
             double *const fe = w->F[0];
             const double u1_1 = w1_1 * (x1 - 1) * (-0x1.4498517a7b356p+0);
             const double u1_2 = w1_2 * (x1 - 1) * (-0x1.2ed9eba16132bp+2);
@@ -762,10 +807,38 @@ GAUSS2_NOINLINE int gauss2_mech_implicit(gauss2_workspace *w, double *t, double 
                 f1[k] = u1_1 * fo1[k] + u1_2 * fo2[k] + u1_e * fe[k];
                 f2[k] = u2_1 * fo1[k] + u2_2 * fo2[k] + u2_e * fe[k];
             }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
-                f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+        } else
+        {
+            /* Lagrange extrapolation of the previous step's stage forces,
+             * as for the gradients of gauss2_implicit; the weights depend
+             * on h / hprev alone and are kept for the next step of the
+             * same h. */
+            if (h != w->xh || w->hprev != w->xhp) {
+                const double r = h / w->hprev;
+                const double x1 = 1 + 0x1.b0cb174df99c7p-3 * r;
+                const double x2 = 1 + 0x1.93cd3a2c8198ep-1 * r;
+                const double w1_1 = (x1 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
+                const double w1_2 = (x1 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
+                const double w2_1 = (x2 - 0x1.93cd3a2c8198ep-1) * (-0x1.bb67ae8584caap+0);
+                const double w2_2 = (x2 - 0x1.b0cb174df99c7p-3) * 0x1.bb67ae8584caap+0;
+                w->xw[0] = w1_1;
+                w->xw[1] = w1_2;
+                w->xw[2] = w2_1;
+                w->xw[3] = w2_2;
+                w->xh = h;
+                w->xhp = w->hprev;
+            }
+            xw = w->xw;
+            if (w->nw) {
+                const double w1_1 = xw[0];
+                const double w1_2 = xw[1];
+                const double w2_1 = xw[2];
+                const double w2_2 = xw[3];
+                for (size_t k = 0; k < n; k++) {
+                    f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
+                    f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+                }
+                xw = NULL;
             }
         }
     } else {
@@ -774,36 +847,56 @@ GAUSS2_NOINLINE int gauss2_mech_implicit(gauss2_workspace *w, double *t, double 
         w->stats.dHdq_evals++;
         memcpy(f2, f1, n * sizeof(double));
     }
-    st = gauss2_solved(w, w->nw ? gauss2_mech_newton(w, t0, q, p, h) : gauss2_mech_fixed_point(w, t0, q, p, h));
+    st = gauss2_solved(w, w->nw ? gauss2_mech_newton(w, t0, q, p, h) : gauss2_mech_fixed_point(w, t0, q, p, h, xw));
     if (st != VIGEN_SUCCESS) return st;
-    /* the new state into w->qx, w->px; q, p change only if it is finite */
-    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    /* the new state written in place, the old one saved aside in w->qx,
+     * w->px in the same pass and put back only if the new one is not
+     * finite (VIGEN_ENONFINITE leaves t, q, p unchanged) */
+    double *const qo = w->qx, *const po = w->px, t1, ct = w->ct;
     const double *const im = w->im, *const v = w->P[0];
     const double h2 = h * h;
     gauss2_nf nf = 0;
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
+        double nfc = 0;   /* the sum of the new compensations (see gauss2_nf_add) */
         GAUSS2_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double hv = h * v[k], m = h2 * im[k];
+            const double hv = h * v[k], m = h2 * im[k], qk = q[k], pk = p[k];
             (void)hv; (void)m;
-            qn[k] = vigen_twosum_next(q[k], hv + m * (0x1.93cd3a2c8198ep-2 * f1[k] + 0x1.b0cb174df99c7p-4 * f2[k]), cq[k], &cqn[k]);
-            pn[k] = vigen_twosum_next(p[k], h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]), cp[k], &cpn[k]);
-            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
+            const double dqk = hv + m * (0x1.93cd3a2c8198ep-2 * f1[k] + 0x1.b0cb174df99c7p-4 * f2[k]), dpk = h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            double cqk, cpk;
+            qo[k] = qk;
+            po[k] = pk;
+            q[k] = vigen_twosum_next(qk, dqk, cq[k], &cqk);
+            p[k] = vigen_twosum_next(pk, dpk, cp[k], &cpk);
+            cqn[k] = cqk;
+            cpn[k] = cpk;
+            nfc += cqk + cpk;
         }
+        nf = gauss2_nf_add(nf, nfc);
         t1 = vigen_twosum_update(t0, h, &ct);
     } else {
+        GAUSS2_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double hv = h * v[k], m = h2 * im[k];
+            const double hv = h * v[k], m = h2 * im[k], qk = q[k], pk = p[k];
             (void)hv; (void)m;
-            qn[k] = q[k] + hv + m * (0x1.93cd3a2c8198ep-2 * f1[k] + 0x1.b0cb174df99c7p-4 * f2[k]);
-            pn[k] = p[k] + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
-            nf = gauss2_nf_add(gauss2_nf_add(nf, qn[k]), pn[k]);
+            const double qn = qk + hv + m * (0x1.93cd3a2c8198ep-2 * f1[k] + 0x1.b0cb174df99c7p-4 * f2[k]), pn = pk + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            qo[k] = qk;
+            po[k] = pk;
+            q[k] = qn;
+            p[k] = pn;
+            nf = gauss2_nf_add(gauss2_nf_add(nf, qn), pn);
         }
         t1 = t0 + h;
     }
-    return gauss2_accept(w, t, q, p, h, t1, ct, nf);
+    if (gauss2_nf_add(nf, t1) != 0) {
+        memcpy(q, qo, n * sizeof(double));
+        memcpy(p, po, n * sizeof(double));
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    return gauss2_keep(w, t, q, p, h, t1, ct);
 }
 
 /* The chosen path: explicit (compensated or not) or implicit, for any H or

@@ -92,6 +92,8 @@ struct verlet_workspace {
                                       it), the new state of an implicit one (until finite) */
     double *fdwork;                /* 6 arrays: finite-difference Hessian */
     double hprev;                  /* previous step size */
+    double xh, xhp, xw[2 * 2];   /* the extrapolation weights of a mechanical
+                                      step xh after xhp (xh = 0: none yet) */
     int history;                    /* Fo, Go and hprev are valid */
     double t_next, q_next0, p_next0;   /* what the last step returned */
     vigen_newton *nw;               /* Newton matrix; NULL for fixed-point iteration */
@@ -458,9 +460,25 @@ static inline int verlet_solved(verlet_workspace *w, int st)
     return st;
 }
 
+/* The end of an implicit step whose finite new state is in q, p: the
+ * compensation and t1 taken over, the stage gradients kept for the next
+ * step's start. */
+static inline int verlet_keep(verlet_workspace *w, double *t, const double *q, const double *p, double h, double t1,
+                              double ct)
+{
+    verlet_commit(w, t, q, p, t1, ct, w->opt.kahan);
+    for (int i = 0; i < 2; i++) {
+        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
+        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
+    }
+    w->hprev = h;
+    w->history = 1;
+    return VIGEN_SUCCESS;
+}
+
 /* The end of an implicit step whose new state is in w->qx, w->px: taken
- * over if it is finite (nf, see verlet_nf_add), the stage gradients kept
- * for the next step's start; otherwise VIGEN_ENONFINITE, nothing changed. */
+ * over if it is finite (nf, see verlet_nf_add); otherwise VIGEN_ENONFINITE,
+ * nothing changed. */
 static int verlet_accept(verlet_workspace *w, double *t, double *q, double *p, double h, double t1, double ct,
                          verlet_nf nf)
 {
@@ -471,14 +489,7 @@ static int verlet_accept(verlet_workspace *w, double *t, double *q, double *p, d
     }
     memcpy(q, w->qx, n * sizeof(double));
     memcpy(p, w->px, n * sizeof(double));
-    verlet_commit(w, t, q, p, t1, ct, w->opt.kahan);
-    for (int i = 0; i < 2; i++) {
-        double *tmp = w->F[i]; w->F[i] = w->Fo[i]; w->Fo[i] = tmp;
-        tmp = w->G[i]; w->G[i] = w->Go[i]; w->Go[i] = tmp;
-    }
-    w->hprev = h;
-    w->history = 1;
-    return VIGEN_SUCCESS;
+    return verlet_keep(w, t, q, p, h, t1, ct);
 }
 
 /* The implicit step: starting values, stage solve, compensated update. */
@@ -548,7 +559,8 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
 
 /* A small static dimension: the component loops unrolled in full (for a
  * planar problem their control costs as much as their body). */
-#if defined(__GNUC__) && VERLET_DIM > 0 && VERLET_DIM <= 4
+#define VERLET_SMALL (VERLET_DIM > 0 && VERLET_DIM <= 4)
+#if defined(__GNUC__) && VERLET_SMALL
 #define VERLET_UNROLL _Pragma("GCC unroll 4")
 #else
 #define VERLET_UNROLL
@@ -575,7 +587,8 @@ static inline int verlet_going(vigen_iter_monitor *m, double delta, int max_iter
  * w->F (unused by a mechanical problem), so that a sweep adds to it only
  * h^2 M^-1 times the precomputed (A At) combination of the forces.
  * v = M^-1 p is left in w->P[0] for the update. */
-static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h)
+static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h,
+                                   const double *xw)
 {
     const size_t n = verlet_n(w);
     const double *const im = w->im;
@@ -585,25 +598,53 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
     double *const Q1 = w->Q[0];
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
+    const double *const fo1 = w->Go[0];
+    const double *const fo2 = w->Go[1];
     double *const b2 = w->F[1];
     vigen_iter_monitor mon;
     unsigned long sweeps = 0;
     int st;
     double sq = 0, d;
+    /* h^2 M^-1 of a small static dimension kept in registers for the sweeps */
+    double hm[VERLET_SMALL ? VERLET_DIM : 1];
     VERLET_UNROLL
-    for (size_t k = 0; k < n; k++) {
-        const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
-        (void)hv; (void)m;
-        v[k] = vk;
-        const double x1 = f1[k];
-        const double y1 = qk + 0;
-        const double u2 = qk + hv;
-        b2[k] = u2;
-        const double y2 = u2 + m * (0x1p-1 * x1);
-        Q1[k] = y1;
-        d = verlet_abs(y1); sq = d > sq ? d : sq;
-        Q2[k] = y2;
-        d = verlet_abs(y2); sq = d > sq ? d : sq;
+    for (size_t k = 0; k < (VERLET_SMALL ? n : 0); k++) hm[k] = h2 * im[k];
+    if (xw) {
+        /* the start forces extrapolated here, from the previous step's
+         * forces with the weights xw, instead of in a pass of their own */
+        const double w1_1 = xw[0];
+        const double w1_2 = xw[1];
+        VERLET_UNROLL
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+            (void)hv; (void)m;
+            v[k] = vk;
+            const double x1 = w1_1 * fo1[k] + w1_2 * fo2[k];
+            const double y1 = qk + 0;
+            const double u2 = qk + hv;
+            b2[k] = u2;
+            const double y2 = u2 + m * (0x1p-1 * x1);
+            Q1[k] = y1;
+            d = verlet_abs(y1); sq = d > sq ? d : sq;
+            Q2[k] = y2;
+            d = verlet_abs(y2); sq = d > sq ? d : sq;
+        }
+    } else {
+        VERLET_UNROLL
+        for (size_t k = 0; k < n; k++) {
+            const double qk = q[k], vk = im[k] * p[k], hv = h * vk, m = h2 * im[k];
+            (void)hv; (void)m;
+            v[k] = vk;
+            const double x1 = f1[k];
+            const double y1 = qk + 0;
+            const double u2 = qk + hv;
+            b2[k] = u2;
+            const double y2 = u2 + m * (0x1p-1 * x1);
+            Q1[k] = y1;
+            d = verlet_abs(y1); sq = d > sq ? d : sq;
+            Q2[k] = y2;
+            d = verlet_abs(y2); sq = d > sq ? d : sq;
+        }
     }
     if (sq == 0) sq = 1;
     verlet_force(w, t0, Q1, w->G[0]);
@@ -614,7 +655,7 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
         sweeps++;
         VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double m = h2 * im[k];
+            const double m = VERLET_SMALL ? hm[k] : h2 * im[k];
             (void)m;
             const double x1 = f1[k];
             const double y2 = b2[k] + m * (0x1p-1 * x1);
@@ -720,19 +761,40 @@ VERLET_NOINLINE int verlet_mech_implicit(verlet_workspace *w, double *t, double 
     const double *const fo1 = w->Go[0];
     double *const f2 = w->G[1];
     const double *const fo2 = w->Go[1];
+    const double *xw = NULL;   /* extrapolation weights for the fixed point's first pass */
     if (w->history && w->opt.extrapolate) {
-        /* Lagrange extrapolation of the previous step's stage forces, as
-         * for the gradients of verlet_implicit. */
-        const double r = h / w->hprev;
-        const double x1 = 1;
-        const double x2 = 1 + r;
-        const double w1_1 = (x1 - 0x1p+0) * (-0x1p+0);
-        const double w1_2 = (x1 - 0) * 0x1p+0;
-        const double w2_1 = (x2 - 0x1p+0) * (-0x1p+0);
-        const double w2_2 = (x2 - 0) * 0x1p+0;
-        for (size_t k = 0; k < n; k++) {
-            f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
-            f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+        {
+            /* Lagrange extrapolation of the previous step's stage forces,
+             * as for the gradients of verlet_implicit; the weights depend
+             * on h / hprev alone and are kept for the next step of the
+             * same h. */
+            if (h != w->xh || w->hprev != w->xhp) {
+                const double r = h / w->hprev;
+                const double x1 = 1;
+                const double x2 = 1 + r;
+                const double w1_1 = (x1 - 0x1p+0) * (-0x1p+0);
+                const double w1_2 = (x1 - 0) * 0x1p+0;
+                const double w2_1 = (x2 - 0x1p+0) * (-0x1p+0);
+                const double w2_2 = (x2 - 0) * 0x1p+0;
+                w->xw[0] = w1_1;
+                w->xw[1] = w1_2;
+                w->xw[2] = w2_1;
+                w->xw[3] = w2_2;
+                w->xh = h;
+                w->xhp = w->hprev;
+            }
+            xw = w->xw;
+            if (w->nw) {
+                const double w1_1 = xw[0];
+                const double w1_2 = xw[1];
+                const double w2_1 = xw[2];
+                const double w2_2 = xw[3];
+                for (size_t k = 0; k < n; k++) {
+                    f1[k] = w1_1 * fo1[k] + w1_2 * fo2[k];
+                    f2[k] = w2_1 * fo1[k] + w2_2 * fo2[k];
+                }
+                xw = NULL;
+            }
         }
     } else {
         /* Start from the force at (t, q) at every stage. */
@@ -740,36 +802,56 @@ VERLET_NOINLINE int verlet_mech_implicit(verlet_workspace *w, double *t, double 
         w->stats.dHdq_evals++;
         memcpy(f2, f1, n * sizeof(double));
     }
-    st = verlet_solved(w, w->nw ? verlet_mech_newton(w, t0, q, p, h) : verlet_mech_fixed_point(w, t0, q, p, h));
+    st = verlet_solved(w, w->nw ? verlet_mech_newton(w, t0, q, p, h) : verlet_mech_fixed_point(w, t0, q, p, h, xw));
     if (st != VIGEN_SUCCESS) return st;
-    /* the new state into w->qx, w->px; q, p change only if it is finite */
-    double *const qn = w->qx, *const pn = w->px, t1, ct = w->ct;
+    /* the new state written in place, the old one saved aside in w->qx,
+     * w->px in the same pass and put back only if the new one is not
+     * finite (VIGEN_ENONFINITE leaves t, q, p unchanged) */
+    double *const qo = w->qx, *const po = w->px, t1, ct = w->ct;
     const double *const im = w->im, *const v = w->P[0];
     const double h2 = h * h;
     verlet_nf nf = 0;
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
+        double nfc = 0;   /* the sum of the new compensations (see verlet_nf_add) */
         VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double hv = h * v[k], m = h2 * im[k];
+            const double hv = h * v[k], m = h2 * im[k], qk = q[k], pk = p[k];
             (void)hv; (void)m;
-            qn[k] = vigen_twosum_next(q[k], hv + m * (0x1p-1 * f1[k]), cq[k], &cqn[k]);
-            pn[k] = vigen_twosum_next(p[k], h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]), cp[k], &cpn[k]);
-            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
+            const double dqk = hv + m * (0x1p-1 * f1[k]), dpk = h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            double cqk, cpk;
+            qo[k] = qk;
+            po[k] = pk;
+            q[k] = vigen_twosum_next(qk, dqk, cq[k], &cqk);
+            p[k] = vigen_twosum_next(pk, dpk, cp[k], &cpk);
+            cqn[k] = cqk;
+            cpn[k] = cpk;
+            nfc += cqk + cpk;
         }
+        nf = verlet_nf_add(nf, nfc);
         t1 = vigen_twosum_update(t0, h, &ct);
     } else {
+        VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double hv = h * v[k], m = h2 * im[k];
+            const double hv = h * v[k], m = h2 * im[k], qk = q[k], pk = p[k];
             (void)hv; (void)m;
-            qn[k] = q[k] + hv + m * (0x1p-1 * f1[k]);
-            pn[k] = p[k] + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
-            nf = verlet_nf_add(verlet_nf_add(nf, qn[k]), pn[k]);
+            const double qn = qk + hv + m * (0x1p-1 * f1[k]), pn = pk + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            qo[k] = qk;
+            po[k] = pk;
+            q[k] = qn;
+            p[k] = pn;
+            nf = verlet_nf_add(verlet_nf_add(nf, qn), pn);
         }
         t1 = t0 + h;
     }
-    return verlet_accept(w, t, q, p, h, t1, ct, nf);
+    if (verlet_nf_add(nf, t1) != 0) {
+        memcpy(q, qo, n * sizeof(double));
+        memcpy(p, po, n * sizeof(double));
+        w->stats.failed_steps++;
+        return VIGEN_ENONFINITE;
+    }
+    return verlet_keep(w, t, q, p, h, t1, ct);
 }
 
 /* The explicit path (separable H): 1 dH/dp and 1 dH/dq
