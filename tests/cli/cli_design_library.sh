@@ -10,7 +10,10 @@
 # digits the design run finds (the exact member nearest the printed
 # coefficients), and the printed decimals agree with them except the last
 # digits docs/published.md lists as wrong; optimal_s6_4 holds the digits its
-# design run proves; Yoshida's printed w1, w2, w3 against the library's
+# design run proves; optimal_rkn7_6 is one of the roots its family's run
+# proves, of order 6 for Nystrom H, with a smaller Nystrom error constant
+# than Yoshida's sixth order of the same cost, and Yoshida's A is among the
+# roots; Yoshida's printed w1, w2, w3 against the library's
 # yoshida_6 likewise, and McLachlan's RKN method's 20 transcribed digits
 # against its closed forms; the criterion fields are refused when
 # ill-posed; every re-derived or new method of
@@ -28,11 +31,12 @@ bad() { echo "FAIL: $*"; fail=1; }
 D=$SRC/tests/data/design/library
 P=$SRC/tableaux/published
 
-for f in mclachlan_atela_2 mclachlan_atela_3 blanes_moan_s6_4 blanes_moan_s10_6 optimal_s6_4; do
+for f in mclachlan_atela_2 mclachlan_atela_3 blanes_moan_s6_4 blanes_moan_s10_6 optimal_s6_4 optimal_rkn7_6; do
   mkdir "$T/$f"
   "$VIGEN" design "$D/$f.lua" -o "$T/$f" > "$T/$f.out" 2> "$T/$f.err" || { bad "$f: exit $? ($(cat "$T/$f.err"))"; continue; }
   for g in "$T/$f"/*.lua; do "$VIGEN" check "$g" --json > "${g%.lua}.json" 2>/dev/null || bad "$g: check fails"; done
 done
+"$VIGEN" check "$P/yoshida_6.lua" --json > "$T/yoshida_6.json" 2>/dev/null || bad "yoshida_6: check fails"
 
 python3 - "$T" "$P" <<'PY' || fail=1
 import glob, json, re, sys
@@ -109,6 +113,29 @@ design = [t for _, t in steps(glob.glob(T + "/optimal_s6_4/*_1.lua")[0])]
 stored = re.findall(r'"(-?[01]\.[0-9]{38,})"', open(P + "/optimal_s6_4.lua").read())
 if sorted(set(design)) != sorted(set(stored)): bad.append("optimal_s6_4: the library's digits are not the design's")
 
+# the seven-kick RKN splitting: one of the proved roots of its family, digit
+# for digit; of order 6 for Nystrom H, with a smaller Nystrom constant than
+# yoshida_6 (7 forces too), which as a splitting is a root of the same family
+def values(path):
+    text = open(path).read()
+    local = dict(re.findall(r'local (\w+) = "([-0-9.]+)"', text))
+    return [local.get(t, t) for t in re.findall(r'\{ "(?:drift|kick)", "?([-\w.]+)"? \}', text)]
+def nystrom(path):
+    return json.load(open(path[:-4] + ".json"))["error_constants"]["nystrom"]
+roots = sorted(glob.glob(T + "/optimal_rkn7_6/*.lua"))
+lib = values(P + "/optimal_rkn7_6.lua")
+hit = [f for f in roots if [t for _, t in steps(f)] == lib]
+if len(hit) != 1: bad.append("optimal_rkn7_6: %d roots of the design equal the library's file" % len(hit))
+else:
+    n, y = nystrom(hit[0]), json.load(open(T + "/yoshida_6.json"))["error_constants"]["nystrom"]
+    if n["order"] != 6 or not n["value"] < y["value"] / 30:
+        bad.append("optimal_rkn7_6: Nystrom order %s constant %s against yoshida_6's %s" % (n["order"], n["value"], y["value"]))
+# Yoshida's A (w3 w2 w1 w0 w1 w2 w3 of position Verlet) as a splitting:
+# its third kick is w1
+w1 = mpf(re.search(r'local w1 = "([-0-9.]+)"', open(P + "/yoshida_6.lua").read()).group(1))
+if not any(steps(f)[5][0] == "kick" and abs(mpf(steps(f)[5][1]) - w1) < mpf(10) ** -35 for f in roots):
+    bad.append("optimal_rkn7_6: Yoshida's A is not among the roots")
+
 # Yoshida (1990) Table 1, solution A, against the library's 50 digits
 text = open(P + "/yoshida_6.lua").read()
 w = {k: mpf(re.search(r'local %s = "([-0-9.]+)"' % k, text).group(1)) for k in ("w1", "w2", "w3")}
@@ -152,7 +179,7 @@ refuse "give one of them" \
 
 # show (every format), emit and try without --allow-inexact
 methods="yoshida_4 yoshida_6 suzuki_4 forest_ruth_4 candy_rozmus_4 ruth_3 mclachlan_atela_2 mclachlan_atela_3
-         blanes_moan_s6_4 blanes_moan_s10_6 mclachlan_rkn_4 optimal_s5_4 optimal_s6_4"
+         blanes_moan_s6_4 blanes_moan_s10_6 mclachlan_rkn_4 optimal_s5_4 optimal_s6_4 optimal_rkn7_6"
 for m in $methods; do
   for fmt in text latex json lua; do
     "$VIGEN" show "$P/$m.lua" --format $fmt > "$T/show" 2> "$T/show.err" || bad "show $m --format $fmt: $(cat "$T/show.err")"
