@@ -892,117 +892,150 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     verlet_nf nf = 0;   /* see verlet_nf_add */
     double nfc = 0;     /* the sum of the new compensations (kahan), likewise */
     /* q and p are updated in place; their values at the start are kept in
-     * qs, ps as they are overwritten (read there afterwards, and put back if
-     * the new state is not finite); the compensation goes to cq, cp (w->cqn,
-     * w->cpn) from cq0, cp0, taken over only for a finite new state */
-    double *restrict const qs = w->qx;
-    double *restrict const ps = w->px;
-    const double *restrict const cq0 = w->cq;
-    const double *restrict const cp0 = w->cp;
-    double *restrict const cq = w->cqn;
-    double *restrict const cp = w->cpn;
-    double *restrict const X0 = w->x[0];
-    double *restrict const X1 = w->x[1];
-    double *restrict const X2 = w->x[2];
-    double *restrict const X3 = w->x[3];
+     * qs, ps (w->qx, w->px) as they are overwritten (read there afterwards,
+     * and put back if the new state is not finite); the compensation goes to
+     * cq, cp (w->cqn, w->cpn) from cq0, cp0 (w->cq, w->cp), taken over only
+     * for a finite new state.  Each loop reads the pointers it uses from w
+     * (the work arrays X0, X1, ... from w->x) in a block of its own. */
     if (kahan) t1 = vigen_twosum_update(t0, h, &ct);
     else t1 = t0 + h;
-    (void)qs; (void)ps; (void)cq; (void)cp; (void)cq0; (void)cp0;
     if (mech) {
         const double *restrict const im = w->im;
         (void)im;
         if (w->fsal) {
             w->stats.fsal_reuses++;
         } else {
-            verlet_force(w, t0, q, X0);
+            verlet_force(w, t0, q, w->x[0]);
             w->stats.dHdq_evals++;
         }
-        for (size_t k = 0; k < n; k++) X1[k] = p[k] + (0x1p-1 * h) * X0[k];
-        for (size_t k = 0; k < n; k++) X2[k] = im[k] * X1[k];
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-                nfc += cq[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = x + h * X2[k];
-                nf = verlet_nf_add(nf, q[k]);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X1 = w->x[1];
+            for (size_t k = 0; k < n; k++) X1[k] = p[k] + (0x1p-1 * h) * X0[k];
+        }
+        {
+            double *restrict const X1 = w->x[1];
+            double *restrict const X2 = w->x[2];
+            for (size_t k = 0; k < n; k++) X2[k] = im[k] * X1[k];
+        }
+        {
+            double *restrict const X2 = w->x[2];
+            double *restrict const qs = w->qx;
+            const double *restrict const cq0 = w->cq;
+            double *restrict const cq = w->cqn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+                    nfc += cq[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = x + h * X2[k];
+                    nf = verlet_nf_add(nf, q[k]);
+                }
             }
         }
-        verlet_force(w, t1, q, X3);
+        verlet_force(w, t1, q, w->x[3]);
         w->stats.dHdq_evals++;
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = vigen_twosum_next(x, (0x1p-1 * h) * (X0[k] + X3[k]), cp0[k], &cp[k]);
-                nfc += cp[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = x + (0x1p-1 * h) * (X0[k] + X3[k]);
-                nf = verlet_nf_add(nf, p[k]);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X3 = w->x[3];
+            double *restrict const ps = w->px;
+            const double *restrict const cp0 = w->cp;
+            double *restrict const cp = w->cpn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = vigen_twosum_next(x, (0x1p-1 * h) * (X0[k] + X3[k]), cp0[k], &cp[k]);
+                    nfc += cp[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = x + (0x1p-1 * h) * (X0[k] + X3[k]);
+                    nf = verlet_nf_add(nf, p[k]);
+                }
             }
         }
     } else {
         if (w->fsal) {
             w->stats.fsal_reuses++;
         } else {
-            verlet_dHdq(w, t0, q, p, X0);
+            verlet_dHdq(w, t0, q, p, w->x[0]);
             w->stats.dHdq_evals++;
         }
-        for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
-        verlet_dHdp(w, t0, q, X1, X2);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X1 = w->x[1];
+            for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
+        }
+        verlet_dHdp(w, t0, q, w->x[1], w->x[2]);
         w->stats.dHdp_evals++;
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-                nfc += cq[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = x + h * X2[k];
-                nf = verlet_nf_add(nf, q[k]);
+        {
+            double *restrict const X2 = w->x[2];
+            double *restrict const qs = w->qx;
+            const double *restrict const cq0 = w->cq;
+            double *restrict const cq = w->cqn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+                    nfc += cq[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = x + h * X2[k];
+                    nf = verlet_nf_add(nf, q[k]);
+                }
             }
         }
-        verlet_dHdq(w, t1, q, p, X3);
+        verlet_dHdq(w, t1, q, p, w->x[3]);
         w->stats.dHdq_evals++;
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
-                nfc += cp[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
-                nf = verlet_nf_add(nf, p[k]);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X3 = w->x[3];
+            double *restrict const ps = w->px;
+            const double *restrict const cp0 = w->cp;
+            double *restrict const cp = w->cpn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
+                    nfc += cp[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
+                    nf = verlet_nf_add(nf, p[k]);
+                }
             }
         }
     }
     if (verlet_nf_add(verlet_nf_add(nf, nfc), t1) != 0) {
-        memcpy(q, qs, n * sizeof(double));
-        memcpy(p, ps, n * sizeof(double));
+        memcpy(q, w->qx, n * sizeof(double));
+        memcpy(p, w->px, n * sizeof(double));
         w->stats.failed_steps++;
         return VIGEN_ENONFINITE;
     }
     verlet_commit(w, t, q, p, t1, ct, kahan);
-    w->x[0] = X3;
-    w->x[3] = X0;
+    {
+        double *const X0 = w->x[0];
+        double *const X3 = w->x[3];
+        w->x[0] = X3;
+        w->x[3] = X0;
+    }
     w->fsal = 1;
     return VIGEN_SUCCESS;
 }
