@@ -305,6 +305,63 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N, c
 
 /* ---------------------------------------------------------- the explicit path */
 
+/* Whether the C text uses the identifier id (a whole word). */
+static int uses_word(const char *text, const char *id)
+{
+    const size_t len = strlen(id);
+    for (const char *c = strstr(text, id); c; c = strstr(c + 1, id)) {
+        const char b = c == text ? ' ' : c[-1], a = c[len];
+        const int word_b = b == '_' || (b >= '0' && b <= '9') || (b >= 'A' && b <= 'Z') || (b >= 'a' && b <= 'z');
+        const int word_a = a == '_' || (a >= '0' && a <= '9') || (a >= 'A' && a <= 'Z') || (a >= 'a' && a <= 'z');
+        if (!word_b && !word_a) return 1;
+    }
+    return 0;
+}
+
+/* The work array a name of the plan stands for, as an expression of w:
+ * "q" and "p" are the caller's arrays, qs and ps the start values, X<k>
+ * w->x[k] (heap). */
+static char *array_ref(const char *name)
+{
+    if (strcmp(name, "qs") == 0) return vigen_strdup("w->qx");
+    if (strcmp(name, "ps") == 0) return vigen_strdup("w->px");
+    if (name[0] == 'X') return vigen_strdup_printf("w->x[%s]", name + 1);
+    return vigen_strdup(name);
+}
+
+/* A loop of the explicit step (the lines of body) in a block of its own
+ * that reads the pointers it uses from w just before it: no pointer is
+ * held across the gradient calls, so none is saved and reloaded around
+ * them (the calls may change any memory, the compiler cannot keep them in
+ * registers anyway). */
+static void loop_block(vigen_slot *L, const char *R, long nx, const char *ind, char *const *body, int nbody)
+{
+    static const struct { const char *id, *decl; } fixed[] = {
+        { "qs", "%s *restrict const qs = w->qx;" },     { "ps", "%s *restrict const ps = w->px;" },
+        { "cq0", "const %s *restrict const cq0 = w->cq;" }, { "cp0", "const %s *restrict const cp0 = w->cp;" },
+        { "cq", "%s *restrict const cq = w->cqn;" },    { "cp", "%s *restrict const cp = w->cpn;" },
+    };
+    vigen_strbuf all;
+    vigen_strbuf_init(&all);
+    vigen_strbuf_append(&all, "");
+    for (int k = 0; k < nbody; k++) vigen_strbuf_printf(&all, "%s\n", body[k]);
+    vigen_slot_line(L, "%s{", ind);
+    for (long x = 0; x < nx; x++) {
+        char id[24];
+        snprintf(id, sizeof id, "X%ld", x);
+        if (uses_word(all.data, id)) vigen_slot_line(L, "%s    %s *restrict const X%ld = w->x[%ld];", ind, R, x, x);
+    }
+    for (size_t k = 0; k < sizeof fixed / sizeof fixed[0]; k++) {
+        if (!uses_word(all.data, fixed[k].id)) continue;
+        char *d = vigen_strdup_printf(fixed[k].decl, R);
+        vigen_slot_line(L, "%s    %s", ind, d);
+        free(d);
+    }
+    for (int k = 0; k < nbody; k++) vigen_slot_line(L, "%s    %s", ind, body[k]);
+    vigen_slot_line(L, "%s}", ind);
+    vigen_strbuf_clear(&all);
+}
+
 /* The operations of the explicit step, in order.  For a mechanical problem
  * (mech) dH/dp is M^-1 p, written inline with the diagonal im, and dH/dq is
  * -f with f the force: the stage and update sums of p change sign instead
@@ -329,27 +386,35 @@ static void explicit_ops(vigen_slot *L, const emit_explicit *X, const char *N, c
                 vigen_slot_line(L, "} else {");
             }
             const char *qa = strcmp(op->q, "q0") == 0 ? q0 : op->q, *pa = strcmp(op->p, "p0") == 0 ? p0 : op->p;
+            char *qr = array_ref(qa), *pr = array_ref(pa);
             if (!mech) {
-                vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, X%ld);", ind, N, fn, tm, qa, pa, op->dst);
+                vigen_slot_line(L, "%s%s_%s(w, %s, %s, %s, w->x[%ld]);", ind, N, fn, tm, qr, pr, op->dst);
                 vigen_slot_line(L, "%sw->stats.%s_evals++;", ind, fn);
             } else if (isf) {
-                vigen_slot_line(L, "%sfor (size_t k = 0; k < n; k++) X%ld[k] = im[k] * %s[k];", ind, op->dst, pa);
+                char *line = vigen_strdup_printf("for (size_t k = 0; k < n; k++) X%ld[k] = im[k] * %s[k];", op->dst, pa);
+                loop_block(L, R, X->nx, ind, &line, 1);
+                free(line);
             } else {
-                vigen_slot_line(L, "%s%s_force(w, %s, %s, X%ld);", ind, N, tm, qa, op->dst);
+                vigen_slot_line(L, "%s%s_force(w, %s, %s, w->x[%ld]);", ind, N, tm, qr, op->dst);
                 vigen_slot_line(L, "%sw->stats.dHdq_evals++;", ind);
             }
             if (op->fsal) vigen_slot_line(L, "}");
+            free(qr);
+            free(pr);
             free(tm);
             continue;
         }
         char *ht = vigen_emit_hsum_op(op);
         switch (op->op) {
         case XOP_STAGE_Q:
-            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] + %s;", op->dst, q0, ht);
+        case XOP_STAGE_P: {
+            int isq = op->op == XOP_STAGE_Q;
+            char *line = vigen_strdup_printf("for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] %c %s;", op->dst,
+                                             isq ? q0 : p0, isq ? '+' : psign, ht);
+            loop_block(L, R, X->nx, "", &line, 1);
+            free(line);
             break;
-        case XOP_STAGE_P:
-            vigen_slot_line(L, "for (size_t k = 0; k < n; k++) X%ld[k] = %s[k] %c %s;", op->dst, p0, psign, ht);
-            break;
+        }
         default: {
             /* the new q (+) or p (-; + for mech) in place, compensated or
              * not, the old value kept in qs (ps); nf, nfc: is it finite
@@ -358,21 +423,25 @@ static void explicit_ops(vigen_slot *L, const emit_explicit *X, const char *N, c
             const char *x = isq ? "q" : "p";
             char sign = isq ? '+' : psign;
             char *arg = sign == '+' ? vigen_strdup(ht) : vigen_strdup_printf("-(%s)", ht);
-            vigen_slot_line(L, "if (kahan) {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
-            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
-            vigen_slot_line(L, "        %ss[k] = x;", x);
-            vigen_slot_line(L, "        %s[k] = vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]);", x, SFX, arg, x, x);
-            vigen_slot_line(L, "        nfc += c%s[k];", x);
-            vigen_slot_line(L, "    }");
-            vigen_slot_line(L, "} else {");
-            vigen_slot_line(L, "    for (size_t k = 0; k < n; k++) {");
-            vigen_slot_line(L, "        const %s x = %s[k];", R, x);
-            vigen_slot_line(L, "        %ss[k] = x;", x);
-            vigen_slot_line(L, "        %s[k] = x %c %s;", x, sign, ht);
-            vigen_slot_line(L, "        nf = %s_nf_add(nf, %s[k]);", N, x);
-            vigen_slot_line(L, "    }");
-            vigen_slot_line(L, "}");
+            char *body[16];
+            int nb = 0;
+            body[nb++] = vigen_strdup("if (kahan) {");
+            body[nb++] = vigen_strdup("    for (size_t k = 0; k < n; k++) {");
+            body[nb++] = vigen_strdup_printf("        const %s x = %s[k];", R, x);
+            body[nb++] = vigen_strdup_printf("        %ss[k] = x;", x);
+            body[nb++] = vigen_strdup_printf("        %s[k] = vigen_twosum_next%s(x, %s, c%s0[k], &c%s[k]);", x, SFX, arg, x, x);
+            body[nb++] = vigen_strdup_printf("        nfc += c%s[k];", x);
+            body[nb++] = vigen_strdup("    }");
+            body[nb++] = vigen_strdup("} else {");
+            body[nb++] = vigen_strdup("    for (size_t k = 0; k < n; k++) {");
+            body[nb++] = vigen_strdup_printf("        const %s x = %s[k];", R, x);
+            body[nb++] = vigen_strdup_printf("        %ss[k] = x;", x);
+            body[nb++] = vigen_strdup_printf("        %s[k] = x %c %s;", x, sign, ht);
+            body[nb++] = vigen_strdup_printf("        nf = %s_nf_add(nf, %s[k]);", N, x);
+            body[nb++] = vigen_strdup("    }");
+            body[nb++] = vigen_strdup("}");
+            loop_block(L, R, X->nx, "", body, nb);
+            for (int b = 0; b < nb; b++) free(body[b]);
             if (isq) q0 = "qs";
             else p0 = "ps";
             free(arg);
@@ -390,13 +459,22 @@ static void explicit_blocks(vigen_slots *S, const emit_explicit *X, const char *
     vigen_slots_textf(S, "NEVALS_G", "%ld", X->nevals_g);
     vigen_slots_text(S, "FSAL_NOTE", X->fsal ? ", first-same-as-last gradients reused" : "");
     vigen_slots_flag(S, "FSAL", X->fsal);
-    vigen_slot *xp = vigen_slots_lines(S, "X_POINTERS");
-    for (long x = 0; X->mode != EMIT_EXPLICIT_NONE && x < X->nx; x++)
-        vigen_slot_line(xp, "%s *restrict const X%ld = w->x[%ld];", R, x, x);
+    /* the exchanges read every array they move before the first write */
     vigen_slot *sw = vigen_slots_lines(S, "FSAL_SWAPS");
-    for (int k = 0; k < X->nswaps; k++) {
-        vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][0], X->swaps[k][1]);
-        vigen_slot_line(sw, "w->x[%ld] = X%ld;", X->swaps[k][1], X->swaps[k][0]);
+    if (X->nswaps > 0) {
+        vigen_slot_line(sw, "{");
+        for (int k = 0; k < X->nswaps; k++)
+            for (int e = 0; e < 2; e++) {
+                long x = X->swaps[k][e];
+                int seen = 0;
+                for (int j = 0; j < k * 2 + e; j++) seen |= X->swaps[j / 2][j % 2] == x;
+                if (!seen) vigen_slot_line(sw, "    %s *const X%ld = w->x[%ld];", R, x, x);
+            }
+        for (int k = 0; k < X->nswaps; k++) {
+            vigen_slot_line(sw, "    w->x[%ld] = X%ld;", X->swaps[k][0], X->swaps[k][1]);
+            vigen_slot_line(sw, "    w->x[%ld] = X%ld;", X->swaps[k][1], X->swaps[k][0]);
+        }
+        vigen_slot_line(sw, "}");
     }
     explicit_ops(vigen_slots_lines(S, "EXPLICIT_OPS"), X, N, R, SFX, 0);
     explicit_ops(vigen_slots_lines(S, "MECH_EXPLICIT_OPS"), X, N, R, SFX, 1);

@@ -297,7 +297,18 @@ static void gauss2_sweep(gauss2_workspace *w, double t0, double h)
  * reaches the fixed point in fewer iterations than updating Q and P from the
  * same gradients (Jacobi; a quarter fewer gradient evaluations on Kepler and
  * an FPUT chain, docs/benchmarks.md), at the same work per iteration.  The
- * starting Q, P come from the starting gradients in F, G. */
+ * starting Q, P come from the starting gradients in F, G.
+ *
+ * A half sweep that changes no stage value at all can make the rest of the
+ * iteration a repetition of gradients already computed, whose stage values
+ * would come out the same bit for bit and whose increment of exactly zero
+ * vigen_iter_judge would accept; the iteration stops there instead, with
+ * the stage values and gradients that it would have ended with:
+ * - P unchanged in a sweep after the first, when H is separable (F depends
+ *   on P alone: the F of the sweep before comes again), or when the sweep
+ *   before left Q unchanged (F is evaluated at the same Q and P again);
+ * - Q unchanged in a sweep that vigen_iter_judge continues, when H is
+ *   separable (G depends on Q alone: the next sweep repeats this one). */
 static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = gauss2_n(w);
@@ -333,6 +344,9 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
     }
     if (sq == 0) sq = 1;
     if (sp == 0) sp = 1;
+    const int separable = w->sys.separable != 0;
+    int qsame = 0;               /* the last sweep left Q unchanged */
+    unsigned long fsweeps = 0;   /* sweeps that evaluated F */
     vigen_iter_start(&mon);
     for (;;) {
         gauss2_inc dq = 0, dp = 0;
@@ -350,9 +364,14 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
             P1[k] = u1;
             P2[k] = u2;
         }
+        sweeps++;
+        if (dp == 0 && (separable ? sweeps > 1 : qsame)) {
+            st = VIGEN_SUCCESS;
+            break;
+        }
         gauss2_dHdp(w, t0 + 0x1.b0cb174df99c7p-3 * h, Q1, P1, w->F[0]);
         gauss2_dHdp(w, t0 + 0x1.93cd3a2c8198ep-1 * h, Q2, P2, w->F[1]);
-        sweeps++;
+        fsweeps++;
         for (size_t k = 0; k < n; k++) {
             const double qk = q[k];
             const double f1 = F1[k];
@@ -369,10 +388,15 @@ static int gauss2_fixed_point(gauss2_workspace *w, double t0, const double *q, c
             st = vigen_iter_judge(&mon, ((rq > rp) | (rq != rq)) ? rq : rp, w->tol, w->opt.max_iter);
             if (st >= 0) break;
         }
+        qsame = dq == 0;
+        if (qsame && separable) {
+            st = VIGEN_SUCCESS;
+            break;
+        }
     }
-    /* every sweep evaluates both gradients at every stage */
+    /* every sweep evaluates G at every stage, and F unless it stopped early */
     w->stats.dHdq_evals += 2 * sweeps;
-    w->stats.dHdp_evals += 2 * sweeps;
+    w->stats.dHdp_evals += 2 * fsweeps;
     w->stats.last_iterations = sweeps;
     return st;
 }

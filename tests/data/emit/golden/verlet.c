@@ -300,7 +300,18 @@ static void verlet_sweep(verlet_workspace *w, double t0, double h)
  * reaches the fixed point in fewer iterations than updating Q and P from the
  * same gradients (Jacobi; a quarter fewer gradient evaluations on Kepler and
  * an FPUT chain, docs/benchmarks.md), at the same work per iteration.  The
- * starting Q, P come from the starting gradients in F, G. */
+ * starting Q, P come from the starting gradients in F, G.
+ *
+ * A half sweep that changes no stage value at all can make the rest of the
+ * iteration a repetition of gradients already computed, whose stage values
+ * would come out the same bit for bit and whose increment of exactly zero
+ * vigen_iter_judge would accept; the iteration stops there instead, with
+ * the stage values and gradients that it would have ended with:
+ * - P unchanged in a sweep after the first, when H is separable (F depends
+ *   on P alone: the F of the sweep before comes again), or when the sweep
+ *   before left Q unchanged (F is evaluated at the same Q and P again);
+ * - Q unchanged in a sweep that vigen_iter_judge continues, when H is
+ *   separable (G depends on Q alone: the next sweep repeats this one). */
 static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h)
 {
     const size_t n = verlet_n(w);
@@ -335,6 +346,9 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
     }
     if (sq == 0) sq = 1;
     if (sp == 0) sp = 1;
+    const int separable = w->sys.separable != 0;
+    int qsame = 0;               /* the last sweep left Q unchanged */
+    unsigned long fsweeps = 0;   /* sweeps that evaluated F */
     vigen_iter_start(&mon);
     for (;;) {
         verlet_inc dq = 0, dp = 0;
@@ -351,9 +365,14 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
             P1[k] = u1;
             P2[k] = u2;
         }
+        sweeps++;
+        if (dp == 0 && (separable ? sweeps > 1 : qsame)) {
+            st = VIGEN_SUCCESS;
+            break;
+        }
         verlet_dHdp(w, t0, Q1, P1, w->F[0]);
         verlet_dHdp(w, t0 + h, Q2, P2, w->F[1]);
-        sweeps++;
+        fsweeps++;
         for (size_t k = 0; k < n; k++) {
             const double qk = q[k];
             const double f1 = F1[k];
@@ -370,10 +389,15 @@ static int verlet_fixed_point(verlet_workspace *w, double t0, const double *q, c
             st = vigen_iter_judge(&mon, ((rq > rp) | (rq != rq)) ? rq : rp, w->tol, w->opt.max_iter);
             if (st >= 0) break;
         }
+        qsame = dq == 0;
+        if (qsame && separable) {
+            st = VIGEN_SUCCESS;
+            break;
+        }
     }
-    /* every sweep evaluates both gradients at every stage */
+    /* every sweep evaluates G at every stage, and F unless it stopped early */
     w->stats.dHdq_evals += 2 * sweeps;
-    w->stats.dHdp_evals += 2 * sweeps;
+    w->stats.dHdp_evals += 2 * fsweeps;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -868,117 +892,150 @@ VERLET_INLINE int verlet_explicit(verlet_workspace *w, double *t, double *restri
     verlet_nf nf = 0;   /* see verlet_nf_add */
     double nfc = 0;     /* the sum of the new compensations (kahan), likewise */
     /* q and p are updated in place; their values at the start are kept in
-     * qs, ps as they are overwritten (read there afterwards, and put back if
-     * the new state is not finite); the compensation goes to cq, cp (w->cqn,
-     * w->cpn) from cq0, cp0, taken over only for a finite new state */
-    double *restrict const qs = w->qx;
-    double *restrict const ps = w->px;
-    const double *restrict const cq0 = w->cq;
-    const double *restrict const cp0 = w->cp;
-    double *restrict const cq = w->cqn;
-    double *restrict const cp = w->cpn;
-    double *restrict const X0 = w->x[0];
-    double *restrict const X1 = w->x[1];
-    double *restrict const X2 = w->x[2];
-    double *restrict const X3 = w->x[3];
+     * qs, ps (w->qx, w->px) as they are overwritten (read there afterwards,
+     * and put back if the new state is not finite); the compensation goes to
+     * cq, cp (w->cqn, w->cpn) from cq0, cp0 (w->cq, w->cp), taken over only
+     * for a finite new state.  Each loop reads the pointers it uses from w
+     * (the work arrays X0, X1, ... from w->x) in a block of its own. */
     if (kahan) t1 = vigen_twosum_update(t0, h, &ct);
     else t1 = t0 + h;
-    (void)qs; (void)ps; (void)cq; (void)cp; (void)cq0; (void)cp0;
     if (mech) {
         const double *restrict const im = w->im;
         (void)im;
         if (w->fsal) {
             w->stats.fsal_reuses++;
         } else {
-            verlet_force(w, t0, q, X0);
+            verlet_force(w, t0, q, w->x[0]);
             w->stats.dHdq_evals++;
         }
-        for (size_t k = 0; k < n; k++) X1[k] = p[k] + (0x1p-1 * h) * X0[k];
-        for (size_t k = 0; k < n; k++) X2[k] = im[k] * X1[k];
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-                nfc += cq[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = x + h * X2[k];
-                nf = verlet_nf_add(nf, q[k]);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X1 = w->x[1];
+            for (size_t k = 0; k < n; k++) X1[k] = p[k] + (0x1p-1 * h) * X0[k];
+        }
+        {
+            double *restrict const X1 = w->x[1];
+            double *restrict const X2 = w->x[2];
+            for (size_t k = 0; k < n; k++) X2[k] = im[k] * X1[k];
+        }
+        {
+            double *restrict const X2 = w->x[2];
+            double *restrict const qs = w->qx;
+            const double *restrict const cq0 = w->cq;
+            double *restrict const cq = w->cqn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+                    nfc += cq[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = x + h * X2[k];
+                    nf = verlet_nf_add(nf, q[k]);
+                }
             }
         }
-        verlet_force(w, t1, q, X3);
+        verlet_force(w, t1, q, w->x[3]);
         w->stats.dHdq_evals++;
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = vigen_twosum_next(x, (0x1p-1 * h) * (X0[k] + X3[k]), cp0[k], &cp[k]);
-                nfc += cp[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = x + (0x1p-1 * h) * (X0[k] + X3[k]);
-                nf = verlet_nf_add(nf, p[k]);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X3 = w->x[3];
+            double *restrict const ps = w->px;
+            const double *restrict const cp0 = w->cp;
+            double *restrict const cp = w->cpn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = vigen_twosum_next(x, (0x1p-1 * h) * (X0[k] + X3[k]), cp0[k], &cp[k]);
+                    nfc += cp[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = x + (0x1p-1 * h) * (X0[k] + X3[k]);
+                    nf = verlet_nf_add(nf, p[k]);
+                }
             }
         }
     } else {
         if (w->fsal) {
             w->stats.fsal_reuses++;
         } else {
-            verlet_dHdq(w, t0, q, p, X0);
+            verlet_dHdq(w, t0, q, p, w->x[0]);
             w->stats.dHdq_evals++;
         }
-        for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
-        verlet_dHdp(w, t0, q, X1, X2);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X1 = w->x[1];
+            for (size_t k = 0; k < n; k++) X1[k] = p[k] - (0x1p-1 * h) * X0[k];
+        }
+        verlet_dHdp(w, t0, q, w->x[1], w->x[2]);
         w->stats.dHdp_evals++;
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
-                nfc += cq[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = q[k];
-                qs[k] = x;
-                q[k] = x + h * X2[k];
-                nf = verlet_nf_add(nf, q[k]);
+        {
+            double *restrict const X2 = w->x[2];
+            double *restrict const qs = w->qx;
+            const double *restrict const cq0 = w->cq;
+            double *restrict const cq = w->cqn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = vigen_twosum_next(x, h * X2[k], cq0[k], &cq[k]);
+                    nfc += cq[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = q[k];
+                    qs[k] = x;
+                    q[k] = x + h * X2[k];
+                    nf = verlet_nf_add(nf, q[k]);
+                }
             }
         }
-        verlet_dHdq(w, t1, q, p, X3);
+        verlet_dHdq(w, t1, q, p, w->x[3]);
         w->stats.dHdq_evals++;
-        if (kahan) {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
-                nfc += cp[k];
-            }
-        } else {
-            for (size_t k = 0; k < n; k++) {
-                const double x = p[k];
-                ps[k] = x;
-                p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
-                nf = verlet_nf_add(nf, p[k]);
+        {
+            double *restrict const X0 = w->x[0];
+            double *restrict const X3 = w->x[3];
+            double *restrict const ps = w->px;
+            const double *restrict const cp0 = w->cp;
+            double *restrict const cp = w->cpn;
+            if (kahan) {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = vigen_twosum_next(x, -((0x1p-1 * h) * (X0[k] + X3[k])), cp0[k], &cp[k]);
+                    nfc += cp[k];
+                }
+            } else {
+                for (size_t k = 0; k < n; k++) {
+                    const double x = p[k];
+                    ps[k] = x;
+                    p[k] = x - (0x1p-1 * h) * (X0[k] + X3[k]);
+                    nf = verlet_nf_add(nf, p[k]);
+                }
             }
         }
     }
     if (verlet_nf_add(verlet_nf_add(nf, nfc), t1) != 0) {
-        memcpy(q, qs, n * sizeof(double));
-        memcpy(p, ps, n * sizeof(double));
+        memcpy(q, w->qx, n * sizeof(double));
+        memcpy(p, w->px, n * sizeof(double));
         w->stats.failed_steps++;
         return VIGEN_ENONFINITE;
     }
     verlet_commit(w, t, q, p, t1, ct, kahan);
-    w->x[0] = X3;
-    w->x[3] = X0;
+    {
+        double *const X0 = w->x[0];
+        double *const X3 = w->x[3];
+        w->x[0] = X3;
+        w->x[3] = X0;
+    }
     w->fsal = 1;
     return VIGEN_SUCCESS;
 }
