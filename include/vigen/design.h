@@ -53,6 +53,9 @@ typedef struct {
     long *fix_unknown;           /* its index among the unknowns of the family */
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     unsigned long seed;          /* of the starts (default 1) */
+    long screen;                 /* minimize: random points where the error constant is evaluated
+                                    first, the descents starting from the best (default 0: from
+                                    random starts) */
 } vigen_design_spec;
 
 /* Reads and validates the design file at path (d uninitialised on entry;

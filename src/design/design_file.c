@@ -17,6 +17,7 @@
 /* minimize: each start is a descent with a checker run per trial point */
 #define DEFAULT_MINIMIZE_STARTS 8L
 #define MAX_STARTS 1000000L
+#define MAX_SCREEN 100000L
 /* Compositions of at most this many stages (the unknowns of a family). */
 #define MAX_DESIGN_STAGES 64
 
@@ -193,7 +194,7 @@ static int read_fix(vigen_design_spec *d, lua_State *L, const char *path, vigen_
 static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
 {
     static const char *const known[] = {"name", "design", "base", "stages", "order", "symmetric", "solutions",
-                                        "minimize", "starts", "seed", "description", "stationary", "nearest",
+                                        "minimize", "starts", "seed", "screen", "description", "stationary", "nearest",
                                         "first", "kernel", "fix", NULL};
     int rc = vigen_table_check_fields(L, known, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->name, L, "name", 1, path, err);
@@ -222,6 +223,8 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
         d->starts = v;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "seed", 0, 1, 0, 2147483647L, path, err)) == VIGEN_OK)
         d->seed = (unsigned long)v;
+    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "screen", 0, 0, 1, MAX_SCREEN, path, err)) == VIGEN_OK)
+        d->screen = v;
     if (rc == VIGEN_OK) {
         push_raw(L, "symmetric");
         if (lua_isnil(L, -1)) d->symmetric = 0;
@@ -247,6 +250,8 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
                  strcmp(d->minimize, "error_constant_separable") != 0 && strcmp(d->minimize, "error_constant_nystrom") != 0)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: must be \"error_constant\" (general H), "
                                  "\"error_constant_separable\" or \"error_constant_nystrom\"", path);
+        else if (d->screen > 0 && d->minimize == NULL)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: screen: only a minimize design screens points", path);
         d->goal = d->minimize ? VIGEN_DESIGN_MINIMIZE : VIGEN_DESIGN_ALL;
         if (d->starts == 0) d->starts = d->goal == VIGEN_DESIGN_MINIMIZE ? DEFAULT_MINIMIZE_STARTS : DEFAULT_STARTS;
     }

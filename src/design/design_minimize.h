@@ -14,6 +14,6 @@
  * local minima found; *evals: checker runs.  Returns 1 when some start gave
  * a point whose order the checker confirmed. */
 int design_minimize(double *xbest, double *ecbest, slong *nminima, long *evals, design_system *sys, slong *rows,
-                    slong m, const vigen_design_spec *d, const char *base, double box);
+                    slong m, const vigen_design_spec *d, const char *base, int q, double box);
 
 #endif
