@@ -197,6 +197,8 @@ refuse "leave no unknown free" \
   'return { name = "b", design = "composition", base = "stormer_verlet_velocity", stages = 3, order = 4, symmetric = true, stationary = "error_norm" }'
 refuse "give one of them" \
   'return { name = "b", design = "splitting", stages = 2, order = 2, stationary = "error_norm", solutions = "all" }'
+refuse "equal: entry 1 must be a pair of two different unknowns" \
+  'return { name = "b", design = "composition", base = "stormer_verlet_position", stages = 5, order = 4, symmetric = true, solutions = "all", equal = { { "gamma1", "gamma1" } } }'
 refuse "screen: only a minimize design screens points" \
   'return { name = "b", design = "splitting", stages = 3, order = 4, symmetric = true, solutions = "all", screen = 10 }'
 refuse "screen: must be a whole number" \
