@@ -216,7 +216,11 @@ static int proxy_init(proxy *p, const vigen_design_spec *d, int q)
     p->hi_rows = malloc((size_t)(p->hi.n + 1) * sizeof(slong));
     for (slong i = 0; i < p->hi.n; i++)
         if (p->hi.h_degree[i] == deg) p->hi_rows[p->nhi++] = i;
-    return p->nhi > 0;
+    if (p->nhi > 0) return 1;
+    design_system_clear(&p->hi);
+    free(p->hi_rows);
+    p->hi_rows = NULL;
+    return 0;
 }
 
 /* Nelder-Mead on the screening objective from p->x; its value there */
