@@ -7,7 +7,7 @@
 # when gnuplot is there, OUTDIR/design_methods_<set>_<problem>.png, for
 # three sets of methods of equal cost (or the one set METHODS="..." names):
 #   s5:   optimal_s5_4 against suzuki_4 and mclachlan_rkn_4 (5 forces per step)
-#   s6:   optimal_s6_4 against blanes_moan_s6_4 (6 forces per step)
+#   s6:   optimal_rkn6_4 and optimal_s6_4 against blanes_moan_s6_4 (6 forces per step)
 #   rkn7: optimal_rkn7_6 against yoshida_6 (7 forces per step)
 set -u
 VIGEN=${1:-build/vigen}
@@ -59,6 +59,6 @@ if [ -n "${METHODS:-}" ]; then
   run_set custom "$METHODS"
 else
   run_set s5 "optimal_s5_4 suzuki_4 mclachlan_rkn_4"
-  run_set s6 "optimal_s6_4 blanes_moan_s6_4"
+  run_set s6 "optimal_rkn6_4 optimal_s6_4 blanes_moan_s6_4"
   run_set rkn7 "optimal_rkn7_6 yoshida_6"
 fi

@@ -28,6 +28,9 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
     for (slong i = 0; i < res->nconditions; i++) printf("%s [%s]", i ? "," : "", res->conditions[i]);
     printf("\n");
     if (res->minimized) {
+        if (d->screen > 0)
+            printf("screen      %ld random points, each descended on the Lyndon norm of the principal error\n",
+                   d->screen);
         printf("search      %ld free unknowns; Nelder-Mead on the checker's %s from %ld starts (%ld checker runs): "
                "%ld local minima\n", (long)res->nfree, d->minimize, (long)res->starts, res->evaluations,
                (long)res->nfound);

@@ -51,8 +51,13 @@ typedef struct {
     char **fix_name;             /* each one's name: a1, b2 (splittings: drifts, kicks), gamma3 (compositions) */
     char **fix_value;            /* its value, a rational "p/q" */
     long *fix_unknown;           /* its index among the unknowns of the family */
+    long nequal;                 /* `equal = { {"gamma1", "gamma2"}, ... }`: pairs of unknowns tied */
+    long *equal_unknown;         /* 2 nequal indices among the unknowns, a pair after a pair */
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     unsigned long seed;          /* of the starts (default 1) */
+    long screen;                 /* minimize: random points where the error constant is evaluated
+                                    first, the descents starting from the best (default 0: from
+                                    random starts) */
 } vigen_design_spec;
 
 /* Reads and validates the design file at path (d uninitialised on entry;

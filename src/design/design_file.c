@@ -17,6 +17,7 @@
 /* minimize: each start is a descent with a checker run per trial point */
 #define DEFAULT_MINIMIZE_STARTS 8L
 #define MAX_STARTS 1000000L
+#define MAX_SCREEN 100000L
 /* Compositions of at most this many stages (the unknowns of a family). */
 #define MAX_DESIGN_STAGES 64
 
@@ -84,6 +85,7 @@ void vigen_design_spec_clear(vigen_design_spec *d)
     free(d->fix_name);
     free(d->fix_value);
     free(d->fix_unknown);
+    free(d->equal_unknown);
     memset(d, 0, sizeof *d);
 }
 
@@ -140,6 +142,40 @@ static long fix_unknown(const vigen_design_spec *d, const char *name)
     return i < nk ? drifts + i : -1;
 }
 
+/* equal = { {NAME, NAME}, ... }: pairs of unknowns tied, each pair one
+ * linear condition (Suzuki's fractal composition ties gamma1 = gamma2). */
+static int read_equal(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
+{
+    push_raw(L, "equal");
+    int rc = VIGEN_OK;
+    if (!lua_isnil(L, -1) && !lua_istable(L, -1))
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: equal: must be a list of pairs { {\"gamma1\", \"gamma2\"} }",
+                             path);
+    for (lua_Integer i = 1; rc == VIGEN_OK && lua_istable(L, -1) && i <= (lua_Integer)lua_rawlen(L, -1); i++) {
+        lua_rawgeti(L, -1, i);
+        long j[2] = {-1, -1};
+        int pair = lua_istable(L, -1) && lua_rawlen(L, -1) == 2;
+        for (int e = 0; pair && e < 2; e++) {
+            lua_rawgeti(L, -1, e + 1);
+            if (lua_type(L, -1) == LUA_TSTRING) j[e] = fix_unknown(d, lua_tostring(L, -1));
+            lua_pop(L, 1);
+        }
+        lua_pop(L, 1);
+        if (!pair || j[0] < 0 || j[1] < 0 || j[0] == j[1])
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: equal: entry %ld must be a pair of two different unknowns "
+                                 "of this family (%s)", path, (long)i, strcmp(d->family, "composition") != 0
+                                 ? "a1, a2, ... the drifts, b1, b2, ... the kicks" : "gamma1, gamma2, ...");
+        else {
+            d->equal_unknown = realloc(d->equal_unknown, (size_t)(2 * d->nequal + 2) * sizeof(long));
+            d->equal_unknown[2 * d->nequal] = j[0];
+            d->equal_unknown[2 * d->nequal + 1] = j[1];
+            d->nequal++;
+        }
+    }
+    lua_pop(L, 1);
+    return rc;
+}
+
 /* fix = { NAME = "p/q", ... }: unknowns held at exact rationals (keys in
  * sorted order, so that the conditions are the same from run to run). */
 static int read_fix(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
@@ -193,8 +229,8 @@ static int read_fix(vigen_design_spec *d, lua_State *L, const char *path, vigen_
 static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
 {
     static const char *const known[] = {"name", "design", "base", "stages", "order", "symmetric", "solutions",
-                                        "minimize", "starts", "seed", "description", "stationary", "nearest",
-                                        "first", "kernel", "fix", NULL};
+                                        "minimize", "starts", "seed", "screen", "description", "stationary", "nearest",
+                                        "first", "kernel", "fix", "equal", NULL};
     int rc = vigen_table_check_fields(L, known, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->name, L, "name", 1, path, err);
     if (rc == VIGEN_OK) {
@@ -222,6 +258,8 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
         d->starts = v;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "seed", 0, 1, 0, 2147483647L, path, err)) == VIGEN_OK)
         d->seed = (unsigned long)v;
+    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "screen", 0, 0, 1, MAX_SCREEN, path, err)) == VIGEN_OK)
+        d->screen = v;
     if (rc == VIGEN_OK) {
         push_raw(L, "symmetric");
         if (lua_isnil(L, -1)) d->symmetric = 0;
@@ -247,11 +285,14 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
                  strcmp(d->minimize, "error_constant_separable") != 0 && strcmp(d->minimize, "error_constant_nystrom") != 0)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: must be \"error_constant\" (general H), "
                                  "\"error_constant_separable\" or \"error_constant_nystrom\"", path);
+        else if (d->screen > 0 && d->minimize == NULL)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: screen: only a minimize design screens points", path);
         d->goal = d->minimize ? VIGEN_DESIGN_MINIMIZE : VIGEN_DESIGN_ALL;
         if (d->starts == 0) d->starts = d->goal == VIGEN_DESIGN_MINIMIZE ? DEFAULT_MINIMIZE_STARTS : DEFAULT_STARTS;
     }
     free(solutions);
     if (rc == VIGEN_OK) rc = read_fix(d, L, path, err);
+    if (rc == VIGEN_OK) rc = read_equal(d, L, path, err);
     if (rc == VIGEN_OK) rc = check_processed(d, path, err);
     return rc;
 }

@@ -63,9 +63,60 @@ void design_system_set_pin(design_system *sys, slong row, double t)
     fmpz_clear(e);
 }
 
-int design_system_fix(design_system *sys, const vigen_design_spec *d)
+/* the condition of row `row` moved to the front: the square subsystem takes
+ * the conditions in order */
+static void to_front(design_system *sys, slong row)
 {
     slong k = sys->k;
+    design_poly c = sys->cond[row];
+    char *w = sys->what[row];
+    memmove(sys->cond + 1, sys->cond, (size_t)row * sizeof *sys->cond);
+    memmove(sys->what + 1, sys->what, (size_t)row * sizeof *sys->what);
+    memmove(sys->h_degree + 1, sys->h_degree, (size_t)row * sizeof *sys->h_degree);
+    sys->cond[0] = c;
+    sys->what[0] = w;
+    sys->h_degree[0] = 0;
+    design_poly *dc = malloc((size_t)k * sizeof *dc);
+    memcpy(dc, sys->dcond + row * k, (size_t)k * sizeof *dc);
+    memmove(sys->dcond + k, sys->dcond, (size_t)(row * k) * sizeof *dc);
+    memcpy(sys->dcond, dc, (size_t)k * sizeof *dc);
+    free(dc);
+}
+
+/* the name of unknown j as design files write it: gamma3, a2, b1 */
+static char *unknown_name(const vigen_design_spec *d, long j)
+{
+    if (d->base != NULL) return vigen_strdup_printf("gamma%ld", j + 1);
+    long drifts = d->symmetric ? (d->stages + 2) / 2 : d->stages + 1;
+    return j < drifts ? vigen_strdup_printf("a%ld", j + 1) : vigen_strdup_printf("b%ld", j - drifts + 1);
+}
+
+/* x_i - x_j = 0: a pin x_i - t whose constant term becomes -x_j */
+static void add_equal(design_system *sys, slong i, slong j, const char *what)
+{
+    slong k = sys->k, row = design_system_add_pin(sys, i);
+    design_poly *p = &sys->cond[row];
+    fmpq_set_si(p->coef + 1, -1, 1);
+    p->coef_d[1] = -1;
+    p->exp[k + j] = 1;
+    design_poly *dj = &sys->dcond[row * k + j];
+    dj->nterms = 1;
+    fmpq_set_si(dj->coef, -1, 1);
+    dj->coef_d[0] = -1;
+    sys->what[row] = vigen_strdup(what);
+    to_front(sys, row);
+}
+
+int design_system_fix(design_system *sys, const vigen_design_spec *d)
+{
+    for (long e = d->nequal - 1; e >= 0; e--) {
+        char *a = unknown_name(d, d->equal_unknown[2 * e]), *b = unknown_name(d, d->equal_unknown[2 * e + 1]);
+        char *what = vigen_strdup_printf("%s = %s", a, b);
+        free(a);
+        free(b);
+        add_equal(sys, d->equal_unknown[2 * e], d->equal_unknown[2 * e + 1], what);
+        free(what);
+    }
     for (long i = d->nfix - 1; i >= 0; i--) {
         fmpq_t v;
         fmpq_init(v);
@@ -80,20 +131,7 @@ int design_system_fix(design_system *sys, const vigen_design_spec *d)
         p->coef_d[1] = -fmpq_get_d(v);
         fmpq_clear(v);
         sys->what[row] = vigen_strdup_printf("%s = %s", d->fix_name[i], d->fix_value[i]);
-        /* the pin first: the square subsystem takes the conditions in order */
-        design_poly c = sys->cond[row];
-        char *w = sys->what[row];
-        memmove(sys->cond + 1, sys->cond, (size_t)row * sizeof *sys->cond);
-        memmove(sys->what + 1, sys->what, (size_t)row * sizeof *sys->what);
-        memmove(sys->h_degree + 1, sys->h_degree, (size_t)row * sizeof *sys->h_degree);
-        sys->cond[0] = c;
-        sys->what[0] = w;
-        sys->h_degree[0] = 0;
-        design_poly *dc = malloc((size_t)k * sizeof *dc);
-        memcpy(dc, sys->dcond + row * k, (size_t)k * sizeof *dc);
-        memmove(sys->dcond + k, sys->dcond, (size_t)(row * k) * sizeof *dc);
-        memcpy(sys->dcond, dc, (size_t)k * sizeof *dc);
-        free(dc);
+        to_front(sys, row);
     }
     return VIGEN_OK;
 }

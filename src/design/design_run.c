@@ -285,7 +285,7 @@ static int minimize(vigen_design_result *res, design_system *sys, slong *rows, s
     double *x = malloc((size_t)k * sizeof(double)), ec = 0;
     slong nminima = 0;
     long evals = 0;
-    int found = design_minimize(x, &ec, &nminima, &evals, sys, rows, m, d, base, START_BOX);
+    int found = design_minimize(x, &ec, &nminima, &evals, sys, rows, m, d, base, res->base_order, START_BOX);
     res->starts = d->starts;
     res->nfound = nminima;
     res->bezout = -1;
@@ -301,11 +301,15 @@ static int minimize(vigen_design_result *res, design_system *sys, slong *rows, s
         res->sol[0].x = x;
         x = NULL;
         settle(&res->sol[0], sys, rows, k, opt);
+        char *screen = d->screen > 0 ? vigen_strdup_printf(" (the starts the best minima of the Lyndon norm of "
+                                                           "the principal error from %ld random points)", d->screen)
+                                     : vigen_strdup("");
         char *how = vigen_strdup_printf(
             "the %ld order conditions (polynomials in the steps, from the BCH series of the method) leave %ld "
-            "free; these were chosen by Nelder-Mead minimising the checker's %s from %ld starts (%ld local minima, "
+            "free; these were chosen by Nelder-Mead minimising the checker's %s from %ld starts%s (%ld local minima, "
             "this the best found, not proved global), held exactly, and the others proved by the Krawczyk operator",
-            (long)res->nconditions, (long)(k - m), d->minimize, (long)d->starts, (long)nminima);
+            (long)res->nconditions, (long)(k - m), d->minimize, (long)d->starts, screen, (long)nminima);
+        free(screen);
         rc = certify_all(res, d, opt, base, how, err);
         free(how);
     }

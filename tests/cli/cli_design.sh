@@ -10,7 +10,8 @@
 # the library's forest_ruth_4); order 6 from five symmetric steps has no
 # solution (exit 1, nothing written); McLachlan's RKN method of order 4 (the
 # library's mclachlan_rkn_4, closed forms) comes out of its family with his
-# two kicks held; RKN order 6 with seven kicks gives methods of order 6 for
+# two kicks held; Suzuki's fractal composition (suzuki_4) comes out of the
+# five-step family with gamma1 = gamma2 tied; RKN order 6 with seven kicks gives methods of order 6 for
 # Nystrom H and 4 for separable H (the checker, from Nystrom trees, decides
 # both); a processed step C K C^-1 of order 4 whose kernel alone has order 2;
 # ill-posed design files are refused with exit 2 and one line naming the
@@ -57,6 +58,26 @@ mkdir "$T/fr"
 "$VIGEN" check "$T/fr/fr_1.lua" --against "$SRC/tableaux/published/forest_ruth_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" \
   || { bad "the three-kick splitting is not forest_ruth_4"; grep -E "against|order" "$T/chk"; }
 grep -q "order_separable = 4" "$T/fr/fr_1.lua" || bad "forest_ruth: no order_separable claim"
+
+# Suzuki's fractal composition: five symmetric steps with gamma1 = gamma2
+# tied (`equal`), one real solution, the library's suzuki_4 entry by entry,
+# and each of its 40 digits the rounding of the closed form 1/(4 - 4^(1/3))
+mkdir "$T/suz"
+"$VIGEN" design "$D/suzuki4.lua" -o "$T/suz" > "$T/out" 2>&1 || { bad "suzuki: exit $?"; cat "$T/out"; }
+"$VIGEN" check "$T/suz/suzuki_1.lua" --against "$SRC/tableaux/published/suzuki_4.lua" > "$T/chk" 2>&1 &&
+  grep -q "^against       0 entries differ" "$T/chk" || { bad "the tied composition is not suzuki_4"; grep -E "against" "$T/chk"; }
+[ "$(ls "$T/suz" | wc -l)" = 1 ] || bad "suzuki: $(ls "$T/suz" | wc -l) files, expected 1"
+python3 - "$T/suz/suzuki_1.lua" <<'PY' || bad "suzuki: digits are not the closed form's"
+import re, sys
+from mpmath import mp, mpf, cbrt
+mp.dps = 60
+g = re.findall(r'"(-?[0-9]\.[0-9]+)"', open(sys.argv[1]).read())
+p = 1 / (4 - cbrt(4))
+want = [p, p, 1 - 4 * p, p, p]
+ok = len(g) == 5 and all(len(t.split(".")[1]) >= 38 and abs(mpf(t) - x) <= mpf(10) ** -len(t.split(".")[1]) / 2
+                         for t, x in zip(g, want))
+sys.exit(0 if ok else 1)
+PY
 
 # no solution: exit 1, nothing written
 mkdir "$T/none"

@@ -41,6 +41,7 @@ mclachlan_rkn_4 4 True
 optimal_s5_4 4 True
 optimal_s6_4 4 True
 optimal_rkn7_6 4 True
+optimal_rkn6_4 4 True
 leok_zhang_ex2_i 1 True
 leok_zhang_ex2_ii 2 True
 leok_zhang_ex2_iii 1 True
