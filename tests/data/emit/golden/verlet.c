@@ -571,19 +571,20 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
  * one unit in the last place of the scale (the largest of them).  Its
  * residual is below anything a further sweep can resolve (the sweeps
  * after it move the positions back and forth by such units, or not at
- * all), and below the tolerance of a stall by 2^20, so it is converged
- * by the same standard as the stall it would otherwise wait for; zero is
- * the exact fixed point. */
+ * all), and below the default tolerance of a stall by 2^20, so it is
+ * converged by the same standard as the stall it would otherwise wait
+ * for; zero is the exact fixed point.  A tolerance set below epsilon is
+ * the bound instead (only an exact zero passes below every tolerance). */
 #define VERLET_ROUNDOFF DBL_EPSILON
 
 /* vigen_iter_judge's verdict in its common case, without the call: a
- * finite increment above round-off, below the one two sweeps back (or
+ * finite increment above round-off ro, below the one two sweeps back (or
  * with fewer than two before it) and under the cap goes on (1), with the
  * monitor's bookkeeping done; every other case (0) is for the round-off
  * test and vigen_iter_judge. */
-static inline int verlet_going(vigen_iter_monitor *m, double delta, int max_iter)
+static inline int verlet_going(vigen_iter_monitor *m, double delta, double ro, int max_iter)
 {
-    if (!(delta > VERLET_ROUNDOFF && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
+    if (!(delta > ro && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
     m->iter++;
     m->prev2 = m->prev1;
     m->prev1 = delta;
@@ -620,6 +621,7 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
     double *const v = w->P[0];
     const double h2 = h * h;
     const int max_iter = w->opt.max_iter;
+    const double ro = w->tol < VERLET_ROUNDOFF ? w->tol : VERLET_ROUNDOFF;
     double *const Q1 = w->Q[0];
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
@@ -685,8 +687,8 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
             (void)x1;
         }
         const double rel = verlet_rel(verlet_inc_value(dq), sq);
-        if (verlet_going(&mon, rel, max_iter)) continue;
-        st = rel <= VERLET_ROUNDOFF ? VIGEN_SUCCESS : vigen_iter_judge(&mon, rel, w->tol, max_iter);
+        if (verlet_going(&mon, rel, ro, max_iter)) continue;
+        st = rel <= ro ? VIGEN_SUCCESS : vigen_iter_judge(&mon, rel, w->tol, max_iter);
         if (st >= 0) break;
     }
     w->stats.dHdq_evals += 0 * sweeps;
