@@ -9,7 +9,7 @@
 # (with --dim for the direct-force rows, without for the callback rows),
 # builds with gcc -O2 into BUILD_DIR (default /tmp/vigen-bench-mech) and
 # prints a Markdown table per problem.  MECH_PROBLEMS selects the problems
-# (default "kepler"; "fput-stiff" is the stiff chain of the Newton rows, run
+# (default "kepler"; "fput" is the chain of bench/peer_run.sh; "fput-stiff" is the stiff chain of the Newton rows, run
 # with the fixed point and with Newton).  Needs valgrind.  Not a test.
 set -euo pipefail
 VIGEN=$(realpath "${1:?usage: mech_icount.sh VIGEN [BUILD_DIR]}")
@@ -22,6 +22,7 @@ INC=(-I"$SRC/runtime/include" -I"$SRC/runtime/problems" -I"$SRC/bench")
 # id|collection name|parameters|dim|unit masses|h|N|steppers|title
 declare -A ROWS=(
     [kepler]="kepler|kepler|e=0.6|2|1|(2 * 3.14159265358979323846 / 200)|20000|gni2 g2d g2 gni3 g3d g3 gnil3 l3d l3|Kepler, e = 0.6, h = 2 pi/200"
+    [fput]="fput|fput|n=1000|1000|1|0.05|100|gni2 g2d g2 gni3 g3d g3 gnil3 l3d l3|FPUT-beta chain, n = 1000, beta = 1, first normal mode of amplitude 1, h = 0.05 (as bench/peer_run.sh)"
     [fput-stiff]="fput|fput|n=32,beta=1e4|32|1|0.05|500|g2d g2d:newton g3d g3d:newton l3d l3d:newton|FPUT-beta chain, n = 32, beta = 10^4 (stiff: h omega_max about 1.6), amplitude 1, h = 0.05"
 )
 

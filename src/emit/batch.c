@@ -128,22 +128,43 @@ static void implicit_blocks(vigen_slots *S, const prk_coefs *K, const char *N)
     vigen_slot *st = vigen_slots_lines(S, "BATCH_IMPL_START");
     vigen_slot *cp = vigen_slots_lines(S, "BATCH_IMPL_COPY");
     vigen_slot *rs = vigen_slots_lines(S, "BATCH_IMPL_RESTORE");
-    if (K->X.mode != EMIT_EXPLICIT_NONE) return;
+    vigen_slot *ff = vigen_slots_lines(S, "BATCH_IMPL_FIRST");
+    vigen_slots_textf(S, "BATCH_IMPL_END", "%s_bforce(b, b->t1, qn, f%ld);", N, (long)s);
+    if (K->X.mode != EMIT_EXPLICIT_NONE) {
+        vigen_slots_text(S, "BATCH_SWEEP_NFORCE", "0");
+        return;
+    }
+    /* first same as last (vigen_emit_nys_fsal): the first stage's force is
+     * not swept (the previous step's last, or evaluated once at Q1), nor
+     * the last one's (evaluated once at the new q) */
+    const int fsal = vigen_emit_nys_fsal(K);
+    vigen_slots_textf(S, "BATCH_SWEEP_NFORCE", "%ld", (long)(fsal ? s - 2 : s));
+    if (fsal) {
+        vigen_slot_line(ff, "if (nf1) %s_bforce(b, t0, Q1, ft1);", N);
+        vigen_slot_line(ff, "for (size_t c = 0; c < n; c++)");
+        vigen_slot_line(ff, "    %s_lanes", N);
+        vigen_slot_line(ff, "    for (size_t j = 0; j < W; j++) {");
+        vigen_slot_line(ff, "        const size_t k = c * W + j;");
+        vigen_slot_line(ff, "        f1[k] = cached[j] ? fo%ld[k] : ft1[k];", (long)s);
+        vigen_slot_line(ff, "    }");
+    }
     for (slong i = 1; i <= s; i++) {
         const long z = (long)(i - 1);
         vigen_slot_line(ptr, "double *const Q%ld = b->Q[%ld], *const f%ld = b->G[%ld], *const ft%ld = b->FT[%ld];", (long)i,
                         z, (long)i, z, (long)i, z);
         vigen_slot_line(ptr, "const double *const fo%ld = b->Go[%ld];", (long)i, z);
         vigen_slot_line(ptr, "(void)Q%ld; (void)f%ld; (void)ft%ld; (void)fo%ld;", (long)i, (long)i, (long)i, (long)i);
-        char *ch = vigen_emit_times(K->c[i - 1], "h");
-        if (ch) {
-            vigen_slot_line(fc, "for (size_t j = 0; j < W; j++) ts[j] = t0[j] + %s;", ch);
-            vigen_slot_line(fc, "%s_bforce(b, ts, Q%ld, ft%ld);", N, (long)i, (long)i);
-        } else {
-            vigen_slot_line(fc, "%s_bforce(b, t0, Q%ld, ft%ld);", N, (long)i, (long)i);
+        if (!(fsal && (i == 1 || i == s))) {
+            char *ch = vigen_emit_times(K->c[i - 1], "h");
+            if (ch) {
+                vigen_slot_line(fc, "for (size_t j = 0; j < W; j++) ts[j] = t0[j] + %s;", ch);
+                vigen_slot_line(fc, "%s_bforce(b, ts, Q%ld, ft%ld);", N, (long)i, (long)i);
+            } else {
+                vigen_slot_line(fc, "%s_bforce(b, t0, Q%ld, ft%ld);", N, (long)i, (long)i);
+            }
+            free(ch);
+            vigen_slot_line(bl, "f%ld[k] = done[j] ? f%ld[k] : ft%ld[k];", (long)i, (long)i, (long)i);
         }
-        free(ch);
-        vigen_slot_line(bl, "f%ld[k] = done[j] ? f%ld[k] : ft%ld[k];", (long)i, (long)i, (long)i);
         vigen_slot_line(st, "f%ld[k] = ft1[k];", (long)i);
         vigen_slot_line(cp, "f%ld[k] = fo%ld[k];", (long)i, (long)i);
         vigen_slot_line(rs, "b->G[%ld][k] = b->Go[%ld][k];", z, z);

@@ -93,6 +93,25 @@ int vigen_emit_nys_round(nys_coefs *Y, emit_ctx *E)
     return rc;
 }
 
+static int same_literal(const char *a, const char *b)
+{
+    return a == b || (a && b && strcmp(a, b) == 0);
+}
+
+int vigen_emit_nys_fsal(const prk_coefs *K)
+{
+    const nys_coefs *Y = &K->Y;
+    const slong s = K->s;
+    char *c1 = vigen_emit_times(K->c[0], "h"), *cs = vigen_emit_times(K->c[s - 1], "h");
+    int fsal = s >= 2 && c1 == NULL && cs && strcmp(cs, "h") == 0 && Y->ca[0] == NULL
+               && same_literal(Y->ca[s - 1], Y->sb) && !vigen_emit_colused(Y->aat, s, s - 1) && Y->bat[s - 1] == NULL;
+    for (slong j = 0; j < s && fsal; j++)
+        fsal = Y->aat[j] == NULL && same_literal(Y->aat[(s - 1) * s + j], Y->bat[j]);
+    free(c1);
+    free(cs);
+    return fsal;
+}
+
 /* "<a> * <x> + <b> * <y>" where each part may be missing; "0" when both are. */
 static char *sum2(char *a, char *b)
 {
@@ -118,8 +137,12 @@ static char *increment(const char *ca, char *const *row, slong s, const char *pr
  * per step into w->F[i-1] (qk itself when ca_i = 0) -- the same sums, in
  * the same order, as the one-expression form of increment(), so the same
  * bits. */
-static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, int lagrange, const char *R, const char *N)
+static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, int lagrange, int fsal, const char *R,
+                          const char *N)
 {
+    /* first same as last: the last stage's position is q1, whose force is
+     * taken at the new q after the solve; no sweep moves it */
+    const slong swept = fsal ? s - 1 : s;
     vigen_slot *bp = vigen_slots_lines(S, "NYS_BASE_POINTERS");
     vigen_slot *st = vigen_slots_lines(S, "NYS_START");
     vigen_slot *sf = vigen_slots_lines(S, "NYS_START_F");
@@ -130,6 +153,8 @@ static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, int lagra
     for (slong j = 1; j <= s; j++) {
         if (!vigen_emit_colused(Y->aat, s, j - 1)) continue;
         vigen_slot_line(sw, "const %s x%ld = f%ld[k];", R, j, j);
+        /* unused when no stage is swept (Lobatto IIIA-IIIB s = 2: velocity Verlet) */
+        if (swept < s) vigen_slot_line(sw, "(void)x%ld;", j);
         vigen_slot_line(sf, "const %s x%ld = f%ld[k];", R, j, j);
         if (!lagrange) continue;
         /* the extrapolated start force of stage j, as MECH_EXTRAP_APPLY
@@ -159,14 +184,14 @@ static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, int lagra
         char *b = base ? vigen_strdup_printf("b%ld[k]", i) : vigen_strdup("q[k]");
         if (sum) {
             vigen_slot_line(st, "const %s y%ld = %s + m * (%s);", R, i, u, sum);
-            vigen_slot_line(sw, "const %s y%ld = %s + m * (%s);", R, i, b, sum);
+            if (i <= swept) vigen_slot_line(sw, "const %s y%ld = %s + m * (%s);", R, i, b, sum);
         } else {
             /* no term at all: q + 0, as increment() writes it (-0 becomes
              * +0), set at the start and never moved by a sweep */
             vigen_slot_line(st, "const %s y%ld = %s%s;", R, i, u, base ? "" : " + 0");
-            if (base) vigen_slot_line(sw, "const %s y%ld = %s;", R, i, b);
+            if (base && i <= swept) vigen_slot_line(sw, "const %s y%ld = %s;", R, i, b);
         }
-        if (sum || base) {
+        if ((sum || base) && i <= swept) {
             vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
             vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
         }
@@ -177,11 +202,14 @@ static void nys_base_code(vigen_slots *S, const nys_coefs *Y, slong s, int lagra
     }
 }
 
-void vigen_emit_nys_batch_code(vigen_slots *S, slong s, const char *N)
+void vigen_emit_nys_batch_code(vigen_slots *S, const prk_coefs *K, const char *N)
 {
+    /* first same as last: the last stage is not swept (nys_base_code) */
+    const slong s = K->s, swept = vigen_emit_nys_fsal(K) ? s - 1 : s;
     vigen_slot *sw = vigen_slots_lines(S, "MECH_SWEEP_STORE");
-    for (slong i = 1; i <= s; i++) vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
-    for (slong i = 1; i <= s; i++) vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+    for (slong i = 1; i <= swept; i++) vigen_slot_line(sw, "dq = %s_inc_add(dq, y%ld - Q%ld[k]);", N, i, i);
+    for (slong i = 1; i <= swept; i++) vigen_slot_line(sw, "Q%ld[k] = y%ld;", i, i);
+    if (swept < s) vigen_slot_line(sw, "(void)y%ld;", (long)s);
 }
 
 void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int real)
@@ -200,6 +228,14 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
      * every sweep: evaluated once, before them */
     vigen_slot *cf = vigen_slots_lines(S, "NYS_CONST_FORCES");
     slong nconst = 0;
+    /* first same as last (vigen_emit_nys_fsal): the first stage's force is the previous
+     * step's last, at the same t and q, when there is one; the last
+     * stage's force is not evaluated in the sweeps (it enters no stage) but
+     * once at the new q, by @NAME@_mech_implicit (NYS_END_FORCE) */
+    const int fsal = vigen_emit_nys_fsal(K);
+    vigen_slots_flag(S, "NYS_FSAL", fsal);
+    vigen_slots_textf(S, "NYS_END_FORCE", "%s_force(w, t1, q, w->G[%ld]);", N, (long)(s - 1));
+    vigen_slots_textf(S, "NYS_LAST", "%ld", (long)(s - 1));
     for (slong i = 1; i <= s; i++) {
         char *ti = vigen_emit_at_time(K->c[i - 1]);
         int fixed = Y->ca[i - 1] == NULL;
@@ -207,10 +243,17 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         nconst += fixed;
         vigen_slot_line(ptr, "%s *const Q%ld = w->Q[%ld];", R, i, i - 1);
         if (vigen_emit_colused(Y->aat, s, i - 1)) vigen_slot_line(ptr, "const %s *const f%ld = w->G[%ld];", R, i, i - 1);
-        vigen_slot_line(fixed ? cf : fc, "%s_force(w, %s, Q%ld, w->G[%ld]);", N, ti, i, i - 1);
+        if (fsal && i == 1) {
+            vigen_slot_line(cf, "%s_first_force(w, t0, Q1);", N);
+        } else if (!(fsal && i == s)) {
+            vigen_slot_line(fixed ? cf : fc, "%s_force(w, %s, Q%ld, w->G[%ld]);", N, ti, i, i - 1);
+        }
         free(ti);
     }
-    vigen_slots_textf(S, "NYS_FORCE_COUNT", "%ld * sweeps + %ld", (long)(s - nconst), (long)nconst);
+    if (fsal)
+        vigen_slots_textf(S, "NYS_FORCE_COUNT", "%ld * sweeps", (long)(s - nconst - 1));
+    else
+        vigen_slots_textf(S, "NYS_FORCE_COUNT", "%ld * sweeps + %ld", (long)(s - nconst), (long)nconst);
     for (slong j = 1; j <= s; j++)
         if (vigen_emit_colused(Y->aat, s, j - 1)) vigen_slot_line(st, "const %s x%ld = f%ld[k];", R, j, j);
     for (slong i = 1; i <= s; i++) {
@@ -225,7 +268,7 @@ void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *N, int 
         vigen_slot_line(nu, "dq = %s_inc_add(dq, d);", N);
         vigen_slot_line(nu, "sq = %s_max(sq, %s_abs(Q%ld[k]));", N, N, i);
     }
-    nys_base_code(S, Y, s, K->lagrange, R, N);
+    nys_base_code(S, Y, s, K->lagrange, fsal, R, N);
     for (slong i = 0; i < s; i++)
         for (slong j = 0; j < s; j++)
             if (Y->aat[i * s + j])

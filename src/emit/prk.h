@@ -49,10 +49,16 @@ void vigen_emit_prk_code(vigen_slots *S, const prk_coefs *K, const char *name, i
 int vigen_emit_nys_round(nys_coefs *Y, emit_ctx *E);
 void vigen_emit_nys_clear(nys_coefs *Y, slong s);
 void vigen_emit_nys_code(vigen_slots *S, const prk_coefs *K, const char *name, int real);
+/* First same as last: is the first stage q at t0 (no term, c_1 = 0) and the
+ * last one q1 at t0 + h (the rounded coefficients of its position those of
+ * q1, c_s = 1), with the last stage's force in no stage and not in q1?
+ * Then that force is evaluated once, at the new q, and is the next step's
+ * first (Lobatto IIIA-IIIB). */
+int vigen_emit_nys_fsal(const prk_coefs *K);
 /* The slot the batched stepper's sweep uses besides those of the scalar one
  * (MECH_SWEEP_STORE: the increments of MECH_STAGES' new stage positions and
  * their stores), for an emission with --batch. */
-void vigen_emit_nys_batch_code(vigen_slots *S, slong s, const char *name);
+void vigen_emit_nys_batch_code(vigen_slots *S, const prk_coefs *K, const char *name);
 /* substeps.c: rounds K->U (after the explicit plan), clears it, writes the
  * scalar step's slots (SUBSTEPS, SUB_*) and the batched one's
  * (BATCH_SUB_OPS). */

@@ -204,7 +204,7 @@ int vigen_emit_prk_slots(vigen_slots *S, emit_ctx *E, const vigen_emit_options *
         vigen_slots_flag(S, "STATIC_DIM", opt->dim > 0);
         vigen_slots_textf(S, "DIM", "%zu", opt->dim);
         if (opt->batch) {
-            vigen_emit_nys_batch_code(S, K.s, ident);
+            vigen_emit_nys_batch_code(S, &K, ident);
             vigen_emit_batch_code(S, &K, ident);
         }
     }

@@ -112,8 +112,9 @@ sys.exit(0 if a[\"name\"] == \"gauss_legendre_s2\" and abs(a[\"global_error\"] -
 
 # work-precision: the error falls by 2^p per halving of the step (p = 4 for
 # Gauss s = 2, 2 for Stormer-Verlet: their orders) while the gradient
-# evaluations double (Verlet: exactly, one of each gradient per step); two
-# curves in each figure
+# evaluations grow (Verlet: double exactly, one of each gradient per step;
+# Gauss: less than double, as its sweeps per step fall with h, the start
+# nearer the fixed point); two curves in each figure
 "$VIGEN" try gauss_2 stormer_verlet_velocity --problem harmonic-oscillator --work-precision --levels 3 --json --plot "$T/wp" > "$T/wp.json" 2> "$T/wp.err"
 rc=$?
 check '[ $rc -eq 0 ]' "work-precision: exit $rc ($(cat "$T/wp.err"))"
@@ -125,11 +126,11 @@ for m, p in zip(o[\"methods\"], (4, 2)):
     pts = m[\"points\"]
     ok = ok and len(pts) == 3
     for a, b in zip(pts, pts[1:]):
-        ok = ok and abs(a[\"error\"] / b[\"error\"] / 2**p - 1) < 0.15 and b[\"evals\"] > 1.5 * a[\"evals\"]
+        ok = ok and abs(a[\"error\"] / b[\"error\"] / 2**p - 1) < 0.15 and b[\"evals\"] > a[\"evals\"]
     if m[\"name\"] == \"stormer_verlet_velocity\":
         # one force per step, and one more at the start (first same as last)
         ok = ok and all(b[\"evals\"] - 1 == 2 * (a[\"evals\"] - 1) for a, b in zip(pts, pts[1:]))
-sys.exit(0 if ok else 1)" "$T/wp.json"' "work-precision: errors fall as h^p, costs double ($(cat "$T/wp.json"))"
+sys.exit(0 if ok else 1)" "$T/wp.json"' "work-precision: errors fall as h^p, costs grow ($(cat "$T/wp.json"))"
 for f in work_precision_evals work_precision_seconds; do
   check 'python3 -c "import xml.etree.ElementTree as E,sys; r=E.parse(sys.argv[1]).getroot(); sys.exit(0 if len([g for g in r.iter() if (g.get(\"id\") or \"\").startswith(\"gnuplot_plot_\")]) == 2 else 1)" "$T/wp/$f.svg" && [ "$(head -c 4 "$T/wp/$f.png" | tail -c 3)" = PNG ] && [ "$(wc -l < "$T/wp/$f.csv")" -eq 7 ]' "$f: SVG with 2 curves, PNG, CSV of 6 points"
 done

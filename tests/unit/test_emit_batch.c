@@ -2,7 +2,9 @@
  * (NAME_step_batch), emitted at build time from tableaux/published
  * (tests/CMakeLists.txt: Stormer-Verlet, McLachlan and Atela's third-order
  * method (no first-same-as-last force) and Yoshida's triple jump, explicit;
- * Gauss s = 2, implicit: fixed point per trajectory), on an ensemble of
+ * Gauss s = 2 and Lobatto IIIA-IIIB s = 3, implicit: fixed point per
+ * trajectory, Lobatto's last force taken once at the new q and reused as
+ * the next step's first), on an ensemble of
  * Kepler orbits (eccentricities 0 to 0.7, distinct start times).
  * The reference is the scalar stepper NAME_step driven trajectory by
  * trajectory with a fresh workspace, both from the file emitted with --batch
@@ -31,6 +33,9 @@
  *     finite or a NULL array: VIGEN_EINVAL, nothing changed;
  *   - with unequal masses (M^-1 = diag(1, 0.75)) the explicit batches
  *     still give the scalar bits, trajectory by trajectory;
+ *   - Lobatto IIIA-IIIB s = 3 the same as Gauss-2 (bits, counts, orbits, a
+ *     force turning NaN, a moved trajectory whose cached force is dropped,
+ *     sweeps running out or stalling, blocks of every width);
  *   - Gauss-2 with trajectories that need different numbers of sweeps (the
  *     premise is checked on the scalar runs), that run out of sweeps
  *     (VIGEN_EMAXITER) or stall above the tolerance (VIGEN_ENOCONV) while
@@ -51,6 +56,7 @@
 #include "eb_yoshida.h"
 #include "eb_gauss2.h"
 #include "eb_ma3.h"
+#include "eb_lobatto3.h"
 #include "ens_verlet.h"
 
 enum { W = 37, NSTEPS = 400 };
@@ -407,8 +413,8 @@ static void check_widths(const stepper *S)
 
 int main(void)
 {
-    const stepper S[4] = { STEPPER(eb_verlet, 1, 1), STEPPER(eb_yoshida, 3, 1), STEPPER(eb_gauss2, 0, 0),
-                           STEPPER(eb_ma3, 3, 0) };
+    const stepper S[5] = { STEPPER(eb_verlet, 1, 1), STEPPER(eb_yoshida, 3, 1), STEPPER(eb_gauss2, 0, 0),
+                           STEPPER(eb_ma3, 3, 0), STEPPER(eb_lobatto3, 0, 1) };
     static fail_ctx fc, rough;
     for (int j = 0; j < W; j++) fc.fail_at[j] = rough.fail_at[j] = INFINITY;
     fc.fail_at[7] = 2.0;    /* trajectory 7 (t0 = 1.75): its force turns NaN after a few steps */
@@ -432,6 +438,17 @@ int main(void)
     compare(&S[2], S[2].type, 1, 1 | 2 | 4, NULL, -1, -1, 0);
     rough.rough = 2;
     compare(&S[2], S[2].type, 1, 1 | 8, &rough, -1, -1, 0);
+    /* Lobatto IIIA-IIIB s = 3 (implicit, first same as last: the last
+     * stage's force taken once at the new q and reused as the next step's
+     * first, per trajectory): the scalar bits and counts, with and without
+     * extrapolation, a force turning NaN midway, stalls and caps */
+    for (int kahan = 0; kahan < 4; kahan++) {
+        compare(&S[4], S[4].type, 1, kahan, NULL, -1, -1, 0);
+        compare(&S[4], S[4].type, 1, kahan, &fc, 5, 11, 150);
+    }
+    compare(&S[4], S[4].type, 1, 1 | 2 | 4, NULL, -1, -1, 0);
+    compare(&S[4], S[4].type, 1, 1 | 8, &rough, -1, -1, 0);
+    check_widths(&S[4]);
     for (int s = 0; s < 3; s++) check_widths(&S[s]);
     /* the scalar stepper of the file emitted without --batch gives the same bits */
     compare(&S[0], &ens_verlet_type, 0, 1, NULL, -1, -1, 0);

@@ -591,13 +591,25 @@ GAUSS2_NOINLINE int gauss2_implicit(gauss2_workspace *w, double *t, double *q, d
 #define GAUSS2_UNROLL
 #endif
 
+/* The fixed point reached to round-off: a sweep whose relative increment
+ * is at most the real type's epsilon moved no stage position by more than
+ * one unit in the last place of the scale (the largest of them).  Its
+ * residual is below anything a further sweep can resolve (the sweeps
+ * after it move the positions back and forth by such units, or not at
+ * all), and below the default tolerance of a stall by 2^20, so it is
+ * converged by the same standard as the stall it would otherwise wait
+ * for; zero is the exact fixed point.  A tolerance set below epsilon is
+ * the bound instead (only an exact zero passes below every tolerance). */
+#define GAUSS2_ROUNDOFF DBL_EPSILON
+
 /* vigen_iter_judge's verdict in its common case, without the call: a
- * finite nonzero increment below the one two sweeps back (or with fewer
- * than two before it) and under the cap goes on (1), with the monitor's
- * bookkeeping done; every other case (0) is for vigen_iter_judge itself. */
-static inline int gauss2_going(vigen_iter_monitor *m, double delta, int max_iter)
+ * finite increment above round-off ro, below the one two sweeps back (or
+ * with fewer than two before it) and under the cap goes on (1), with the
+ * monitor's bookkeeping done; every other case (0) is for the round-off
+ * test and vigen_iter_judge. */
+static inline int gauss2_going(vigen_iter_monitor *m, double delta, double ro, int max_iter)
 {
-    if (!(delta > 0 && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
+    if (!(delta > ro && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
     m->iter++;
     m->prev2 = m->prev1;
     m->prev1 = delta;
@@ -606,12 +618,13 @@ static inline int gauss2_going(vigen_iter_monitor *m, double delta, int max_iter
 
 /* Fixed-point iteration on the stage positions: the forces at every stage,
  * then Q_i <- q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j (one
- * force per stage and sweep), stopped by vigen_iter_judge on the relative
- * increment of Q (scale: the largest starting stage position).  The base
- * q + h (sum_j a_ij) v of each stage is formed once, at the start, into
- * w->F (unused by a mechanical problem), so that a sweep adds to it only
- * h^2 M^-1 times the precomputed (A At) combination of the forces.
- * v = M^-1 p is left in w->P[0] for the update. */
+ * force per stage and sweep), stopped at round-off (GAUSS2_ROUNDOFF) or
+ * by vigen_iter_judge on the relative increment of Q (scale: the largest
+ * starting stage position).  The base q + h (sum_j a_ij) v of each stage
+ * is formed once, at the start, into w->F (unused by a mechanical
+ * problem), so that a sweep adds to it only h^2 M^-1 times the
+ * precomputed (A At) combination of the forces.  v = M^-1 p is left in
+ * w->P[0] for the update. */
 static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double *q, const double *p, double h,
                                    const double *xw)
 {
@@ -620,6 +633,7 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
     double *const v = w->P[0];
     const double h2 = h * h;
     const int max_iter = w->opt.max_iter;
+    const double ro = w->tol < GAUSS2_ROUNDOFF ? w->tol : GAUSS2_ROUNDOFF;
     double *const Q1 = w->Q[0];
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
@@ -702,8 +716,8 @@ static int gauss2_mech_fixed_point(gauss2_workspace *w, double t0, const double 
             Q2[k] = y2;
         }
         const double rel = gauss2_rel(gauss2_inc_value(dq), sq);
-        if (gauss2_going(&mon, rel, max_iter)) continue;
-        st = vigen_iter_judge(&mon, rel, w->tol, max_iter);
+        if (gauss2_going(&mon, rel, ro, max_iter)) continue;
+        st = rel <= ro ? VIGEN_SUCCESS : vigen_iter_judge(&mon, rel, w->tol, max_iter);
         if (st >= 0) break;
     }
     w->stats.dHdq_evals += 2 * sweeps + 0;

@@ -590,27 +590,53 @@ VERLET_NOINLINE int verlet_implicit(verlet_workspace *w, double *t, double *q, d
 #define VERLET_UNROLL
 #endif
 
+/* The fixed point reached to round-off: a sweep whose relative increment
+ * is at most the real type's epsilon moved no stage position by more than
+ * one unit in the last place of the scale (the largest of them).  Its
+ * residual is below anything a further sweep can resolve (the sweeps
+ * after it move the positions back and forth by such units, or not at
+ * all), and below the default tolerance of a stall by 2^20, so it is
+ * converged by the same standard as the stall it would otherwise wait
+ * for; zero is the exact fixed point.  A tolerance set below epsilon is
+ * the bound instead (only an exact zero passes below every tolerance). */
+#define VERLET_ROUNDOFF DBL_EPSILON
+
 /* vigen_iter_judge's verdict in its common case, without the call: a
- * finite nonzero increment below the one two sweeps back (or with fewer
- * than two before it) and under the cap goes on (1), with the monitor's
- * bookkeeping done; every other case (0) is for vigen_iter_judge itself. */
-static inline int verlet_going(vigen_iter_monitor *m, double delta, int max_iter)
+ * finite increment above round-off ro, below the one two sweeps back (or
+ * with fewer than two before it) and under the cap goes on (1), with the
+ * monitor's bookkeeping done; every other case (0) is for the round-off
+ * test and vigen_iter_judge. */
+static inline int verlet_going(vigen_iter_monitor *m, double delta, double ro, int max_iter)
 {
-    if (!(delta > 0 && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
+    if (!(delta > ro && delta <= 1.0e308 && (m->prev2 < 0 || delta < m->prev2) && m->iter + 1 < max_iter)) return 0;
     m->iter++;
     m->prev2 = m->prev1;
     m->prev1 = delta;
     return 1;
 }
 
+/* First same as last: the first stage (q at t0) takes the previous step's
+ * last force, evaluated at the same t and q, when there is one. */
+static inline void verlet_first_force(verlet_workspace *w, double t0, const double *Q1)
+{
+    if (w->history) {
+        memcpy(w->G[0], w->Go[1], verlet_n(w) * sizeof(double));
+        w->stats.fsal_reuses++;
+    } else {
+        verlet_force(w, t0, Q1, w->G[0]);
+        w->stats.dHdq_evals++;
+    }
+}
+
 /* Fixed-point iteration on the stage positions: the forces at every stage,
  * then Q_i <- q + h (sum_j a_ij) v + h^2 M^-1 sum_j (A At)_ij f_j (one
- * force per stage and sweep), stopped by vigen_iter_judge on the relative
- * increment of Q (scale: the largest starting stage position).  The base
- * q + h (sum_j a_ij) v of each stage is formed once, at the start, into
- * w->F (unused by a mechanical problem), so that a sweep adds to it only
- * h^2 M^-1 times the precomputed (A At) combination of the forces.
- * v = M^-1 p is left in w->P[0] for the update. */
+ * force per stage and sweep), stopped at round-off (VERLET_ROUNDOFF) or
+ * by vigen_iter_judge on the relative increment of Q (scale: the largest
+ * starting stage position).  The base q + h (sum_j a_ij) v of each stage
+ * is formed once, at the start, into w->F (unused by a mechanical
+ * problem), so that a sweep adds to it only h^2 M^-1 times the
+ * precomputed (A At) combination of the forces.  v = M^-1 p is left in
+ * w->P[0] for the update. */
 static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double *q, const double *p, double h,
                                    const double *xw)
 {
@@ -619,6 +645,7 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
     double *const v = w->P[0];
     const double h2 = h * h;
     const int max_iter = w->opt.max_iter;
+    const double ro = w->tol < VERLET_ROUNDOFF ? w->tol : VERLET_ROUNDOFF;
     double *const Q1 = w->Q[0];
     const double *const f1 = w->G[0];
     double *const Q2 = w->Q[1];
@@ -671,27 +698,24 @@ static int verlet_mech_fixed_point(verlet_workspace *w, double t0, const double 
         }
     }
     if (sq == 0) sq = 1;
-    verlet_force(w, t0, Q1, w->G[0]);
+    verlet_first_force(w, t0, Q1);
     vigen_iter_start(&mon);
     for (;;) {
         verlet_inc dq = 0;
-        verlet_force(w, t0 + h, Q2, w->G[1]);
         sweeps++;
         VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
             const double m = VERLET_SMALL ? hm[k] : h2 * im[k];
             (void)m;
             const double x1 = f1[k];
-            const double y2 = b2[k] + m * (0x1p-1 * x1);
-            dq = verlet_inc_add(dq, y2 - Q2[k]);
-            Q2[k] = y2;
+            (void)x1;
         }
         const double rel = verlet_rel(verlet_inc_value(dq), sq);
-        if (verlet_going(&mon, rel, max_iter)) continue;
-        st = vigen_iter_judge(&mon, rel, w->tol, max_iter);
+        if (verlet_going(&mon, rel, ro, max_iter)) continue;
+        st = rel <= ro ? VIGEN_SUCCESS : vigen_iter_judge(&mon, rel, w->tol, max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 1 * sweeps + 1;
+    w->stats.dHdq_evals += 0 * sweeps;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -738,12 +762,11 @@ static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, c
         }
         (void)sq;
     }
-    verlet_force(w, t0, Q1, w->G[0]);
+    verlet_first_force(w, t0, Q1);
     vigen_iter_start(&mon);
     for (;;) {
         verlet_inc dq = 0;
         double sq = 0, d;
-        verlet_force(w, t0 + h, Q2, w->G[1]);
         sweeps++;
         for (size_t k = 0; k < n; k++) {
             const double qk = q[k], hv = h * v[k], m = h2 * im[k];
@@ -769,7 +792,7 @@ static int verlet_mech_newton(verlet_workspace *w, double t0, const double *q, c
         st = vigen_iter_judge(&mon, verlet_rel(verlet_inc_value(dq), sq), w->tol, w->opt.max_iter);
         if (st >= 0) break;
     }
-    w->stats.dHdq_evals += 1 * sweeps + 1;
+    w->stats.dHdq_evals += 0 * sweeps;
     w->stats.last_iterations = sweeps;
     return st;
 }
@@ -835,39 +858,61 @@ VERLET_NOINLINE int verlet_mech_implicit(verlet_workspace *w, double *t, double 
     const double *const im = w->im, *const v = w->P[0];
     const double h2 = h * h;
     verlet_nf nf = 0;
+    /* first same as last: the last stage's force enters neither a stage nor
+     * q1, so q is updated first and that force is taken at the new q (the
+     * last stage's position in exact arithmetic), once; it serves p1 and
+     * is the next step's first */
     if (w->opt.kahan) {
         const double *const cq = w->cq, *const cp = w->cp;
         double *const cqn = w->cqn, *const cpn = w->cpn;
         double nfc = 0;   /* the sum of the new compensations (see verlet_nf_add) */
         VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double hv = h * v[k], m = h2 * im[k], qk = q[k], pk = p[k];
+            const double hv = h * v[k], m = h2 * im[k], qk = q[k];
             (void)hv; (void)m;
-            const double dqk = hv + m * (0x1p-1 * f1[k]), dpk = h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
-            double cqk, cpk;
+            double cqk;
             qo[k] = qk;
-            po[k] = pk;
-            q[k] = vigen_twosum_next(qk, dqk, cq[k], &cqk);
-            p[k] = vigen_twosum_next(pk, dpk, cp[k], &cpk);
+            q[k] = vigen_twosum_next(qk, hv + m * (0x1p-1 * f1[k]), cq[k], &cqk);
             cqn[k] = cqk;
-            cpn[k] = cpk;
-            nfc += cqk + cpk;
+            nfc += cqk;
         }
-        nf = verlet_nf_add(nf, nfc);
         t1 = vigen_twosum_update(t0, h, &ct);
-    } else {
+        if (verlet_nf_add(verlet_nf_add(nf, nfc), t1) == 0) {
+            verlet_force(w, t1, q, w->G[1]);
+            w->stats.dHdq_evals++;
+        }
         VERLET_UNROLL
         for (size_t k = 0; k < n; k++) {
-            const double hv = h * v[k], m = h2 * im[k], qk = q[k], pk = p[k];
-            (void)hv; (void)m;
-            const double qn = qk + hv + m * (0x1p-1 * f1[k]), pn = pk + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
-            qo[k] = qk;
+            const double pk = p[k];
+            double cpk;
             po[k] = pk;
-            q[k] = qn;
-            p[k] = pn;
-            nf = verlet_nf_add(verlet_nf_add(nf, qn), pn);
+            p[k] = vigen_twosum_next(pk, h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]), cp[k], &cpk);
+            cpn[k] = cpk;
+            nfc += cpk;
         }
+        nf = verlet_nf_add(nf, nfc);
+    } else {
         t1 = t0 + h;
+        VERLET_UNROLL
+        for (size_t k = 0; k < n; k++) {
+            const double hv = h * v[k], m = h2 * im[k], qk = q[k];
+            (void)hv; (void)m;
+            const double qn = qk + hv + m * (0x1p-1 * f1[k]);
+            qo[k] = qk;
+            q[k] = qn;
+            nf = verlet_nf_add(nf, qn);
+        }
+        if (verlet_nf_add(nf, t1) == 0) {
+            verlet_force(w, t1, q, w->G[1]);
+            w->stats.dHdq_evals++;
+        }
+        VERLET_UNROLL
+        for (size_t k = 0; k < n; k++) {
+            const double pk = p[k], pn = pk + h * (0x1p-1 * f1[k] + 0x1p-1 * f2[k]);
+            po[k] = pk;
+            p[k] = pn;
+            nf = verlet_nf_add(nf, pn);
+        }
     }
     if (verlet_nf_add(nf, t1) != 0) {
         memcpy(q, qo, n * sizeof(double));
