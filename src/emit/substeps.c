@@ -160,14 +160,22 @@ static void commit(vigen_slot *L, const sub_target *T, const char *in, const cha
 {
     vigen_slot_line(L, "%sconst %s x%s = %s[k];", in, T->R, x, x);
     vigen_slot_line(L, "%s%ss[k] = x%s;", in, x, x);
-    vigen_slot_line(L, "%s%s[k] = kahan ? vigen_twosum_next%s(x%s, %s, c%s0[k], &c%s[k]) : x%s + %s;", in, x, T->SFX, x,
-                    d, x, x, x, d);
     if (T->batch) {
+        vigen_slot_line(L, "%s%s[k] = kahan ? vigen_twosum_next%s(x%s, %s, c%s0[k], &c%s[k]) : x%s + %s;", in, x, T->SFX,
+                        x, d, x, x, x, d);
         vigen_slot_line(L, "%snfl[j] = %s_nf_add(nfl[j], %s[k]);", in, T->N, x);
-    } else {
-        vigen_slot_line(L, "%sif (kahan) nfc += c%s[k];", in, x);
-        vigen_slot_line(L, "%selse nf = %s_nf_add(nf, %s[k]);", in, T->N, x);
+        return;
     }
+    /* the new compensation through a local: a store through the pointer
+     * argument of vigen_twosum_next would hide from the compiler that cq,
+     * cp are apart from the other arrays (no vectorised loop) */
+    vigen_slot_line(L, "%s%s c%sk = 0;", in, T->R, x);
+    vigen_slot_line(L, "%sconst %s s%s = kahan ? vigen_twosum_next%s(x%s, %s, c%s0[k], &c%sk) : x%s + %s;", in, T->R, x,
+                    T->SFX, x, d, x, x, x, d);
+    vigen_slot_line(L, "%s%s[k] = s%s;", in, x, x);
+    vigen_slot_line(L, "%sif (kahan) c%s[k] = c%sk;", in, x, x);
+    vigen_slot_line(L, "%sif (kahan && !%s_nf_or) nfc += c%sk;", in, T->N, x);
+    vigen_slot_line(L, "%selse nf = %s_nf_add(nf, kahan ? c%sk : s%s);", in, T->N, x, x);
 }
 
 /* The step.  Each component's increments over the step, dq and dp, are
@@ -195,7 +203,7 @@ static void sub_lines(vigen_slot *L, const sub_target *T, const sub_coefs *U)
     }
     /* scratch arrays, only those this step uses */
     const int need_dq = firstq != lastq, need_dp = firstp != lastp;
-    const char *scratch = T->batch ? "b->sub" : "w->fdwork";
+    const char *scratch = T->batch ? "b->sub" : "S";
     const char *len = T->batch ? "nw" : "n";
     if (need_dq) vigen_slot_line(L, "%s *restrict const Dq = %s;", T->R, scratch);
     if (need_dp) vigen_slot_line(L, "%s *restrict const Dp = %s + %s;", T->R, scratch, len);
@@ -273,6 +281,7 @@ void vigen_emit_sub_code(vigen_slots *S, const prk_coefs *K, const char *name, i
     const sub_target T = { 0, name, vigen_emit_reals[real].ctype, vigen_emit_reals[real].suffix };
     vigen_slots_flag(S, "SUBSTEPS", U->m > 0);
     vigen_slots_flag(S, "SUB_FSAL", U->fsal);
+    vigen_slots_text(S, "SUB_F1", U->fsal ? "w->x[1]" : "NULL");
     vigen_slots_flag(S, "SAVE_X", U->fsal || K->X.fsal);
     vigen_slots_textf(S, "SUB_COUNT", "%ld", (long)U->m);
     vigen_slots_textf(S, "SUB_FORCES", "%ld", U->nforce);

@@ -27,7 +27,10 @@
  *     Verlet (plus 1 at the first step for the two with first same as
  *     last), no dH/dp call;
  *   - a force that turns NaN mid-step (its 7th call): VIGEN_ENONFINITE with
- *     t, q, p unchanged (tests/data/emit/mech_driver.c, nan);
+ *     t, q, p unchanged (tests/data/emit/mech_driver.c, nan), also with a
+ *     static dimension (--dim 2: vectorised passes, finiteness by an OR of
+ *     bits), and with --dim 8 the same bits as without on a chain of 8
+ *     unequal masses (mech_driver.c, final);
  *   - a state saved mid-run and restored into a fresh workspace continues
  *     bit for bit (tests/data/emit/restart_driver.c, check: a chain with
  *     unequal masses, compensated and plain);
@@ -276,6 +279,45 @@ int main(void)
             CHECK_MSG(harness_value(out, "nan_unchanged", 0) == 1, "%s: the failing step changed the state", m->name);
             free(out);
             free(cmd);
+        }
+
+        /* a static dimension (--dim): the passes are vectorised and
+         * finiteness is folded in by an OR of bits; the NaN force again
+         * (Kepler, --dim 2), and on the chain of 8 unequal masses (--dim 8)
+         * the same bits as the stepper without --dim */
+        for (size_t d = 2; mexe && d <= 8; d += 6) {
+            char *sname = vigen_strdup_printf("%s%zu", m->name, d);
+            char *sflags = vigen_strdup_printf("-DSTEPPER_NAME=%s_", sname);
+            char *sexe_name = vigen_strdup_printf("mech_%s", sname);
+            char *sexe = harness_emit_dim(m->file, sname, VIGEN_REAL_DOUBLE, d, NULL)
+                             ? harness_build("gcc", "mech_driver.c", sname, sflags, sexe_name)
+                             : NULL;
+            char *cmd = sexe == NULL ? NULL
+                        : d == 2    ? vigen_strdup_printf("%s nan 0", sexe)
+                                    : vigen_strdup_printf("%s final fput 0 300 0.05", sexe);
+            char *out = cmd ? harness_capture(cmd) : NULL;
+            if (out && d == 2) {
+                CHECK_MSG(harness_value(out, "nan_enonfinite", 0) == 1, "%s --dim 2: a NaN force gave status %g",
+                          m->name, harness_value(out, "nan_status", -1));
+                CHECK_MSG(harness_value(out, "nan_unchanged", 0) == 1, "%s --dim 2: the failing step changed the state",
+                          m->name);
+            } else if (out) {
+                char *dcmd = vigen_strdup_printf("%s final fput 0 300 0.05", mexe);
+                char *dout = harness_capture(dcmd);
+                CHECK_MSG(strstr(out, "final_m_7=") != NULL && harness_value(out, "final_status_m", -1) == 0 &&
+                              dout && strcmp(out, dout) == 0,
+                          "%s --dim 8: static and dynamic dimension differ:\n%s---\n%s", m->name, out,
+                          dout ? dout : "");
+                free(dout);
+                free(dcmd);
+            }
+            CHECK_MSG(out != NULL, "%s --dim %zu: not built", m->name, d);
+            free(out);
+            free(cmd);
+            free(sexe);
+            free(sexe_name);
+            free(sflags);
+            free(sname);
         }
 
         /* restart bit for bit, mechanical (unequal masses), compensated and plain */
