@@ -90,7 +90,7 @@ done
     echo "<!-- arkode-figures:begin (written by bench/arkode_run.sh) -->"
     echo "Machine: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //'), $(nproc) cores;" \
         "$(date -u '+%Y-%m-%d %H:%M UTC'); load average before the run $(cut -d' ' -f1-3 /proc/loadavg);" \
-        "gcc $(gcc -dumpfullversion) ($CFLAGS); SUNDIALS $SUNVER ($(git -C "$SUN" rev-parse --short HEAD 2>/dev/null || echo unknown), -O3, static)."
+        "gcc $(gcc -dumpfullversion) ($CFLAGS); SUNDIALS $SUNVER ($( [ -e "$SUN/.git" ] && git -C "$SUN" rev-parse --short HEAD 2>/dev/null || echo "unpacked source"), -O3, static)."
     echo
     for row in "${PROBLEMS[@]}"; do
         IFS='|' read -r id name params dim unit h steps title <<<"$row"
