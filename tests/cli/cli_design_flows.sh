@@ -9,7 +9,10 @@
 # and no other; likewise SABA_2 for (4, 2) (c1 = 1/2 -+ sqrt(3)/6,
 # c2 = +-sqrt(3)/3, d1 = 1/2).  Every digit is compared with the closed forms
 # by mpmath; the files name the flows, the perturbation and the
-# generalized_order the checker certifies.  Ill-posed fields are refused
+# generalized_order the checker certifies (asked (3, 2), the two-step
+# family claims the (4, 2) it reaches); the grade takes words of length up
+# to r_j, so a non-symmetric SBAB splitting of (3, 2) is the Gauss-Radau
+# rule (B at 0 and 2/3, weights 1/4 and 3/4).  Ill-posed fields are refused
 # with one line and exit status 2.
 set -u
 VIGEN=$1
@@ -20,9 +23,9 @@ mkdir -p "$TMPDIR"
 fail=0
 bad() { echo "FAIL: $*"; fail=1; }
 
-design() {   # name stages generalized flows
+design() {   # name stages generalized flows claim [symmetric [first]]
   cat > "$T/$1.lua" <<LUA
-return { name = "$1", design = "splitting", stages = $2, symmetric = true,
+return { name = "$1", design = "splitting", stages = $2, symmetric = ${6:-true}, ${7:-}
          flows = $4, perturbation = "interaction",
          generalized_order = $3, solutions = "all" }
 LUA
@@ -37,6 +40,17 @@ design saba3 3 "{6, 2}" '{ "kepler", "interaction" }' "{6, 2}"
 design saba2 2 "{4, 2}" '{ "kepler", "interaction" }' "{4, 2}"
 # the perturbation may be listed first: the same methods, the flows as listed
 design saba3r 3 "{6, 2}" '{ "interaction", "kepler" }' "{6, 2}"
+# asked (3, 2), the two-step symmetric family goes beyond: it claims (4, 2)
+design g32 2 "{3, 2}" '{ "kepler", "interaction" }' "{4, 2}"
+# the grade counts the length up to r_j: (3, 2) asks [A B] and [A A B], so
+# B steps at 0 and 2/3 with weights 1/4, 3/4 (the Gauss-Radau rule) and
+# drifts 0, 2/3, 1/3, which the checker certifies of generalized order (3, 2)
+design radau 2 "{3, 2}" '{ "kepler", "interaction" }' "{3, 2}" false 'first = "kick",'
+grep -q '{ "kepler", "0.6666666666666666666666666666666666666667" }' "$T/radau/radau_1.lua" &&
+  grep -q '{ "interaction", "0.2500000000000000000000000000000000000000" }' "$T/radau/radau_1.lua" &&
+  grep -q '{ "interaction", "0.7500000000000000000000000000000000000000" }' "$T/radau/radau_1.lua" &&
+  grep -q '{ "kepler", "0.3333333333333333333333333333333333333333" }' "$T/radau/radau_1.lua" &&
+  [ ! -e "$T/radau/radau_2.lua" ] || bad "radau: not the Gauss-Radau splitting alone"
 
 python3 - "$T" <<'PY' || fail=1
 import glob, re, sys
