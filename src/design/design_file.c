@@ -394,7 +394,7 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
     if (rc == VIGEN_OK) rc = read_fix(d, L, path, err);
     if (rc == VIGEN_OK) rc = read_equal(d, L, path, err);
     if (rc == VIGEN_OK) rc = check_processed(d, path, err);
-    if (rc == VIGEN_OK && d->flow_b && d->goal != VIGEN_DESIGN_ALL)
+    if (rc == VIGEN_OK && d->flow_b && (d->goal != VIGEN_DESIGN_ALL || d->stationary || d->nnearest > 0))
         rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: flows: a splitting of named flows asks solutions = \"all\" "
                              "(its error is measured by the generalized order, not one error constant)", path);
     return rc;

@@ -120,5 +120,7 @@ refuse same 'flows = { "kepler", "kepler" }, perturbation = "kepler", generalize
   "flows: must be a list of two different flow names"
 refuse noflows 'order = 2, generalized_order = {6, 2}' "generalized_order: needs flows"
 refuse nopert 'flows = { "kepler", "interaction" }, generalized_order = {6, 2}' "perturbation: missing"
+refuse minimize 'flows = { "kepler", "interaction" }, perturbation = "interaction", generalized_order = {6, 2}, solutions = nil, minimize = "error_constant"' \
+  'flows: a splitting of named flows asks solutions = "all"'
 refuse noorder 'flows = { "kepler", "interaction" }, perturbation = "interaction"' "order: missing"
 exit $fail
