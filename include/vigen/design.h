@@ -10,7 +10,9 @@
  * rational coefficients, from the Baker-Campbell-Hausdorff series); kick/drift
  * splittings have theirs for separable H ("splitting"), for Nystrom H ("rkn":
  * modulo the relations of T = p^2/2), and as kernels of effective order 4
- * with a corrector ("processed"); `fix` holds unknowns at rationals.  A
+ * with a corrector ("processed"); a "splitting" of two named flows for
+ * H = A + eps B asks a generalized order (flows, perturbation,
+ * generalized_order); `fix` holds unknowns at rationals.  A
  * square subsystem of independent conditions is solved by many-start Newton
  * in double; each root is refined in arb and proved with the Krawczyk
  * operator (an exact root exists, unique, in a small box); the conditions

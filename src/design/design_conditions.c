@@ -390,7 +390,8 @@ static int build(design_system *sys, const int *letter_weight, int nletters, int
     sys->k = k;
     if (combos == NULL) {
         for (slong i = 1; i < w.n; i++)
-            if (is_lyndon(w.letters[i], w.len[i]) && graded(&w, i, r, nr)) take(sys, e + i, word_text(&w, i), w.weight[i], ctx);
+            if (is_lyndon(w.letters[i], w.len[i]) && graded(&w, i, r, nr))
+                take(sys, e + i, word_text(&w, i), w.weight[i], ctx);
     } else {
         fmpq_mpoly_t m;
         fmpq_mpoly_init(m, ctx);

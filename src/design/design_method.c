@@ -54,7 +54,8 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
      * no claim is made that it does not certify */
     if (!d->processed) vigen_strbuf_append(&sb, "  symplectic = true,\n");
     if (d->flow_b) {
-        const char *first = d->flows_first_b ? d->flow_b : d->flow_a, *second = d->flows_first_b ? d->flow_a : d->flow_b;
+        const char *first = d->flows_first_b ? d->flow_b : d->flow_a;
+        const char *second = d->flows_first_b ? d->flow_a : d->flow_b;
         if (ngen > 0) vigen_strbuf_printf(&sb, "  generalized_order = {%s},\n", gw.data);
         vigen_strbuf_printf(&sb, "  flows = { \"%s\", \"%s\" },\n  perturbation = \"%s\",\n", first, second,
                             d->flow_b);
@@ -66,8 +67,8 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
         vigen_strbuf_printf(&sb, "  description = \"%c%s; a root of the order conditions proved to exist by the "
                             "Krawczyk operator.\",\n", 'A', what + 1);
     else
-        vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist by "
-                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, family);
+        vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist "
+                            "by the Krawczyk operator.\",\n", 'A', what + 1, d->order, family);
     if (splitting) {
         vigen_strbuf_append(&sb, "  splitting = {\n");
         /* a symmetric splitting that starts with a kick ends with one: its
