@@ -17,6 +17,11 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
     } else if (d->processed) {
         printf("design %s: processed: symmetric kernel with %d kicks (A drifts, B kicks) of effective order %d for "
                "%s H, and its corrector\n", d->name, d->stages, d->order, d->nystrom ? "Nystrom" : "separable");
+    } else if (d->flow_b) {
+        printf("design %s: %ssplitting of named flows with %d steps of %s (A %s, B %s: H = A + eps B), generalized "
+               "order {", d->name, d->symmetric ? "symmetric " : "", d->stages, d->flow_b, d->flow_a, d->flow_b);
+        for (int j = 0; j < d->ngeneralized; j++) printf("%s%d", j ? ", " : "", d->generalized[j]);
+        printf("}\n");
     } else {
         printf("design %s: %ssplitting with %d kicks (A drifts, B kicks), order %d for %s H\n", d->name,
                d->symmetric ? "symmetric " : "", d->stages, d->order, d->nystrom ? "Nystrom" : "separable");

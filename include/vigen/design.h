@@ -10,7 +10,9 @@
  * rational coefficients, from the Baker-Campbell-Hausdorff series); kick/drift
  * splittings have theirs for separable H ("splitting"), for Nystrom H ("rkn":
  * modulo the relations of T = p^2/2), and as kernels of effective order 4
- * with a corrector ("processed"); `fix` holds unknowns at rationals.  A
+ * with a corrector ("processed"); a "splitting" of two named flows for
+ * H = A + eps B asks a generalized order (flows, perturbation,
+ * generalized_order); `fix` holds unknowns at rationals.  A
  * square subsystem of independent conditions is solved by many-start Newton
  * in double; each root is refined in arb and proved with the Krawczyk
  * operator (an exact root exists, unique, in a small box); the conditions
@@ -27,6 +29,8 @@
 /* The highest order a design may ask for (the conditions are polynomials of
  * that degree in the steps). */
 #define VIGEN_DESIGN_MAX_ORDER 10
+/* The most entries of a generalized order asked for (a splitting file's claim). */
+#define VIGEN_DESIGN_MAX_GENERALIZED 16
 
 /* What is wanted of the family. */
 enum { VIGEN_DESIGN_ALL = 0, VIGEN_DESIGN_MINIMIZE = 1 };
@@ -47,6 +51,12 @@ typedef struct {
     char **nearest;              /* the member of the family nearest these decimals (one per unknown) */
     slong nnearest;              /* their count (0: not asked) */
     int first_kick;              /* splittings: first = "kick", the first drift is 0 */
+    char *flow_a, *flow_b;       /* splittings of named flows: `flows`, B (flow_b) the `perturbation` carrying
+                                    eps, A the other; NULL for kicks (B) and drifts (A) */
+    int flows_first_b;           /* the file lists the perturbation first in `flows` */
+    int ngeneralized;            /* `generalized_order = {r1, ..., rk}` (k entries; 0: absent): the conditions
+                                    are the Lyndon words with j letters B of length <= r_j (r_k beyond k) */
+    int generalized[VIGEN_DESIGN_MAX_GENERALIZED];
     long nfix;                   /* `fix = { b1 = "-3/73", ... }`: unknowns held at exact rationals */
     char **fix_name;             /* each one's name: a1, b2 (splittings: drifts, kicks), gamma3 (compositions) */
     char **fix_value;            /* its value, a rational "p/q" */
@@ -84,6 +94,8 @@ typedef struct {
     char *error_constant_sep;    /* ... separable H */
     double error_constant_d;
     long force;                  /* force evaluations per step (separable H) */
+    int ngeneralized;            /* named flows: the checker's generalized order r[1..n], all decided (0: not) */
+    int generalized[VIGEN_DESIGN_MAX_GENERALIZED];
     char *file;                  /* the path the method file goes to */
     char *text;                  /* its contents */
     char *why;                   /* not proved / excluded / not certified: why (one line) */

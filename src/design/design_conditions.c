@@ -361,12 +361,25 @@ static void combo_eval(fmpq_mpoly_t m, const design_combo *c, const elem e, cons
     fmpq_mpoly_clear(t, ctx);
 }
 
+/* Whether the Lyndon word i is asked by the generalized order r[0..nr-1]
+ * (nr 0: every word is): its length is at most r_j, j its letters B (1),
+ * r_j the last entry beyond the list; the words of one letter always. */
+static int graded(const words *w, slong i, const int *r, int nr)
+{
+    if (nr == 0 || w->len[i] == 1) return 1;
+    int j = 0;
+    for (int l = 0; l < w->len[i]; l++) j += w->letters[i][l] == 1;
+    if (j == 0) return 0;
+    return w->len[i] <= r[j <= nr ? j - 1 : nr - 1];
+}
+
 /* The conditions of the product of the factors against the target sum of
  * the letters target[a] = 1, in k unknowns, appended to sys: the Lyndon
- * coefficients of the logarithm (combos NULL), or the combinations of
- * combos; those identically zero dropped. */
+ * coefficients of the logarithm (combos NULL) asked by the generalized
+ * order r[0..nr-1] (graded), or the combinations of combos; those
+ * identically zero dropped. */
 static int build(design_system *sys, const int *letter_weight, int nletters, int named, const factor *f, slong nf,
-                 const int *target, slong k, int p, const design_combos *combos)
+                 const int *target, slong k, int p, const design_combos *combos, const int *r, int nr)
 {
     words w;
     words_init(&w, letter_weight, nletters, p, 1);
@@ -377,7 +390,8 @@ static int build(design_system *sys, const int *letter_weight, int nletters, int
     sys->k = k;
     if (combos == NULL) {
         for (slong i = 1; i < w.n; i++)
-            if (is_lyndon(w.letters[i], w.len[i])) take(sys, e + i, word_text(&w, i), w.weight[i], ctx);
+            if (is_lyndon(w.letters[i], w.len[i]) && graded(&w, i, r, nr))
+                take(sys, e + i, word_text(&w, i), w.weight[i], ctx);
     } else {
         fmpq_mpoly_t m;
         fmpq_mpoly_init(m, ctx);
@@ -408,7 +422,8 @@ int design_composition_conditions(design_system *sys, int stages, int symmetric,
             f[i].var[a] = design_stage_unknown(i, stages, symmetric);
             f[i].pow[a] = weight[a];
         }
-    int rc = build(sys, weight, nletters, 0, f, stages, target, symmetric ? (stages + 1) / 2 : stages, p, NULL);
+    int rc = build(sys, weight, nletters, 0, f, stages, target, symmetric ? (stages + 1) / 2 : stages, p, NULL, NULL,
+                   0);
     free(f);
     return rc;
 }
@@ -444,7 +459,7 @@ static const int split_weight[2] = {1, 1}, split_target[2] = {1, 1};
 
 /* The conditions of the splitting in nvars unknowns (its own first). */
 static int splitting_build(design_system *sys, int kicks, int symmetric, int p, unsigned mods, slong nvars,
-                           vigen_error *err)
+                           const int *r, int nr, vigen_error *err)
 {
     memset(sys, 0, sizeof *sys);
     if (p > VIGEN_DESIGN_MAX_ORDER || p < 1)
@@ -453,7 +468,8 @@ static int splitting_build(design_system *sys, int kicks, int symmetric, int p, 
     if (mods && design_quotient_conditions(&combos, p, symmetric, mods) != VIGEN_OK)
         return vigen_error_set(err, VIGEN_E_USAGE, "order %d is outside what design handles", p);
     factor *f = splitting_factors(kicks, symmetric);
-    int rc = build(sys, split_weight, 2, 1, f, 2 * kicks + 1, split_target, nvars, p, mods ? &combos : NULL);
+    int rc = build(sys, split_weight, 2, 1, f, 2 * kicks + 1, split_target, nvars, p, mods ? &combos : NULL, r,
+               nr);
     free(f);
     if (mods) design_combos_clear(&combos);
     return rc;
@@ -461,13 +477,20 @@ static int splitting_build(design_system *sys, int kicks, int symmetric, int p, 
 
 int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, unsigned mods, vigen_error *err)
 {
-    return splitting_build(sys, kicks, symmetric, p, mods, design_splitting_unknowns(kicks, symmetric), err);
+    return splitting_build(sys, kicks, symmetric, p, mods, design_splitting_unknowns(kicks, symmetric), NULL, 0, err);
+}
+
+int design_flows_conditions(design_system *sys, int kicks, int symmetric, const int *r, int nr, vigen_error *err)
+{
+    int p = 0;
+    for (int j = 0; j < nr; j++) p = r[j] > p ? r[j] : p;
+    return splitting_build(sys, kicks, symmetric, p, 0, design_splitting_unknowns(kicks, symmetric), r, nr, err);
 }
 
 int design_processed_conditions(design_system *sys, int kicks, unsigned mods, vigen_error *err)
 {
     slong kx = design_splitting_unknowns(kicks, 1), k = kx + DESIGN_CORRECTOR_UNKNOWNS;
-    int rc = splitting_build(sys, kicks, 1, 4, mods | DESIGN_MOD_PROCESSED, k, err);
+    int rc = splitting_build(sys, kicks, 1, 4, mods | DESIGN_MOD_PROCESSED, k, NULL, 0, err);
     if (rc != VIGEN_OK) return rc;
     words w;
     words_init(&w, split_weight, 2, 3, 1);

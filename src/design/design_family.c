@@ -44,6 +44,8 @@ slong design_family_count(const vigen_design_spec *d, int q)
 
 int design_family_conditions(design_system *sys, const vigen_design_spec *d, int q, vigen_error *err)
 {
+    if (d->ngeneralized > 0) return design_flows_conditions(sys, d->stages, d->symmetric, d->generalized,
+                                                            d->ngeneralized, err);
     if (design_family_is_splitting(d)) return design_splitting_conditions(sys, d->stages, d->symmetric, d->order,
                                                                       design_family_mods(d), err);
     return design_composition_conditions(sys, d->stages, d->symmetric, q, d->order, err);

@@ -76,6 +76,8 @@ void vigen_design_spec_clear(vigen_design_spec *d)
     free(d->base);
     free(d->minimize);
     free(d->stationary);
+    free(d->flow_a);
+    free(d->flow_b);
     for (slong i = 0; i < d->nnearest; i++) free(d->nearest[i]);
     free(d->nearest);
     for (long i = 0; i < d->nfix; i++) {
@@ -226,11 +228,101 @@ static int read_fix(vigen_design_spec *d, lua_State *L, const char *path, vigen_
     return rc;
 }
 
+/* A flow name: letters, digits and '_' (it is written into the method file). */
+static int flow_name_ok(const char *s)
+{
+    if (*s == 0) return 0;
+    for (; *s; s++)
+        if (!(*s == '_' || (*s >= 'a' && *s <= 'z') || (*s >= 'A' && *s <= 'Z') || (*s >= '0' && *s <= '9')))
+            return 0;
+    return 1;
+}
+
+/* flows = {A, B}, perturbation = B, generalized_order = {r1, ..., rk}: a
+ * splitting of two named flows for H = A + eps B, its conditions the Lyndon
+ * words with j letters B of length <= r_j (docs/design.md).  Read after
+ * order, which may then be absent; with both, r_j is at least order. */
+static int read_flows(vigen_design_spec *d, lua_State *L, int order_given, const char *path, vigen_error *err)
+{
+    int rc = VIGEN_OK;
+    push_raw(L, "flows");
+    int has_flows = !lua_isnil(L, -1);
+    const char *name[2] = {NULL, NULL};
+    if (has_flows) {
+        int ok = lua_istable(L, -1) && lua_rawlen(L, -1) == 2;
+        for (int i = 0; ok && i < 2; i++) {
+            lua_rawgeti(L, -1, i + 1);
+            name[i] = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : NULL;
+            if (name[i] && flow_name_ok(name[i])) d->flow_a = d->flow_a ? d->flow_a : vigen_strdup(name[i]);
+            else ok = 0;
+            if (ok && i == 1) {
+                d->flow_b = vigen_strdup(name[i]);
+                ok = strcmp(d->flow_a, d->flow_b) != 0;
+            }
+            lua_pop(L, 1);
+        }
+        if (!ok)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: flows: must be a list of two different flow names (letters, "
+                                 "digits and '_'), e.g. flows = { \"kepler\", \"interaction\" }", path);
+        else if (strcmp(d->family, "splitting") != 0)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: flows: only a design = \"splitting\" splits named flows",
+                                 path);
+    }
+    lua_pop(L, 1);
+    char *pert = NULL;
+    if (rc == VIGEN_OK) rc = read_string(&pert, L, "perturbation", has_flows, path, err);
+    if (rc == VIGEN_OK && pert && !has_flows)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: perturbation: names one of the flows; give flows = { A, B }",
+                             path);
+    else if (rc == VIGEN_OK && pert && strcmp(pert, d->flow_a) != 0 && strcmp(pert, d->flow_b) != 0)
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: perturbation: '%s' is not one of the flows (%s, %s)", path, pert,
+                             d->flow_a, d->flow_b);
+    else if (rc == VIGEN_OK && pert && strcmp(pert, d->flow_a) == 0) {
+        /* B, the kick letter of the family, is the perturbation */
+        char *t = d->flow_a;
+        d->flow_a = d->flow_b;
+        d->flow_b = t;
+        d->flows_first_b = 1;
+    }
+    free(pert);
+    push_raw(L, "generalized_order");
+    if (rc == VIGEN_OK && !lua_isnil(L, -1)) {
+        lua_Integer n = lua_istable(L, -1) ? (lua_Integer)lua_rawlen(L, -1) : 0;
+        int ok = n >= 1 && n <= VIGEN_DESIGN_MAX_GENERALIZED;
+        for (lua_Integer i = 1; ok && i <= n; i++) {
+            lua_rawgeti(L, -1, i);
+            ok = lua_isinteger(L, -1) && lua_tointeger(L, -1) >= 1 &&
+                 lua_tointeger(L, -1) <= VIGEN_DESIGN_MAX_ORDER;
+            if (ok) d->generalized[d->ngeneralized++] = (int)lua_tointeger(L, -1);
+            lua_pop(L, 1);
+        }
+        if (!ok)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: generalized_order: must be a list of 1 to %d whole numbers "
+                                 "from 1 to %d, e.g. {6, 2}", path, VIGEN_DESIGN_MAX_GENERALIZED,
+                                 VIGEN_DESIGN_MAX_ORDER);
+        else if (!has_flows)
+            rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: generalized_order: needs flows = { A, B } and perturbation "
+                                 "= B (the flow that carries eps)", path);
+    }
+    lua_pop(L, 1);
+    if (rc != VIGEN_OK) return rc;
+    if (d->ngeneralized > 0) {
+        int p = 0;
+        for (int j = 0; j < d->ngeneralized; j++) {
+            if (order_given && d->generalized[j] < d->order) d->generalized[j] = d->order;
+            if (d->generalized[j] > p) p = d->generalized[j];
+        }
+        d->order = p;                /* the conditions are built to this degree */
+    }
+    return VIGEN_OK;
+}
+
 static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
 {
     static const char *const known[] = {"name", "design", "base", "stages", "order", "symmetric", "solutions",
                                         "minimize", "starts", "seed", "screen", "description", "stationary", "nearest",
-                                        "first", "kernel", "fix", "equal", NULL};
+                                        "first", "kernel", "fix", "equal", "flows", "perturbation",
+                                        "generalized_order", NULL};
     int rc = vigen_table_check_fields(L, known, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->name, L, "name", 1, path, err);
     if (rc == VIGEN_OK) {
@@ -253,7 +345,15 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
     long v = 0;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "stages", 1, 0, 1, MAX_DESIGN_STAGES, path, err)) == VIGEN_OK)
         d->stages = (int)v;
-    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "order", 1, 0, 1, 1000, path, err)) == VIGEN_OK) d->order = (int)v;
+    push_raw(L, "order");
+    int order_given = !lua_isnil(L, -1);
+    lua_pop(L, 1);
+    push_raw(L, "generalized_order");
+    int order_required = lua_isnil(L, -1);
+    lua_pop(L, 1);
+    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "order", order_required, 0, 1, 1000, path, err)) == VIGEN_OK)
+        d->order = (int)v;
+    if (rc == VIGEN_OK) rc = read_flows(d, L, order_given, path, err);
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "starts", 0, 0, 1, MAX_STARTS, path, err)) == VIGEN_OK)
         d->starts = v;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "seed", 0, 1, 0, 2147483647L, path, err)) == VIGEN_OK)
@@ -294,6 +394,9 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
     if (rc == VIGEN_OK) rc = read_fix(d, L, path, err);
     if (rc == VIGEN_OK) rc = read_equal(d, L, path, err);
     if (rc == VIGEN_OK) rc = check_processed(d, path, err);
+    if (rc == VIGEN_OK && d->flow_b && (d->goal != VIGEN_DESIGN_ALL || d->stationary || d->nnearest > 0))
+        rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: flows: a splitting of named flows asks solutions = \"all\" "
+                             "(its error is measured by the generalized order, not one error constant)", path);
     return rc;
 }
 

@@ -61,6 +61,11 @@ slong design_composition_count(int symmetric, int q, int p);
  * modulo the Nystrom ideal or the processed image (0: plain). */
 int design_splitting_conditions(design_system *sys, int kicks, int symmetric, int p, unsigned mods, vigen_error *err);
 slong design_splitting_count(int symmetric, int p);
+/* The same for two named flows A and B (B carrying eps) and the generalized
+ * order r[0..nr-1]: the Lyndon words with j letters B and length <= r_j
+ * (r_nr beyond the list), and the two words of one letter (each flow's
+ * steps add up to 1). */
+int design_flows_conditions(design_system *sys, int kicks, int symmetric, const int *r, int nr, vigen_error *err);
 slong design_splitting_unknowns(int kicks, int symmetric);
 slong design_substep_unknown(slong i, int kicks, int symmetric);
 

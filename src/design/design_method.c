@@ -18,10 +18,18 @@
 #include "support/strbuf.h"
 
 char *vigen_design_method_text(const vigen_design_spec *d, const char *base, const char *name, slong index,
-                               slong count, char *const *values, const char *how, const int claims[3])
+                               slong count, char *const *values, const char *how, const int claims[3],
+                               const int *gen, int ngen)
 {
     int splitting = d->base == NULL;
-    char *what = d->processed ? vigen_strdup_printf("a symmetric splitting with %d kicks of effective order %d%s "
+    vigen_strbuf gw;
+    vigen_strbuf_init(&gw);
+    for (int j = 0; j < ngen; j++) vigen_strbuf_printf(&gw, "%s%d", j ? ", " : "", gen[j]);
+    char *what = d->flow_b ? vigen_strdup_printf("a %ssplitting of the flows %s and %s with %d steps of %s "
+                                                 "(H = %s + eps %s), generalized order {%s}",
+                                                 d->symmetric ? "symmetric " : "", d->flow_a, d->flow_b, d->stages,
+                                                 d->flow_b, d->flow_a, d->flow_b, gw.data ? gw.data : "")
+               : d->processed ? vigen_strdup_printf("a symmetric splitting with %d kicks of effective order %d%s "
                                                     "processed by the corrector C (drift, kick, drift, kick, drift, kick): "
                                                     "one step is C, the kernel, C^-1", d->stages, d->order,
                                                     d->nystrom ? " for Nystrom H" : "")
@@ -29,10 +37,11 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
                                                  d->stages)
                            : vigen_strdup_printf("a %d-stage %scomposition of %s", d->stages,
                                                  d->symmetric ? "symmetric " : "", base);
-    const char *family = !splitting ? "" : d->nystrom ? " for Nystrom H (T = p^2/2)" : " for separable H";
+    const char *family = !splitting || d->flow_b ? "" : d->nystrom ? " for Nystrom H (T = p^2/2)" : " for separable H";
     vigen_strbuf sb;
     vigen_strbuf_init(&sb);
-    vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, family);
+    if (d->flow_b) vigen_strbuf_printf(&sb, "-- %s: %s.\n", name, what);
+    else vigen_strbuf_printf(&sb, "-- %s: %s, order %d%s.\n", name, what, d->order, family);
     vigen_strbuf_printf(&sb, "-- Found by vigen design from %s (solution %ld of %ld): %s\n", d->path, (long)index,
                         (long)count, how);
     vigen_strbuf_append(&sb, "-- Every digit is certified: the exact step lies within half a unit of the last digit.\n");
@@ -44,10 +53,22 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
      * but the checker leaves its symplecticity undecided on these decimals:
      * no claim is made that it does not certify */
     if (!d->processed) vigen_strbuf_append(&sb, "  symplectic = true,\n");
+    if (d->flow_b) {
+        const char *first = d->flows_first_b ? d->flow_b : d->flow_a;
+        const char *second = d->flows_first_b ? d->flow_a : d->flow_b;
+        if (ngen > 0) vigen_strbuf_printf(&sb, "  generalized_order = {%s},\n", gw.data);
+        vigen_strbuf_printf(&sb, "  flows = { \"%s\", \"%s\" },\n  perturbation = \"%s\",\n", first, second,
+                            d->flow_b);
+    }
+    vigen_strbuf_clear(&gw);
     vigen_strbuf_printf(&sb, "  source = \"vigen design %s, solution %ld of %ld\",\n", d->path, (long)index,
                         (long)count);
-    vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist by "
-                        "the Krawczyk operator.\",\n", 'A', what + 1, d->order, family);
+    if (d->flow_b)
+        vigen_strbuf_printf(&sb, "  description = \"%c%s; a root of the order conditions proved to exist by the "
+                            "Krawczyk operator.\",\n", 'A', what + 1);
+    else
+        vigen_strbuf_printf(&sb, "  description = \"%c%s of order %d%s; a root of the order conditions proved to exist "
+                            "by the Krawczyk operator.\",\n", 'A', what + 1, d->order, family);
     if (splitting) {
         vigen_strbuf_append(&sb, "  splitting = {\n");
         /* a symmetric splitting that starts with a kick ends with one: its
@@ -57,7 +78,8 @@ char *vigen_design_method_text(const vigen_design_spec *d, const char *base, con
         int ends = d->first_kick && d->symmetric;
         for (int i = 0; i < 2 * d->stages + 1; i++)
             if (!(ends && (i == 0 || i == 2 * d->stages) && strcmp(values[i], "0") == 0))
-                vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? "kick" : "drift", values[i]);
+                vigen_strbuf_printf(&sb, "    { \"%s\", \"%s\" },\n", i % 2 ? (d->flow_b ? d->flow_b : "kick")
+                                    : (d->flow_a ? d->flow_a : "drift"), values[i]);
         vigen_strbuf_append(&sb, "  },\n");
         if (d->processed) {
             vigen_strbuf_append(&sb, "  corrector = {\n");
@@ -166,11 +188,19 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     if (rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].available)
         sol->error_constant_sep = ball_text(rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].value);
     sol->force = (long)rep.cost.force;
+    const vigen_check_generalized *g = rep.generalized;
+    sol->ngeneralized = 0;
+    if (g && g->computed && g->why == NULL && g->k <= VIGEN_DESIGN_MAX_GENERALIZED) {
+        int decided = g->k > 0;
+        for (int j = 1; j <= g->k; j++) decided &= g->state[j] == VIGEN_GEN_DECIDED;
+        for (int j = 1; decided && j <= g->k; j++) sol->generalized[sol->ngeneralized++] = g->r[j];
+    }
     /* the claims the text states hold, every one (the family orders only
      * when the text states them) */
     sol->certified = rep.exit_code == 0 &&
                      (rep.claim_symplectic < 0 || rep.claim_symplectic_status == VIGEN_CHECK_YES) &&
                      (rep.claim_order < 0 || rep.claim_order_status == VIGEN_CHECK_YES);
+    if (g && g->claim_status >= 0 && g->claim_status != VIGEN_CHECK_YES) sol->certified = 0;
     for (int f = 0; f < 2; f++)
         if (rep.claim_order_family[f] >= 0 && rep.claim_order_family_status[f] != VIGEN_CHECK_YES) sol->certified = 0;
     if (!sol->certified)

@@ -11,9 +11,12 @@
  * steps values[0 .. n-1] as certified decimals (the stages of a composition,
  * the substeps drift, kick, ..., drift of a splitting), the claims order,
  * order_separable, order_nystrom of claims[0..2] (each when >= 0) and
- * symplectic = true, how in its comment.  Heap string. */
+ * symplectic = true, how in its comment; a splitting of named flows
+ * (d->flow_b) names them and claims generalized_order = gen[0..ngen-1].
+ * Heap string. */
 char *vigen_design_method_text(const vigen_design_spec *d, const char *base, const char *name, slong index,
-                               slong count, char *const *values, const char *how, const int claims[3]);
+                               slong count, char *const *values, const char *how, const int claims[3],
+                               const int *gen, int ngen);
 
 /* Checks text as the method file it is (shown_path in messages; order
  * the order claimed): sets sol->order, order_separable, error constants,

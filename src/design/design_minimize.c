@@ -115,7 +115,8 @@ static double value(const gsl_vector *t, void *param)
         if (ok) {
             for (slong s = 0; s < nv; s++) gamma[s] = digits[design_family_value_unknown(o->d, s)];
             const int claims[3] = {-1, -1, -1};
-            char *text = vigen_design_method_text(o->d, o->base, "candidate", 1, 1, gamma, "a candidate", claims);
+            char *text = vigen_design_method_text(o->d, o->base, "candidate", 1, 1, gamma, "a candidate", claims, NULL,
+                                                  0);
             vigen_error err;
             vigen_error_init(&err);
             double e = -1;

@@ -239,9 +239,31 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
         int splitting = design_family_is_splitting(d);
         int claims[3] = {splitting ? -1 : d->order, splitting && !d->nystrom ? d->order : -1,
                          d->nystrom ? d->order : -1};
-        s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims);
+        if (d->flow_b) {
+            /* named flows: the classical order is the least r_j */
+            claims[0] = d->order;
+            claims[1] = -1;
+            for (int j = 0; j < d->ngeneralized; j++) claims[0] = d->generalized[j] < claims[0] ? d->generalized[j]
+                                                                                              : claims[0];
+        }
+        s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims, d->generalized,
+                                           d->ngeneralized);
         int rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
-        if (rc == VIGEN_OK && s->certified && (s->order >= 0 || s->order_separable >= 0 || s->order_nystrom >= 0)) {
+        if (rc == VIGEN_OK && d->flow_b && !s->certified && s->ngeneralized > 0 && s->order >= claims[0]) {
+            /* a solution beyond the order asked (r_j above it): it claims
+             * what the checker finds */
+            int gen[VIGEN_DESIGN_MAX_GENERALIZED], n = s->ngeneralized;
+            memcpy(gen, s->generalized, sizeof gen);
+            claims[0] = s->order;
+            free(s->text);
+            free(s->why);
+            free(s->error_constant);
+            free(s->error_constant_sep);
+            s->why = s->error_constant = s->error_constant_sep = NULL;
+            s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims, gen, n);
+            rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
+        } else if (rc == VIGEN_OK && !d->flow_b && s->certified &&
+                   (s->order >= 0 || s->order_separable >= 0 || s->order_nystrom >= 0)) {
             free(s->text);
             free(s->error_constant);
             free(s->error_constant_sep);
@@ -249,7 +271,7 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
             claims[0] = s->order;
             claims[1] = s->order_separable;
             claims[2] = s->order_nystrom;
-            s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims);
+            s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims, NULL, 0);
             rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
         }
         free(gamma);
