@@ -109,10 +109,13 @@ typedef struct {
                                     starting precision when the entries need more) */
     slong spec_digits;           /* digits asked of the loader for spec files; default 34 */
     vigen_check_loader_fn load;  /* spec hook, see above; NULL = tableau files only */
+    int generalized;             /* 1: the generalized orders of named flows (default); 0 skips
+                                    them, for a caller after the classical figures only */
 } vigen_check_options;
 
 /* Sets every option to its default: max_order 8, prec 0 (adequate to the
- * entries), max_prec 4096, spec_digits 34, no FILE2, no loader. */
+ * entries), max_prec 4096, spec_digits 34, no FILE2, no loader, the
+ * generalized orders computed. */
 void vigen_check_options_init(vigen_check_options *opt);
 
 /* Tri-state outcome. */

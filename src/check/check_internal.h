@@ -102,6 +102,7 @@ typedef struct {
     conj_log *conj;              /* quadratic entries: the conjugate's bounds (NULL: none) */
     int conj_recording;          /* this round runs on the conjugate tableau and fills conj */
     const mag_struct *conj_bound;/* for the decision being made: an upper bound of |v'|, or NULL */
+    int skip_generalized;        /* the caller wants the classical figures only */
 } ctx_t;
 
 /* Up to two entries replaced by other values. */

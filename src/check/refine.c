@@ -180,6 +180,7 @@ int vigen_check_tableau(vigen_check_report *rep, vigen_tableau *t, vigen_tableau
         ctx_t cx;
         chk_ctx_init(&cx, t, &ex, rep->holds);
         cx.prec = prec;
+        cx.skip_generalized = !opt.generalized;
         if (quadratic) {
             conj_record(&log, rep, &conj, &ex, prec, P);
             cx.conj = &log;

@@ -12,6 +12,7 @@ void vigen_check_options_init(vigen_check_options *opt)
     opt->max_order = CHK_DEFAULT_MAX_ORDER;
     opt->max_prec = CHK_DEFAULT_MAX_PREC;
     opt->spec_digits = 34;
+    opt->generalized = 1;
 }
 
 vigen_check_failure *chk_failure_new(vigen_check_report *rep, int kind)

@@ -121,9 +121,10 @@ static int check_processed(const vigen_design_spec *d, const char *path, vigen_e
     if (d->order != 4)
         return vigen_error_set(err, VIGEN_E_SPEC, "%s: order: the effective order of a processed kernel must be 4 "
                                "(design handles effective order 4)", path);
-    if (d->goal != VIGEN_DESIGN_ALL)
-        return vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: a processed design asks solutions = \"all\" "
-                               "(the error constant of a processed method needs its corrector)", path);
+    if (d->stationary || d->nnearest > 0)
+        return vigen_error_set(err, VIGEN_E_SPEC, "%s: %s: a processed design asks solutions = \"all\" or minimize "
+                               "(the criterion would need the corrector's conditions too)", path,
+                               d->stationary ? "stationary" : "nearest");
     return VIGEN_OK;
 }
 

@@ -158,12 +158,13 @@ slong design_newton_search_anchored(double **sols, const design_system *sys, con
                                     unsigned long seed, double box, const double *anchor, slong nanchor);
 
 /* The corrector of the proved kernel root x (kernel square rows rows[0 ..
- * kx-1] of design_family_conditions) in the system of
+ * kx-1] of the kernel's system ksys, its pins among them) in the system of
  * design_processed_conditions (design_processed.c): on success (1) digits
  * gets kx + DESIGN_CORRECTOR_UNKNOWNS certified decimals (the kernel's and
  * the corrector's, one proof), *radius the box's; 0 with *why. */
 int design_corrector_find(char ***digits, char **radius, char **why, const vigen_design_spec *d,
-                          const slong *rows, const double *x, long ndigits, vigen_error *err);
+                          const design_system *ksys, const slong *rows, const double *x, long ndigits,
+                          vigen_error *err);
 
 /* Newton on x (k unknowns) for the subsystem rows (k of them) in double;
  * returns 1 when it converged to a root. */
@@ -179,6 +180,9 @@ slong design_square_rows(slong *rows, const design_system *sys, unsigned long se
  * exactly the double given. */
 slong design_system_add_pin(design_system *sys, slong j);
 void design_system_set_pin(design_system *sys, slong row, double t);
+/* The pin of row `row` of src (x_j - t, t exact) appended to dst, whose
+ * first unknowns are src's; its row in dst. */
+slong design_system_copy_pin(design_system *dst, const design_system *src, slong row);
 
 /* The unknowns d fixes (`fix`), each the condition x_j - v = 0 with v its
  * exact rational, put before every other condition (so that the square

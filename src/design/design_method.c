@@ -138,9 +138,10 @@ static char *ball_text(const arb_t x)
 }
 
 /* text loaded as the composition file it is (through a temporary file) and
- * checked to order max_order; rep initialised on success. */
+ * checked to order max_order (classical: the classical figures only, not
+ * the generalized orders of named flows); rep initialised on success. */
 static int load_check(vigen_check_report *rep, const char *text, const char *shown_path, int max_order,
-                      vigen_error *err)
+                      int classical, vigen_error *err)
 {
     int slot = -1;
     char *tmp = temp_file(text, &slot);
@@ -159,6 +160,7 @@ static int load_check(vigen_check_report *rep, const char *text, const char *sho
     vigen_check_options_init(&opt);
     opt.path = shown_path;
     opt.max_order = max_order <= VIGEN_TREE_MAX_ORDER ? max_order : VIGEN_TREE_MAX_ORDER;
+    opt.generalized = !classical;
     vigen_check_report_init(rep);
     rc = vigen_check_tableau(rep, &t, NULL, &opt, err);
     if (rc != VIGEN_OK) vigen_check_report_clear(rep);
@@ -170,7 +172,7 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
                               vigen_error *err)
 {
     vigen_check_report rep;
-    int rc = load_check(&rep, text, shown_path, order + 1 > 8 ? order + 1 : 8, err);
+    int rc = load_check(&rep, text, shown_path, order + 1 > 8 ? order + 1 : 8, 0, err);
     if (rc != VIGEN_OK) return rc;
     int at_least = 0, undecided = 0;
     sol->order = vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided);
@@ -215,7 +217,7 @@ int vigen_design_method_error_constant(double *ec, const char *text, int order, 
 {
     vigen_check_report rep;
     *ec = -1;
-    int rc = load_check(&rep, text, "(candidate)", order + 1, err);
+    int rc = load_check(&rep, text, "(candidate)", order + 1, 1, err);
     if (rc != VIGEN_OK) return rc;
     const vigen_check_error_constant *e = &rep.error_constant[family];
     if (e->available && e->order == order) *ec = arf_get_d(arb_midref(e->value), ARF_RND_NEAR);

@@ -104,14 +104,29 @@ static double value(const gsl_vector *t, void *param)
     arb_ptr box = _arb_vec_init(k);
     if (design_newton_polish(x, o->sys, o->rows, 30) &&
         design_krawczyk_prove(box, o->sys, o->rows, x, TRIAL_PREC)) {
-        slong nv = design_family_nvalues(o->d);
-        char **digits = calloc((size_t)k, sizeof(char *)), **gamma = malloc((size_t)nv * sizeof(char *));
+        slong nv = design_family_nvalues(o->d), nd = k;
+        char **digits = NULL, **gamma = malloc((size_t)nv * sizeof(char *));
         int ok = 1;
-        /* a step held at 0 (a splitting that starts with a kick) has a box
-         * around 0, whose sign no digits decide: it is written as 0 */
-        for (slong j = 0; j < k; j++)
-            ok &= (digits[j] = design_pinned_zero(o->sys, o->rows, k, j) ? vigen_strdup("0")
-                                                                         : vigen_decimal_format(box + j, TRIAL_DIGITS)) != NULL;
+        if (o->d->processed) {
+            /* a processed method's error is that of C K C^-1: the kernel
+             * with its corrector, proved together at this point */
+            char *radius = NULL, *why = NULL;
+            vigen_error cerr;
+            vigen_error_init(&cerr);
+            ok = design_corrector_find(&digits, &radius, &why, o->d, o->sys, o->rows, x, TRIAL_DIGITS, &cerr) == 1;
+            vigen_error_clear(&cerr);
+            free(radius);
+            free(why);
+            nd = ok ? k + DESIGN_CORRECTOR_UNKNOWNS : 0;
+        } else {
+            /* a step held at 0 (a splitting that starts with a kick) has a
+             * box around 0, whose sign no digits decide: it is written as 0 */
+            digits = calloc((size_t)k, sizeof(char *));
+            for (slong j = 0; j < k; j++)
+                ok &= (digits[j] = design_pinned_zero(o->sys, o->rows, k, j)
+                                       ? vigen_strdup("0")
+                                       : vigen_decimal_format(box + j, TRIAL_DIGITS)) != NULL;
+        }
         if (ok) {
             for (slong s = 0; s < nv; s++) gamma[s] = digits[design_family_value_unknown(o->d, s)];
             const int claims[3] = {-1, -1, -1};
@@ -128,7 +143,7 @@ static double value(const gsl_vector *t, void *param)
             vigen_error_clear(&err);
             free(text);
         }
-        for (slong j = 0; j < k; j++) free(digits[j]);
+        for (slong j = 0; j < nd; j++) free(digits[j]);
         free(digits);
         free(gamma);
     }

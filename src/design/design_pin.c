@@ -63,6 +63,17 @@ void design_system_set_pin(design_system *sys, slong row, double t)
     fmpz_clear(e);
 }
 
+slong design_system_copy_pin(design_system *dst, const design_system *src, slong row)
+{
+    const design_poly *p = &src->cond[row];
+    slong j = 0;
+    while (j < src->k && p->exp[j] != 1) j++;
+    slong r = design_system_add_pin(dst, j);
+    fmpq_set(dst->cond[r].coef + 1, p->coef + 1);
+    dst->cond[r].coef_d[1] = p->coef_d[1];
+    return r;
+}
+
 /* the condition of row `row` moved to the front: the square subsystem takes
  * the conditions in order */
 static void to_front(design_system *sys, slong row)

@@ -27,7 +27,8 @@
 #define SAME_KERNEL 1e-8
 
 int design_corrector_find(char ***digits, char **radius, char **why, const vigen_design_spec *d,
-                          const slong *rows, const double *x, long ndigits, vigen_error *err)
+                          const design_system *ksys, const slong *rows, const double *x, long ndigits,
+                          vigen_error *err)
 {
     *digits = NULL;
     *radius = *why = NULL;
@@ -35,7 +36,7 @@ int design_corrector_find(char ***digits, char **radius, char **why, const vigen
     unsigned mods = d->nystrom ? DESIGN_MOD_NYSTROM : 0;
     int rc = design_splitting_conditions(&kernel, d->stages, 1, 4, mods | DESIGN_MOD_PROCESSED, err);
     if (rc != VIGEN_OK) return -1;
-    slong kernel_rows = kernel.n + d->nfix, kx = kernel.k;
+    slong kernel_rows = kernel.n + d->nfix + d->nequal, kx = kernel.k;
     design_system_clear(&kernel);
     rc = design_processed_conditions(&sys, d->stages, mods, err);
     if (rc != VIGEN_OK) return -1;
@@ -47,7 +48,10 @@ int design_corrector_find(char ***digits, char **radius, char **why, const vigen
         return 0;
     }
     slong *rows2 = malloc((size_t)k * sizeof(slong));
-    for (slong i = 0; i < kx; i++) rows2[i] = rows[i];
+    /* the kernel's conditions keep their rows; its pins (the free steps a
+     * minimisation holds, a first kick held at 0) are copied */
+    for (slong i = 0; i < kx; i++)
+        rows2[i] = rows[i] < kernel_rows ? rows[i] : design_system_copy_pin(&sys, ksys, rows[i]);
     for (slong i = 0; i < DESIGN_CORRECTOR_CONDITIONS; i++) rows2[kx + i] = kernel_rows + i;
     rows2[k - 1] = design_system_add_pin(&sys, k - 1);
     static const double last_kick[] = {0.5, -0.5, 0.25, -0.25, 1, -1, 0.125, -0.125};

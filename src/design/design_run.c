@@ -191,12 +191,12 @@ static void settle(vigen_design_solution *sol, const design_system *sys, const s
 /* A processed design: the corrector of each proved kernel, proved with it
  * (the digits become the kernel's and the corrector's); a kernel without a
  * proved corrector is not written. */
-static void add_corrector(vigen_design_solution *sol, const vigen_design_spec *d, const slong *rows,
-                          const vigen_design_options *opt, vigen_error *err)
+static void add_corrector(vigen_design_solution *sol, const vigen_design_spec *d, const design_system *sys,
+                          const slong *rows, const vigen_design_options *opt, vigen_error *err)
 {
     if (!sol->proved || sol->excluded) return;
     char **digits = NULL, *radius = NULL, *why = NULL;
-    if (design_corrector_find(&digits, &radius, &why, d, rows, sol->x, opt->digits, err) == 1) {
+    if (design_corrector_find(&digits, &radius, &why, d, sys, rows, sol->x, opt->digits, err) == 1) {
         for (slong j = 0; j < sol->nunknowns; j++) free(sol->digits[j]);
         free(sol->digits);
         free(sol->radius);
@@ -323,6 +323,7 @@ static int minimize(vigen_design_result *res, design_system *sys, slong *rows, s
         res->sol[0].x = x;
         x = NULL;
         settle(&res->sol[0], sys, rows, k, opt);
+        if (d->processed) add_corrector(&res->sol[0], d, sys, rows, opt, err);
         char *screen = d->screen > 0 ? vigen_strdup_printf(" (the starts the best minima of the Lyndon norm of "
                                                            "the principal error from %ld random points)", d->screen)
                                      : vigen_strdup("");
@@ -424,7 +425,7 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         free(roots);
         qsort(res->sol, (size_t)res->nsol, sizeof *res->sol, cmp_first);
         for (slong i = 0; i < res->nsol; i++) settle(&res->sol[i], &sys, rows, m, opt);
-        for (slong i = 0; d->processed && i < res->nsol; i++) add_corrector(&res->sol[i], d, rows, opt, err);
+        for (slong i = 0; d->processed && i < res->nsol; i++) add_corrector(&res->sol[i], d, &sys, rows, opt, err);
         char *how = criterion ? design_criterion_how(d, res->nconditions) : vigen_strdup_printf(
             "the %ld order conditions (polynomials in the steps, from the BCH series of the method) solved by "
             "Newton from %ld random starts on a square subsystem of %ld, this root refined in arb and proved by the "

@@ -211,8 +211,38 @@ static void test_unreadable(void)
     vigen_error_clear(&err);
 }
 
+/* The generalized orders of a named-flow file are computed by default and
+ * skipped when the caller asks for the classical figures only; the
+ * classical order (SABA_2: 2, generalized (4, 2); Laskar and Robutel 2001)
+ * is the same. */
+static void test_generalized_option(void)
+{
+    char path[1024];
+    snprintf(path, sizeof(path), "%s/tableaux/published/saba_2.lua", VIGEN_SOURCE_DIR);
+    for (int g = 0; g <= 1; g++) {
+        vigen_check_options opt;
+        vigen_check_options_init(&opt);
+        CHECK(opt.generalized == 1);
+        opt.load = vigen_source_load;
+        opt.path = path;
+        opt.generalized = g;
+        vigen_check_report rep;
+        vigen_error err;
+        vigen_error_init(&err);
+        vigen_check_report_init(&rep);
+        CHECK(vigen_check_file(&rep, &opt, &err) == VIGEN_OK);
+        int computed = rep.generalized != NULL && rep.generalized->computed;
+        CHECK_MSG(computed == g, "generalized = %d: computed %d", g, computed);
+        int at_least = 0, undecided = 0;
+        CHECK(vigen_check_certified_order(&rep, VIGEN_CHECK_GENERAL, &at_least, &undecided) == 2);
+        vigen_check_report_clear(&rep);
+        vigen_error_clear(&err);
+    }
+}
+
 int main(void)
 {
+    test_generalized_option();
     test_rows();
     test_checks();
     test_reports();
