@@ -54,10 +54,10 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
         printf("complete    not established (Bezout bound too large to state)\n");
 }
 
-static void print_table(const vigen_design_result *res)
+static void print_table(const vigen_design_result *res, const vigen_design_spec *d)
 {
-    printf("%-4s %-13s %-6s %-12s %-12s %-6s %s\n", "k", "status", "order", "error const", "separable", "force",
-           "file");
+    printf("%-4s %-13s %-6s %-12s %-12s %-12s %-6s %s\n", "k", "status", "order", "error const", "separable",
+           "nystrom", "force", "file");
     for (slong i = 0; i < res->nsol; i++) {
         const vigen_design_solution *s = &res->sol[i];
         const char *status = s->certified ? "certified" : s->excluded ? "excluded" : s->proved ? "not certified"
@@ -66,9 +66,14 @@ static void print_table(const vigen_design_result *res)
         if (s->order >= 0) snprintf(order, sizeof order, "%d", s->order);
         char force[24] = "-";
         if (s->certified) snprintf(force, sizeof force, "%ld", s->force);
-        printf("%-4ld %-13s %-6s %-12s %-12s %-6s %s\n", (long)(i + 1), status, order,
-               s->error_constant ? s->error_constant : "-", s->error_constant_sep ? s->error_constant_sep : "-", force,
+        printf("%-4ld %-13s %-6s %-12s %-12s %-12s %-6s %s\n", (long)(i + 1), status, order,
+               s->error_constant ? s->error_constant : "-", s->error_constant_sep ? s->error_constant_sep : "-",
+               s->error_constant_nystrom ? s->error_constant_nystrom : "-", force,
                s->certified && s->file ? s->file : "-");
+        double effective = vigen_design_solution_criterion(s, d);
+        if (d->minimize_effective && s->certified && effective >= 0)
+            printf("     %s = %.6g (the constant times %ld forces to the power %d)\n", d->minimize, effective,
+                   s->force, d->order);
         printf("     x =");
         for (slong j = 0; j < s->nunknowns; j++)
             printf(" %s", s->proved && s->digits && s->digits[j] ? s->digits[j] : "");
@@ -102,7 +107,7 @@ int vigen_cmd_design(const vigen_cli_args *args)
     vigen_progress_end();
     if (rc == VIGEN_OK) {
         print_header(&d, &res);
-        print_table(&res);
+        print_table(&res, &d);
         rc = vigen_design_write(&res, &err);
     }
     int certified = 0;

@@ -32,6 +32,9 @@
 /* The most entries of a generalized order asked for (a splitting file's claim). */
 #define VIGEN_DESIGN_MAX_GENERALIZED 16
 
+/* Newton starts of a search for every root, when the file gives none. */
+#define VIGEN_DESIGN_DEFAULT_STARTS 2000L
+
 /* What is wanted of the family. */
 enum { VIGEN_DESIGN_ALL = 0, VIGEN_DESIGN_MINIMIZE = 1 };
 
@@ -45,7 +48,11 @@ typedef struct {
     int processed;               /* "processed": a kernel of effective order `order` and its corrector */
     int goal;                    /* VIGEN_DESIGN_ALL or VIGEN_DESIGN_MINIMIZE */
     char *minimize;              /* goal MINIMIZE: "error_constant" (general H), "error_constant_separable",
-                                    "error_constant_nystrom": the checker's constant minimised */
+                                    "error_constant_nystrom": the checker's constant minimised; "effective_error",
+                                    "effective_error_separable", "effective_error_nystrom": that constant times
+                                    the forces per step to the power `order` */
+    int minimize_family;         /* the constant's family, VIGEN_CHECK_EC_* (general when not minimising) */
+    int minimize_effective;      /* 1: the effective error, constant x forces^order */
     char *stationary;            /* "error_norm": every stationary point of the principal error's
                                     Lyndon norm on the family (design_criterion.c); else NULL */
     char **nearest;              /* the member of the family nearest these decimals (one per unknown) */
@@ -64,6 +71,7 @@ typedef struct {
     long nequal;                 /* `equal = { {"gamma1", "gamma2"}, ... }`: pairs of unknowns tied */
     long *equal_unknown;         /* 2 nequal indices among the unknowns, a pair after a pair */
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
+    long starts_asked;           /* starts as the file gives it (0: not given) */
     unsigned long seed;          /* of the starts (default 1) */
     long screen;                 /* minimize: random points where the error constant is evaluated
                                     first, the descents starting from the best (default 0: from
@@ -92,8 +100,11 @@ typedef struct {
     int order_nystrom;           /* ... for Nystrom H */
     char *error_constant;        /* the checker's principal error constant, general H (text) */
     char *error_constant_sep;    /* ... separable H */
-    double error_constant_d;
-    long force;                  /* force evaluations per step (separable H) */
+    char *error_constant_nystrom;/* ... Nystrom H */
+    double error_constant_d;     /* the three as doubles (-1: not available) */
+    double error_constant_sep_d, error_constant_nystrom_d;
+    long force;                  /* force evaluations per step (separable H; a processed method: its
+                                    kernel's, as C and C^-1 run once, at the start and at an output) */
     int ngeneralized;            /* named flows: the checker's generalized order r[1..n], all decided (0: not) */
     int generalized[VIGEN_DESIGN_MAX_GENERALIZED];
     char *file;                  /* the path the method file goes to */
@@ -139,6 +150,11 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
 /* Writes the method files of the certified solutions of res, all or none
  * (vigen_write_files_atomic).  VIGEN_E_WRITE naming the file. */
 int vigen_design_write(const vigen_design_result *res, vigen_error *err);
+
+/* The figure `minimize` ranks solutions by: the error constant of
+ * d->minimize_family, times force^order for an effective error; -1 when
+ * the checker gave no such constant. */
+double vigen_design_solution_criterion(const vigen_design_solution *sol, const vigen_design_spec *d);
 
 /* Frees what vigen_design_run put in res (every solution, texts and
  * conditions); res is then empty. */

@@ -5,6 +5,7 @@
 #include <string.h>
 #include <lua.h>
 #include <flint/fmpq.h>
+#include "vigen/check.h"
 #include "vigen/design.h"
 #include "vigen/limits.h"
 #include "lua/sandbox.h"
@@ -13,7 +14,6 @@
 #include "support/nul.h"
 #include "design/design_criterion.h"
 
-#define DEFAULT_STARTS 2000L
 /* minimize: each start is a descent with a checker run per trial point */
 #define DEFAULT_MINIMIZE_STARTS 8L
 #define MAX_STARTS 1000000L
@@ -109,6 +109,32 @@ static int read_kernel(vigen_design_spec *d, lua_State *L, const char *path, vig
     if (rc == VIGEN_OK && kernel) d->nystrom = strcmp(kernel, "rkn") == 0;
     free(kernel);
     return rc;
+}
+
+/* What `minimize` may name: the checker's constant of one family, or the
+ * effective error (that constant times the forces per step to the power
+ * of the order: the error at equal work). */
+static const struct {
+    const char *name;
+    int family, effective;
+} criteria[] = {
+    {"error_constant", VIGEN_CHECK_EC_GENERAL, 0},
+    {"error_constant_separable", VIGEN_CHECK_EC_SEPARABLE, 0},
+    {"error_constant_nystrom", VIGEN_CHECK_EC_NYSTROM, 0},
+    {"effective_error", VIGEN_CHECK_EC_GENERAL, 1},
+    {"effective_error_separable", VIGEN_CHECK_EC_SEPARABLE, 1},
+    {"effective_error_nystrom", VIGEN_CHECK_EC_NYSTROM, 1},
+};
+
+static int read_criterion(vigen_design_spec *d)
+{
+    for (size_t i = 0; i < sizeof criteria / sizeof *criteria; i++)
+        if (strcmp(d->minimize, criteria[i].name) == 0) {
+            d->minimize_family = criteria[i].family;
+            d->minimize_effective = criteria[i].effective;
+            return 1;
+        }
+    return 0;
 }
 
 /* processed: what design handles (after every field is read) */
@@ -382,14 +408,17 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
                                  "\"error_constant\"", path);
         else if (solutions && strcmp(solutions, "all") != 0)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: solutions: must be \"all\"", path);
-        else if (d->minimize && strcmp(d->minimize, "error_constant") != 0 &&
-                 strcmp(d->minimize, "error_constant_separable") != 0 && strcmp(d->minimize, "error_constant_nystrom") != 0)
+        else if (d->minimize && !read_criterion(d))
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: minimize: must be \"error_constant\" (general H), "
-                                 "\"error_constant_separable\" or \"error_constant_nystrom\"", path);
+                                 "\"error_constant_separable\", \"error_constant_nystrom\" or "
+                                 "\"effective_error\" (and _separable, _nystrom: the constant times the forces "
+                                 "per step to the power order)", path);
         else if (d->screen > 0 && d->minimize == NULL)
             rc = vigen_error_set(err, VIGEN_E_SPEC, "%s: screen: only a minimize design screens points", path);
         d->goal = d->minimize ? VIGEN_DESIGN_MINIMIZE : VIGEN_DESIGN_ALL;
-        if (d->starts == 0) d->starts = d->goal == VIGEN_DESIGN_MINIMIZE ? DEFAULT_MINIMIZE_STARTS : DEFAULT_STARTS;
+        d->starts_asked = d->starts;
+        if (d->starts == 0)
+            d->starts = d->goal == VIGEN_DESIGN_MINIMIZE ? DEFAULT_MINIMIZE_STARTS : VIGEN_DESIGN_DEFAULT_STARTS;
     }
     free(solutions);
     if (rc == VIGEN_OK) rc = read_fix(d, L, path, err);

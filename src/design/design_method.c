@@ -182,13 +182,17 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     if (sl || su) sol->order_separable = -1;
     sol->order_nystrom = vigen_check_certified_order(&rep, VIGEN_CHECK_NYSTROM, &sl, &su);
     if (sl || su) sol->order_nystrom = -1;
-    const vigen_check_error_constant *ec = &rep.error_constant[VIGEN_CHECK_EC_GENERAL];
-    if (ec->available) {
-        sol->error_constant = ball_text(ec->value);
-        sol->error_constant_d = arf_get_d(arb_midref(ec->value), ARF_RND_NEAR);
+    char **text_of[VIGEN_CHECK_EC_FAMILIES] = {&sol->error_constant, &sol->error_constant_sep,
+                                               &sol->error_constant_nystrom};
+    double *value_of[VIGEN_CHECK_EC_FAMILIES] = {&sol->error_constant_d, &sol->error_constant_sep_d,
+                                                 &sol->error_constant_nystrom_d};
+    for (int f = 0; f < VIGEN_CHECK_EC_FAMILIES; f++) {
+        const vigen_check_error_constant *ec = &rep.error_constant[f];
+        *value_of[f] = -1;
+        if (!ec->available) continue;
+        *text_of[f] = ball_text(ec->value);
+        *value_of[f] = arf_get_d(arb_midref(ec->value), ARF_RND_NEAR);
     }
-    if (rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].available)
-        sol->error_constant_sep = ball_text(rep.error_constant[VIGEN_CHECK_EC_SEPARABLE].value);
     sol->force = (long)rep.cost.force;
     const vigen_check_generalized *g = rep.generalized;
     sol->ngeneralized = 0;
@@ -213,14 +217,17 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
     return VIGEN_OK;
 }
 
-int vigen_design_method_error_constant(double *ec, const char *text, int order, int family, vigen_error *err)
+int vigen_design_method_error_constant(double *ec, long *force, const char *text, int order, int family,
+                                       vigen_error *err)
 {
     vigen_check_report rep;
     *ec = -1;
+    *force = 0;
     int rc = load_check(&rep, text, "(candidate)", order + 1, 1, err);
     if (rc != VIGEN_OK) return rc;
     const vigen_check_error_constant *e = &rep.error_constant[family];
     if (e->available && e->order == order) *ec = arf_get_d(arb_midref(e->value), ARF_RND_NEAR);
+    *force = (long)rep.cost.force;
     vigen_check_report_clear(&rep);
     return VIGEN_OK;
 }

@@ -27,7 +27,9 @@ int vigen_design_method_check(vigen_design_solution *sol, const char *text, cons
 
 /* The checker's principal error constant (family VIGEN_CHECK_EC_*) of the
  * composition file text, of order `order`: its midpoint into *ec, or -1
- * when the checker does not find that order (the objective of minimize). */
-int vigen_design_method_error_constant(double *ec, const char *text, int order, int family, vigen_error *err);
+ * when the checker does not find that order (the objective of minimize);
+ * the force evaluations of its step into *force. */
+int vigen_design_method_error_constant(double *ec, long *force, const char *text, int order, int family,
+                                       vigen_error *err);
 
 #endif

@@ -135,9 +135,13 @@ static double value(const gsl_vector *t, void *param)
             vigen_error err;
             vigen_error_init(&err);
             double e = -1;
+            long force = 0;
             o->evals++;
-            if (vigen_design_method_error_constant(&e, text, o->d->order, o->family, &err) == VIGEN_OK && e >= 0) {
-                ec = e;
+            if (vigen_design_method_error_constant(&e, &force, text, o->d->order, o->family, &err) == VIGEN_OK &&
+                e >= 0) {
+                /* the effective error: at the kernel's cost for a processed method */
+                ec = o->d->minimize_effective ? e * pow((double)(o->d->processed ? o->d->stages : force), o->d->order)
+                                              : e;
                 memcpy(o->x, x, (size_t)k * sizeof(double));
             }
             vigen_error_clear(&err);
@@ -382,9 +386,7 @@ int design_minimize(double *xbest, double *ecbest, slong *nminima, long *evals, 
         pin_rows[i] = design_system_add_pin(sys, free_idx[i]);
         rows[m + i] = pin_rows[i];
     }
-    int family = strcmp(d->minimize, "error_constant_separable") == 0 ? VIGEN_CHECK_EC_SEPARABLE
-               : strcmp(d->minimize, "error_constant_nystrom") == 0 ? VIGEN_CHECK_EC_NYSTROM
-                                                                    : VIGEN_CHECK_EC_GENERAL;
+    int family = d->minimize_family;
     gsl_error_handler_t *old = gsl_set_error_handler_off();
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, d->seed);

@@ -37,6 +37,7 @@ static void solution_clear(vigen_design_solution *s)
     free(s->radius);
     free(s->error_constant);
     free(s->error_constant_sep);
+    free(s->error_constant_nystrom);
     free(s->file);
     free(s->text);
     free(s->why);
@@ -259,7 +260,8 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
             free(s->why);
             free(s->error_constant);
             free(s->error_constant_sep);
-            s->why = s->error_constant = s->error_constant_sep = NULL;
+            free(s->error_constant_nystrom);
+            s->why = s->error_constant = s->error_constant_sep = s->error_constant_nystrom = NULL;
             s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims, gen, n);
             rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
         } else if (rc == VIGEN_OK && !d->flow_b && s->certified &&
@@ -267,13 +269,16 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
             free(s->text);
             free(s->error_constant);
             free(s->error_constant_sep);
-            s->error_constant = s->error_constant_sep = NULL;
+            free(s->error_constant_nystrom);
+            s->error_constant = s->error_constant_sep = s->error_constant_nystrom = NULL;
             claims[0] = s->order;
             claims[1] = s->order_separable;
             claims[2] = s->order_nystrom;
             s->text = vigen_design_method_text(d, base, name, index, count, gamma, how, claims, NULL, 0);
             rc = vigen_design_method_check(s, s->text, s->file, d->order, err);
         }
+        /* a processed method steps its kernel; C and C^-1 run once */
+        if (d->processed) s->force = d->stages;
         free(gamma);
         free(name);
         if (rc != VIGEN_OK) return rc;
@@ -281,20 +286,31 @@ static int certify_all(vigen_design_result *res, const vigen_design_spec *d, con
     return VIGEN_OK;
 }
 
+double vigen_design_solution_criterion(const vigen_design_solution *sol, const vigen_design_spec *d)
+{
+    double c = d->minimize_family == VIGEN_CHECK_EC_SEPARABLE ? sol->error_constant_sep_d
+             : d->minimize_family == VIGEN_CHECK_EC_NYSTROM   ? sol->error_constant_nystrom_d
+                                                              : sol->error_constant_d;
+    if (c < 0 || !d->minimize_effective) return c;
+    return c * pow((double)sol->force, d->order);
+}
+
 /* minimize among finitely many solutions: only the certified one with the
- * smallest error constant keeps its file. */
-static void keep_best(vigen_design_result *res)
+ * smallest figure asked keeps its file. */
+static void keep_best(vigen_design_result *res, const vigen_design_spec *d)
 {
     slong best = -1;
-    for (slong i = 0; i < res->nsol; i++)
-        if (res->sol[i].certified && res->sol[i].error_constant &&
-            (best < 0 || res->sol[i].error_constant_d < res->sol[best].error_constant_d))
-            best = i;
+    double vbest = 0;
+    for (slong i = 0; i < res->nsol; i++) {
+        double v = vigen_design_solution_criterion(&res->sol[i], d);
+        if (res->sol[i].certified && v >= 0 && (best < 0 || v < vbest)) best = i, vbest = v;
+    }
     for (slong i = 0; i < res->nsol; i++)
         if (i != best && res->sol[i].file) {
             free(res->sol[i].file);
             res->sol[i].file = NULL;
-            if (res->sol[i].why == NULL) res->sol[i].why = vigen_strdup("not written: a smaller error constant exists");
+            if (res->sol[i].why == NULL)
+                res->sol[i].why = vigen_strdup_printf("not written: a smaller %s exists", d->minimize);
         }
 }
 
@@ -408,11 +424,14 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
     } else if (m < k) {
         rc = minimize(res, &sys, rows, m, d, opt, base, err);
     } else {
+        /* minimize over finitely many roots: a search for all of them */
+        long starts = d->goal == VIGEN_DESIGN_MINIMIZE && d->starts_asked == 0 ? VIGEN_DESIGN_DEFAULT_STARTS
+                                                                               : d->starts;
         res->bezout = bezout_bound(&sys, rows, m);
         double *roots = NULL;
-        res->starts = d->starts;
+        res->starts = starts;
         res->nfound = criterion ? design_criterion_search(&roots, &sys, rows, d, design_family_unknowns(d), START_BOX)
-                                : design_newton_search(&roots, &sys, rows, d->starts, d->seed, START_BOX);
+                                : design_newton_search(&roots, &sys, rows, starts, d->seed, START_BOX);
         res->complete = res->bezout > 0 && res->nfound == res->bezout;
         res->sol = calloc((size_t)(res->nfound + 1), sizeof *res->sol);
         res->nsol = res->nfound;
@@ -430,10 +449,10 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
             "the %ld order conditions (polynomials in the steps, from the BCH series of the method) solved by "
             "Newton from %ld random starts on a square subsystem of %ld, this root refined in arb and proved by the "
             "Krawczyk operator, the rest decided on its box and the file certified by the checker", (long)sys.n,
-            (long)d->starts, (long)m);
+            (long)starts, (long)m);
         if (rc == VIGEN_OK) rc = certify_all(res, d, opt, base, how, err);
         free(how);
-        if (rc == VIGEN_OK && d->goal == VIGEN_DESIGN_MINIMIZE) keep_best(res);
+        if (rc == VIGEN_OK && d->goal == VIGEN_DESIGN_MINIMIZE) keep_best(res, d);
     }
     free(rows);
     design_system_clear(&sys);
