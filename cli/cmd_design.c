@@ -43,8 +43,20 @@ static void print_header(const vigen_design_spec *d, const vigen_design_result *
         return;
     }
     printf("search      a square subsystem of %ld, Newton from %ld starts: %ld distinct real roots\n",
-           (long)res->nsquare, (long)res->starts, (long)res->nfound);
-    if (res->complete)
+           (long)res->nsquare, (long)res->starts, (long)(res->nfound - res->homotopy_new));
+    if (res->homotopy_paths > 0) {
+        printf("homotopy    all %ld paths of a total-degree homotopy: %ld distinct roots (%ld real), %ld at infinity",
+               (long)res->homotopy_paths, (long)res->homotopy_finite, (long)res->homotopy_real,
+               (long)res->homotopy_infinite);
+        if (res->homotopy_lost) printf(", %ld lost or singular", (long)res->homotopy_lost);
+        if (res->homotopy_new) printf("; %ld real roots Newton had missed", (long)res->homotopy_new);
+        printf("\n");
+    }
+    if (res->homotopy_complete)
+        printf("complete    yes, by the homotopy: every path ended at a distinct nonsingular root or at infinity, "
+               "so the %ld real roots found are all (paths tracked in floating point, not certified)\n",
+               (long)res->nfound);
+    else if (res->complete)
         printf("complete    yes: %ld roots found = the Bezout bound %ld of the subsystem (every root is real and "
                "found)\n", (long)res->nfound, (long)res->bezout);
     else if (res->bezout > 0)
@@ -114,7 +126,7 @@ int vigen_cmd_design(const vigen_cli_args *args)
     for (slong i = 0; rc == VIGEN_OK && i < res.nsol; i++) certified += res.sol[i].certified;
     if (rc == VIGEN_OK && certified == 0)
         printf("no solution: no root found satisfies every condition%s\n",
-               res.complete ? " (and the roots found are all the roots)" : " (the search is not proved complete)");
+               res.complete ? " (and the search is complete: these are all the real roots)" : " (the search is not proved complete)");
     vigen_design_result_clear(&res);
     vigen_design_spec_clear(&d);
     if (rc != VIGEN_OK) return vigen_cli_fail(args->command, &err);

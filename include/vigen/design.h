@@ -120,7 +120,16 @@ typedef struct {
     slong bezout;                /* the product of the degrees of the square subsystem (-1: too large) */
     slong starts;                /* Newton starts made */
     slong nfound;                /* distinct real roots of the square subsystem found */
-    int complete;                /* the roots found are all the complex roots (nfound == bezout) */
+    int complete;                /* every real root is among those found: nfound == bezout (every root
+                                    real), or the homotopy's account below */
+    slong homotopy_paths;        /* a total-degree homotopy: its paths (the Bezout number; 0: not run) */
+    slong homotopy_finite;       /* ... the distinct nonsingular roots they reached */
+    slong homotopy_real;         /* ... of them real */
+    slong homotopy_infinite;     /* ... the paths that diverged (roots at infinity) */
+    slong homotopy_lost;         /* ... the paths lost, ended at a singular point, or at a root reached twice */
+    slong homotopy_new;          /* ... real roots the Newton search had missed (now among those found) */
+    int homotopy_complete;       /* no path lost: the finite endpoints are every root (floating-point
+                                    tracking, not certified) */
     int base_order;              /* the base method's certified order */
     int minimized;               /* minimize: sol[0] is the best point found */
     slong nfree;                 /* minimize: the unknowns the conditions leave free */

@@ -166,6 +166,26 @@ int design_corrector_find(char ***digits, char **radius, char **why, const vigen
                           const design_system *ksys, const slong *rows, const double *x, long ndigits,
                           vigen_error *err);
 
+/* Every complex root of the square subsystem rows[0..k-1] by a
+ * total-degree homotopy in double (design_homotopy.c): paths, the Bezout
+ * number tracked; finite, the distinct nonsingular roots reached, real of
+ * them real (real_roots, k values each, polished); infinite, singular,
+ * failed, repeated: paths that diverged, ended at a singular point, were
+ * lost, or ended at a root another path reached.  complete: none lost,
+ * singular or repeated, so the finite endpoints are every root. */
+typedef struct {
+    slong paths, finite, real;
+    slong infinite, singular, failed, repeated;
+    int complete;
+    double *real_roots;
+} design_homotopy;
+
+/* -1 (nothing done) when the Bezout number exceeds max_paths; else the
+ * paths tracked, with out filled (design_homotopy_clear frees it). */
+slong design_homotopy_solve(design_homotopy *out, const design_system *sys, const slong *rows, unsigned long seed,
+                            slong max_paths);
+void design_homotopy_clear(design_homotopy *h);
+
 /* Newton on x (k unknowns) for the subsystem rows (k of them) in double;
  * returns 1 when it converged to a root. */
 int design_newton_polish(double *x, const design_system *sys, const slong *rows, int iterations);

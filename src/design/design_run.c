@@ -18,6 +18,9 @@
 /* The starts are drawn in [-box, box]^k: the published compositions have
  * steps of at most about 2.5 in size. */
 #define START_BOX 3.0
+/* the most paths a total-degree homotopy follows (a few ms each) */
+#define HOMOTOPY_MAX_PATHS 4096
+#define SAME_ROOT 1e-7
 /* The conditions are counted before they are built up to this order (the
  * words of that weight number in the tens of thousands). */
 #define COUNT_MAX_ORDER DESIGN_WORD_MAX
@@ -132,6 +135,38 @@ static int cmp_first(const void *a, const void *b)
     for (slong j = 0; j < x->nunknowns; j++)
         if (x->x[j] != y->x[j]) return x->x[j] < y->x[j] ? -1 : 1;
     return 0;
+}
+
+/* Every root of the square subsystem by a total-degree homotopy, when its
+ * Bezout number is small enough: the real roots the Newton search missed
+ * join *roots (res->nfound of them), and res gets the paths' account. */
+static void homotopy(vigen_design_result *res, double **roots, const design_system *sys, const slong *rows,
+                     unsigned long seed)
+{
+    design_homotopy h;
+    slong k = sys->k;
+    if (design_homotopy_solve(&h, sys, rows, seed, HOMOTOPY_MAX_PATHS) < 0) return;
+    res->homotopy_paths = h.paths;
+    res->homotopy_finite = h.finite;
+    res->homotopy_real = h.real;
+    res->homotopy_infinite = h.infinite;
+    res->homotopy_lost = h.singular + h.failed + h.repeated;
+    res->homotopy_complete = h.complete;
+    for (slong r = 0; r < h.real; r++) {
+        const double *x = h.real_roots + r * k;
+        int seen = 0;
+        for (slong s = 0; s < res->nfound && !seen; s++) {
+            double dist = 0;
+            for (slong j = 0; j < k; j++) dist = fmax(dist, fabs(x[j] - (*roots)[s * k + j]) / (1 + fabs(x[j])));
+            seen = dist < SAME_ROOT;
+        }
+        if (seen) continue;
+        *roots = realloc(*roots, (size_t)((res->nfound + 1) * k) * sizeof(double));
+        memcpy(*roots + res->nfound * k, x, (size_t)k * sizeof(double));
+        res->nfound++;
+        res->homotopy_new++;
+    }
+    design_homotopy_clear(&h);
 }
 
 /* The outcome of the root sol->x: proved (digits), excluded by a condition
@@ -432,7 +467,10 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         res->starts = starts;
         res->nfound = criterion ? design_criterion_search(&roots, &sys, rows, d, design_family_unknowns(d), START_BOX)
                                 : design_newton_search(&roots, &sys, rows, starts, d->seed, START_BOX);
-        res->complete = res->bezout > 0 && res->nfound == res->bezout;
+        /* the criteria (stationary, nearest) keep their own search: nearest
+         * asks one member, not every stationary point */
+        if (!criterion) homotopy(res, &roots, &sys, rows, d->seed);
+        res->complete = (res->bezout > 0 && res->nfound == res->bezout) || res->homotopy_complete;
         res->sol = calloc((size_t)(res->nfound + 1), sizeof *res->sol);
         res->nsol = res->nfound;
         for (slong i = 0; i < res->nsol; i++) {

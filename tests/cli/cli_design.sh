@@ -33,7 +33,13 @@ rc=$?
 [ $rc = 0 ] || { bad "yoshida6: exit $rc"; cat "$T/err"; }
 [ "$(ls "$T/y6" | wc -l)" = 3 ] || bad "yoshida6: not three files: $(ls "$T/y6")"
 [ "$(grep -c " certified " "$T/out")" = 3 ] || { bad "yoshida6: not three certified rows"; cat "$T/out"; }
-grep -q "^complete    not established" "$T/out" || bad "yoshida6: completeness claimed"
+# completeness by the homotopy: every one of the 75 Bezout paths accounted
+# for, the real roots among the finite ones exactly Yoshida's three
+grep -q "^homotopy    all 75 paths of a total-degree homotopy: [0-9]* distinct roots (3 real)" "$T/out" ||
+  { bad "yoshida6: the homotopy does not find 3 real roots"; grep "^homotopy" "$T/out"; }
+awk '/^homotopy/ { split($0, a, ": "); n = a[2] + 0; sub(/.*real\), /, "", a[2]); inf = a[2] + 0 } END { exit !(n + inf == 75) }' \
+  "$T/out" || bad "yoshida6: the homotopy's paths do not add up to 75"
+grep -q "^complete    yes, by the homotopy" "$T/out" || bad "yoshida6: completeness by the homotopy not stated"
 for f in "$T"/y6/*.lua; do
   "$VIGEN" check "$f" > "$T/chk" 2>&1 || { bad "check $(basename "$f") exits $?"; tail -3 "$T/chk"; }
   grep -q "^order         6 within the precision of the data" "$T/chk" || { bad "$(basename "$f"): not order 6"; grep "^order" "$T/chk"; }
@@ -49,6 +55,10 @@ done
 # the triple jump of velocity Verlet is the library's yoshida_4
 mkdir "$T/tj"
 "$VIGEN" design "$D/triple_jump.lua" -o "$T/tj" --digits 50 > "$T/out" 2>&1 || { bad "triple jump: exit $?"; cat "$T/out"; }
+# its conditions reduce to 2 g^3 + (1 - 2g)^3 = 0: a cubic with one real root
+# and two complex ones, none at infinity
+grep -q "^homotopy    all 3 paths of a total-degree homotopy: 3 distinct roots (1 real), 0 at infinity" "$T/out" ||
+  { bad "triple jump: the homotopy does not find the cubic's roots"; grep "^homotopy" "$T/out"; }
 "$VIGEN" check "$T/tj/tj_1.lua" --against "$SRC/tableaux/published/yoshida_4.lua" > "$T/chk" 2>&1 && grep -q "^against       0 entries differ" "$T/chk" \
   || { bad "triple jump is not yoshida_4"; grep -E "against|order" "$T/chk"; }
 

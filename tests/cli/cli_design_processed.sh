@@ -11,6 +11,8 @@
 # - no member of the family is better: every member found with the outer
 #   kick held at a grid of values (solutions = "all", the search without a
 #   minimiser) has a separable constant at least the minimum's;
+# - two kicks give no real kernel: the homotopy finds the two complex roots
+#   of the quadratic condition and nothing else;
 # - a processed design with a criterion as equations is refused (exit 2).
 set -u
 VIGEN=$1
@@ -100,6 +102,18 @@ for b1 in -1 -1/2 -1/4 -1/8 1/4 1/2 1 3/2 2; do
   compared=$((compared + $(awk '$2 == "certified"' "$T/gout" | wc -l)))
 done
 [ "$compared" -ge 10 ] || bad "only $compared members compared with the minimum"
+
+# two kicks: the condition a1^2/2 - a1/4 + 1/24 = 0 (up to a factor) has a
+# negative discriminant, so two complex roots and no real one; the
+# homotopy accounts for every path and the design ends with exit 1
+mkdir "$T/p2"
+"$VIGEN" design "$D/processed_2kicks.lua" -o "$T/p2" > "$T/out" 2>&1
+rc=$?
+[ $rc = 1 ] || bad "processed_2kicks: exit $rc, not 1"
+grep -q "^homotopy    all 3 paths of a total-degree homotopy: 2 distinct roots (0 real), 1 at infinity" "$T/out" ||
+  { bad "processed_2kicks: not the quadratic's two complex roots"; cat "$T/out"; }
+grep -q "^no solution: .*the search is complete" "$T/out" || bad "processed_2kicks: completeness not stated"
+[ -z "$(ls "$T/p2")" ] || bad "processed_2kicks wrote $(ls "$T/p2")"
 
 # a criterion as equations would need the corrector's conditions: refused
 printf 'return { name = "x", design = "processed", kernel = "splitting", stages = 3, order = 4, symmetric = true, stationary = "error_norm" }\n' > "$T/st.lua"
