@@ -35,6 +35,10 @@
 /* Newton starts of a search for every root, when the file gives none. */
 #define VIGEN_DESIGN_DEFAULT_STARTS 2000L
 
+/* The most paths a total-degree homotopy follows unless the file says
+ * (`homotopy = N`; a few ms a path). */
+#define VIGEN_DESIGN_HOMOTOPY_PATHS 4096L
+
 /* What is wanted of the family. */
 enum { VIGEN_DESIGN_ALL = 0, VIGEN_DESIGN_MINIMIZE = 1 };
 
@@ -73,6 +77,8 @@ typedef struct {
     long starts;                 /* Newton starts (default 2000); minimize: descents (default 8) */
     long starts_asked;           /* starts as the file gives it (0: not given) */
     unsigned long seed;          /* of the starts (default 1) */
+    long homotopy;               /* the most paths of the homotopy that accounts for every root (default
+                                    VIGEN_DESIGN_HOMOTOPY_PATHS; 0: none) */
     long screen;                 /* minimize: random points where the error constant is evaluated
                                     first, the descents starting from the best (default 0: from
                                     random starts) */

@@ -18,6 +18,7 @@
 #define DEFAULT_MINIMIZE_STARTS 8L
 #define MAX_STARTS 1000000L
 #define MAX_SCREEN 100000L
+#define MAX_HOMOTOPY 10000000L
 /* Compositions of at most this many stages (the unknowns of a family). */
 #define MAX_DESIGN_STAGES 64
 
@@ -347,8 +348,8 @@ static int read_flows(vigen_design_spec *d, lua_State *L, int order_given, const
 static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vigen_error *err)
 {
     static const char *const known[] = {"name", "design", "base", "stages", "order", "symmetric", "solutions",
-                                        "minimize", "starts", "seed", "screen", "description", "stationary", "nearest",
-                                        "first", "kernel", "fix", "equal", "flows", "perturbation",
+                                        "minimize", "starts", "seed", "screen", "homotopy", "description", "stationary",
+                                        "nearest", "first", "kernel", "fix", "equal", "flows", "perturbation",
                                         "generalized_order", NULL};
     int rc = vigen_table_check_fields(L, known, path, err);
     if (rc == VIGEN_OK) rc = read_string(&d->name, L, "name", 1, path, err);
@@ -387,6 +388,9 @@ static int read_fields(vigen_design_spec *d, lua_State *L, const char *path, vig
         d->seed = (unsigned long)v;
     if (rc == VIGEN_OK && (rc = read_whole(&v, L, "screen", 0, 0, 1, MAX_SCREEN, path, err)) == VIGEN_OK)
         d->screen = v;
+    if (rc == VIGEN_OK && (rc = read_whole(&v, L, "homotopy", 0, VIGEN_DESIGN_HOMOTOPY_PATHS, 0, MAX_HOMOTOPY, path,
+                                           err)) == VIGEN_OK)
+        d->homotopy = v;
     if (rc == VIGEN_OK) {
         push_raw(L, "symmetric");
         if (lua_isnil(L, -1)) d->symmetric = 0;

@@ -18,8 +18,6 @@
 /* The starts are drawn in [-box, box]^k: the published compositions have
  * steps of at most about 2.5 in size. */
 #define START_BOX 3.0
-/* the most paths a total-degree homotopy follows (a few ms each) */
-#define HOMOTOPY_MAX_PATHS 4096
 #define SAME_ROOT 1e-7
 /* The conditions are counted before they are built up to this order (the
  * words of that weight number in the tens of thousands). */
@@ -141,11 +139,11 @@ static int cmp_first(const void *a, const void *b)
  * Bezout number is small enough: the real roots the Newton search missed
  * join *roots (res->nfound of them), and res gets the paths' account. */
 static void homotopy(vigen_design_result *res, double **roots, const design_system *sys, const slong *rows,
-                     unsigned long seed)
+                     unsigned long seed, long max_paths)
 {
     design_homotopy h;
     slong k = sys->k;
-    if (design_homotopy_solve(&h, sys, rows, seed, HOMOTOPY_MAX_PATHS) < 0) return;
+    if (max_paths <= 0 || design_homotopy_solve(&h, sys, rows, seed, max_paths) < 0) return;
     res->homotopy_paths = h.paths;
     res->homotopy_finite = h.finite;
     res->homotopy_real = h.real;
@@ -467,9 +465,9 @@ int vigen_design_run(vigen_design_result *res, const vigen_design_spec *d, const
         res->starts = starts;
         res->nfound = criterion ? design_criterion_search(&roots, &sys, rows, d, design_family_unknowns(d), START_BOX)
                                 : design_newton_search(&roots, &sys, rows, starts, d->seed, START_BOX);
-        /* the criteria (stationary, nearest) keep their own search: nearest
-         * asks one member, not every stationary point */
-        if (!criterion) homotopy(res, &roots, &sys, rows, d->seed);
+        /* not for nearest, which asks one member, not every stationary
+         * point of the distance */
+        if (d->nnearest == 0) homotopy(res, &roots, &sys, rows, d->seed, d->homotopy);
         res->complete = (res->bezout > 0 && res->nfound == res->bezout) || res->homotopy_complete;
         res->sol = calloc((size_t)(res->nfound + 1), sizeof *res->sol);
         res->nsol = res->nfound;

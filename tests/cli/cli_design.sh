@@ -161,6 +161,10 @@ refuse negative "stages: must be a whole number" "$C, base = \"stormer_verlet_po
 refuse unknown_base "base: stormer_verlet_positon: .*did you mean 'stormer_verlet_position'" \
   "$C, base = \"stormer_verlet_positon\", stages = 3, order = 4"
 refuse typo "unknown field 'stage'; did you mean 'stages'" "$C, base = \"stormer_verlet_position\", stage = 3, order = 4"
+refuse homotopy_limit "homotopy: must be a whole number from 0 to 10000000" \
+  "$C, base = \"stormer_verlet_position\", stages = 3, order = 4, homotopy = -1"
+refuse effective_typo "minimize: must be \"error_constant\"" \
+  "name = \"x\", design = \"composition\", base = \"stormer_verlet_position\", stages = 5, order = 4, symmetric = true, minimize = \"effective\""
 refuse free "solutions: the 2 conditions leave 1 of the 3 unknowns free" \
   "$C, base = \"stormer_verlet_position\", stages = 5, order = 4"
 refuse not_symmetric "base: symplectic_euler_q_first is not a symmetric splitting" \
