@@ -350,7 +350,10 @@ slong design_homotopy_solve(design_homotopy *out, const design_system *sys, cons
         for (slong j = 0; j < k; j++) im = fmax(im, fabs(cimag(x[j])) / (1 + cabs(x[j])));
         if (im < REAL_TOL) {
             for (slong j = 0; j < k; j++) out->real_roots[out->real * k + j] = creal(x[j]);
+            /* a root that looks real but that real Newton cannot settle
+             * (nearly real, or ill-conditioned): the account is not complete */
             if (design_newton_polish(out->real_roots + out->real * k, sys, rows, 20)) out->real++;
+            else out->failed++;
         }
     }
     out->complete = out->failed == 0 && out->singular == 0 && out->repeated == 0;

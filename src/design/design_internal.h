@@ -171,7 +171,8 @@ int design_corrector_find(char ***digits, char **radius, char **why, const vigen
  * number tracked; finite, the distinct nonsingular roots reached, real of
  * them real (real_roots, k values each, polished); infinite, singular,
  * failed, repeated: paths that diverged, ended at a singular point, were
- * lost, or ended at a root another path reached.  complete: none lost,
+ * lost (or ended at a root that looks real but that real Newton cannot
+ * settle), or ended at a root another path reached.  complete: none lost,
  * singular or repeated, so the finite endpoints are every root. */
 typedef struct {
     slong paths, finite, real;
